@@ -1,0 +1,11 @@
+#pragma once
+// Each subcommand adds itself to the parser and, when chosen, runs from a callback that
+// stores its exit code in `exitCode`.
+
+#include <CLI/CLI.hpp>
+
+namespace sandglass {
+
+void addSimulateCommand(CLI::App& app, int& exitCode);   ///< SPEC C1: headless simulation
+
+} // namespace sandglass

@@ -1,0 +1,116 @@
+#pragma once
+// A scene: an upper and a lower grid that share one row (R4), the grains in them, and the
+// step that moves them (R2, R3, R5, R6). Build one with the functions in scenes.hpp.
+
+#include "sandcore/cell_grid.hpp"
+#include "sandcore/grain_store.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace sandcore {
+
+class WorkerPool;
+class GridSweep;
+
+/// The three scenes of R10.
+enum class SceneKind : std::uint8_t {
+    Hourglass, ///< MODE_SHAPE + SHAPE_FIX: sand drains from the upper bulb into the lower
+    Sculpture, ///< MODE_SHAPE + SHAPE_LOSE: a model filled with sand collapses into a heap
+    Canvas,    ///< MODE_PAINT: the user pours sand into an empty box
+};
+
+/// How a step runs; none of these change the result except seed.
+struct StepSettings {
+    std::uint64_t seed = 1;  ///< feeds the counter-based randomness of slips (R3)
+    int threads = 1;         ///< threads that share a step (R6); the result is the same for any count
+    bool sleeping = true;    ///< R5: visit only awake grains; false = sweep every cell (same result, slower)
+};
+
+/// An axis-aligned box of cells, min inclusive, max exclusive, in one grid's coordinates.
+struct CellBox {
+    Int3 min; ///< first cell, inclusive
+    Int3 max; ///< past-the-end cell, exclusive
+};
+
+/// R14 counters.
+struct SceneCounters {
+    std::int64_t grainsUpper = 0;   ///< filled cells in the upper grid
+    std::int64_t grainsLower = 0;   ///< filled cells in the lower grid
+    std::int64_t movesLastStep = 0; ///< grains moved by the last step, transitions included
+    std::int64_t visitedLastStep = 0; ///< cells the last step looked at (shows what R5 saves)
+    std::uint64_t stepsDone = 0;    ///< steps since the last reset
+};
+
+class Scene {
+public:
+    /// A scene from two layouts (cells kEmpty or kInvalid only) of equal x and z size, and the
+    /// upper-grid cells that reset fills with sand. Throws std::invalid_argument otherwise.
+    Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::vector<std::uint32_t> upperFill,
+          StepSettings settings = {});
+    ~Scene();
+    Scene(Scene&&) noexcept;
+    Scene& operator=(Scene&&) noexcept;
+
+    SceneKind kind() const { return kind_; } ///< which of the three scenes
+
+    /// One simulation step (R3): the lower grid, then the upper grid, bottom-up, then the
+    /// transition of the shared row from the upper into the lower grid (R4).
+    void step();
+    /// Empties both grids (obstacles stay) and refills the initial sand; counters restart.
+    void reset();
+
+    const CellGrid& grid(GridLevel level) const { return level == GridLevel::Upper ? upper_ : lower_; } ///< a grid
+    const GrainStore& grains() const { return grains_; } ///< per-grain records for drawing
+    const SceneCounters& counters() const { return counters_; } ///< R14
+    std::int64_t grainCount() const { return std::int64_t(grains_.size()); } ///< grains in both grids
+    /// True once a step has moved nothing: no later step will move anything until the scene is edited.
+    bool settled() const { return counters_.stepsDone > 0 && counters_.movesLastStep == 0; }
+    /// R7: a 64-bit hash of both grids' cell contents, stable across runs and platforms.
+    std::uint64_t stateHash() const;
+
+    /// World offset of a grid's cell (0, 0, 0), in cells: the lower grid sits at the origin and
+    /// the upper grid's bottom row on the lower grid's top row.
+    Int3 gridOrigin(GridLevel level) const;
+
+    const StepSettings& settings() const { return settings_; } ///< how steps run
+    void setSeed(std::uint64_t seed);   ///< changes the randomness of later steps
+    void setThreads(int threads);       ///< 1 or more; the result does not change
+    void setSleeping(bool sleeping);    ///< R5 on or off; the result does not change
+
+    /// Places a grain in an EMPTY cell; returns its id, or -1 when the cell is not EMPTY.
+    /// rgba 0 means the default sand colours.
+    std::int64_t addGrain(GridLevel level, std::uint32_t cell, std::uint32_t rgba = 0);
+    /// Removes the grain in a cell; false when the cell holds no grain (obstacles stay).
+    bool removeGrain(GridLevel level, std::uint32_t cell);
+
+    /// R11: marks a box of a grid INVALID (clipped to the grid); grains inside it are removed.
+    /// Returns the number of grains removed.
+    std::int64_t addObstacle(GridLevel level, CellBox box);
+    /// Removes every obstacle of a grid; their cells become EMPTY again where the layout allows.
+    void clearObstacles(GridLevel level);
+    /// The obstacles placed in a grid, in the order they were added.
+    const std::vector<CellBox>& obstacles(GridLevel level) const;
+
+private:
+    CellGrid& gridRef(GridLevel level) { return level == GridLevel::Upper ? upper_ : lower_; }
+    GridSweep& sweepOf(GridLevel level);
+    void transition();
+    void rebuildCells(GridLevel level);
+    void markEverythingAwake();
+
+    SceneKind kind_;
+    StepSettings settings_;
+    CellGrid upperLayout_, lowerLayout_;
+    CellGrid upper_, lower_;
+    std::vector<std::uint32_t> upperFill_;
+    std::vector<CellBox> upperObstacles_, lowerObstacles_;
+    GrainStore grains_;
+    std::uint32_t nextIdentity_ = 0;
+    SceneCounters counters_;
+    std::unique_ptr<GridSweep> upperSweep_, lowerSweep_;
+    std::unique_ptr<WorkerPool> pool_;
+};
+
+} // namespace sandcore

@@ -1,0 +1,39 @@
+#pragma once
+// The one place where the three scenes of R10 are set up, shared by the tests, the command
+// line, the benchmark and the application.
+
+#include "sandcore/inside_mask.hpp"
+#include "sandcore/scene.hpp"
+
+namespace sandcore {
+
+/// R10 canvas sizes.
+struct CanvasSettings {
+    Int3 upperSize{60, 10, 60}; ///< the thin release grid, cells
+    Int3 lowerSize{60, 40, 60}; ///< the painting box, cells
+};
+
+/// R10 hourglass options.
+struct HourglassSettings {
+    float fillFraction = 0.85f;   ///< share of the upper bulb's cells filled at reset, from the neck up (0..1]
+    bool drainCompletely = true;  ///< S3: carve the upper bulb with removeSharpEdges so no sand stays behind
+};
+
+/// An empty canvas (MODE_PAINT). Throws std::invalid_argument for invalid sizes or unequal x/z.
+Scene makeCanvasScene(const CanvasSettings& canvas = {}, const StepSettings& step = {});
+
+/// An hourglass from a vessel's inside mask (MODE_SHAPE + SHAPE_FIX): split at its neck (S4),
+/// every outside cell INVALID, the upper bulb filled. A mask without a neck becomes an upper
+/// vessel over an open lower box of the same height. Throws std::invalid_argument for an empty mask.
+Scene makeHourglassScene(const InsideMask& vessel, const HourglassSettings& hourglass = {},
+                         const StepSettings& step = {});
+
+/// A sculpture from a model's inside mask (MODE_SHAPE + SHAPE_LOSE): the upper grid is twice as
+/// wide and deep as the model with the model filled in its middle; below it an EMPTY grid twice
+/// as wide, deep and high as the model. Throws std::invalid_argument for an empty mask.
+Scene makeSculptureScene(const InsideMask& model, const StepSettings& step = {});
+
+/// The cell of the upper grid's top row over the grid's centre, where `simulate --pour` releases sand.
+std::uint32_t pourCell(const Scene& scene);
+
+} // namespace sandcore

@@ -1,0 +1,53 @@
+#include "sandcore/cell_grid.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace sandcore {
+
+void validateGridSize(Int3 size) {
+    if (size.x <= 0 || size.y <= 0 || size.z <= 0)
+        throw std::invalid_argument("grid size must be positive on every axis, got " + std::to_string(size.x) +
+                                    "x" + std::to_string(size.y) + "x" + std::to_string(size.z));
+    const std::int64_t cells = std::int64_t(size.x) * size.y * size.z;
+    if (cells > kMaxGridCells)
+        throw std::invalid_argument("grid of " + std::to_string(size.x) + "x" + std::to_string(size.y) + "x" +
+                                    std::to_string(size.z) + " = " + std::to_string(cells) +
+                                    " cells exceeds the limit of 2^31 cells");
+}
+
+CellGrid::CellGrid(Int3 size, CellValue fill) : size_(size) {
+    validateGridSize(size);
+    layerSize_ = std::uint32_t(size.x) * std::uint32_t(size.z);
+    cells_.assign(std::size_t(layerSize_) * std::size_t(size.y), fill);
+}
+
+int CellGrid::layerNeighbours(std::uint32_t n, int dy, bool skipCentre, std::uint32_t* out) const {
+    const Int3 c = coordinate(n);
+    const int y = c.y + dy;
+    if (y < 0 || y >= size_.y) return 0;
+    int count = 0;
+    const std::uint32_t centre = n + std::uint32_t(std::int64_t(dy) * layerSize_);
+    if (!skipCentre) out[count++] = centre; // the direct neighbour comes first
+    for (int dz = -1; dz <= 1; ++dz) {
+        const int z = c.z + dz;
+        if (z < 0 || z >= size_.z) continue;
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int x = c.x + dx;
+            if (x < 0 || x >= size_.x || (dx == 0 && dz == 0)) continue;
+            out[count++] = index(x, y, z);
+        }
+    }
+    return count;
+}
+
+int CellGrid::successorsOf(std::uint32_t n, std::uint32_t out[9]) const { return layerNeighbours(n, -1, false, out); }
+int CellGrid::predecessorsOf(std::uint32_t n, std::uint32_t out[9]) const { return layerNeighbours(n, +1, false, out); }
+int CellGrid::nearCellsOf(std::uint32_t n, std::uint32_t out[8]) const { return layerNeighbours(n, 0, true, out); }
+
+std::int64_t CellGrid::countGrains() const {
+    return std::count_if(cells_.begin(), cells_.end(), [](CellValue v) { return v >= 0; });
+}
+
+} // namespace sandcore

@@ -1,0 +1,145 @@
+#include "grid_sweep.hpp"
+
+#include "sand_rules.hpp"
+#include "sandcore/worker_pool.hpp"
+
+#include <algorithm>
+
+namespace sandcore {
+
+namespace {
+// Below this many awake rows in a layer, handing strips to other threads costs more than it saves.
+constexpr int kMinAwakeRowsForThreads = 24;
+} // namespace
+
+GridSweep::GridSweep(Int3 gridSize, GridLevel level, bool bottomIsOutlet)
+    : size_(gridSize), level_(level), bottomIsOutlet_(bottomIsOutlet), rowWords_((gridSize.x + 63) / 64) {
+    const std::size_t rows = std::size_t(gridSize.y) * std::size_t(gridSize.z);
+    words_.assign(rows * std::size_t(rowWords_), 0);
+    rowAwake_.assign(rows, 0);
+}
+
+void GridSweep::wakeAt(int x, int y, int z) {
+    const std::size_t row = std::size_t(y) * std::size_t(size_.z) + std::size_t(z);
+    words_[row * std::size_t(rowWords_) + std::size_t(x >> 6)] |= std::uint64_t{1} << (x & 63);
+    rowAwake_[row] = 1;
+}
+
+void GridSweep::wake(std::uint32_t cell) {
+    const std::uint32_t x = cell % std::uint32_t(size_.x), rest = cell / std::uint32_t(size_.x);
+    wakeAt(int(x), int(rest / std::uint32_t(size_.z)), int(rest % std::uint32_t(size_.z)));
+}
+
+void GridSweep::wakePredecessorsOf(int x, int y, int z) {
+    const Int3 size = size_;
+    if (y + 1 >= size.y) return;
+    const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, size.x - 1);
+    const int z0 = std::max(z - 1, 0), z1 = std::min(z + 1, size.z - 1);
+    for (int zz = z0; zz <= z1; ++zz)
+        for (int xx = x0; xx <= x1; ++xx) wakeAt(xx, y + 1, zz);
+}
+
+void GridSweep::wakeEveryGrain(const CellGrid& grid) {
+    const auto cells = grid.cells();
+    for (std::uint32_t n = 0; n < cells.size(); ++n)
+        if (cells[n] >= 0) wake(n);
+}
+
+void GridSweep::clear() {
+    std::fill(words_.begin(), words_.end(), 0);
+    std::fill(rowAwake_.begin(), rowAwake_.end(), 0);
+}
+
+void GridSweep::clearRow(std::uint32_t row) {
+    if (!rowAwake_[row]) return;
+    std::fill_n(words_.begin() + std::ptrdiff_t(std::size_t(row) * std::size_t(rowWords_)), rowWords_, 0);
+    rowAwake_[row] = 0;
+}
+
+int GridSweep::awakeRowsInLayer(int y) const {
+    const auto first = rowAwake_.begin() + std::ptrdiff_t(std::size_t(y) * std::size_t(size_.z));
+    return int(std::count(first, first + size_.z, std::uint8_t{1}));
+}
+
+void GridSweep::visitCell(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, int x, int y, int z,
+                          SweepResult& totals) {
+    ++totals.visited;
+    const std::uint32_t from = grid.index(x, y, z);
+    const CellValue grain = grid[from];
+    if (grain < 0) return;
+    const auto target = chooseMove(grid, x, y, z, [&] { return counterRandom(seed, step, std::uint64_t(level_), from); });
+    if (!target) return; // cannot move: it sleeps until a cell below it empties
+
+    const std::uint32_t to = grid.index(target->x, y - 1, target->z);
+    grid[to] = grain;
+    grid[from] = kEmpty;
+    grains.cell[std::size_t(grain)] = to;
+    grains.cameFrom[std::size_t(grain)] = packMove(x - target->x, 1, z - target->z);
+    grains.movedAtStep[std::size_t(grain)] = step;
+    ++totals.moves;
+
+    if (y - 1 > 0 || bottomIsOutlet_) wakeAt(target->x, y - 1, target->z); // it may move on next step
+    wakePredecessorsOf(x, y, z);                                           // the cell it left is free
+    if (above_ && y == size_.y - 1) above_->wakeAt(x, 0, z);
+}
+
+void GridSweep::sweepStrip(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, bool sleeping, int y,
+                           int strip, SweepResult& totals) {
+    const Int3 size = size_;
+    const int zEnd = std::min((strip + 1) * kStripRows, size.z);
+    for (int z = strip * kStripRows; z < zEnd; ++z) {
+        const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size.z) + std::uint32_t(z);
+        if (!sleeping) {
+            clearRow(row);
+            for (int x = 0; x < size.x; ++x) visitCell(grid, grains, seed, step, x, y, z, totals);
+            continue;
+        }
+        if (!rowAwake_[row]) continue;
+        rowAwake_[row] = 0;
+        // Moves only wake cells in the layers above and below, never in this row: take its bits first.
+        std::uint64_t* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+        for (int w = 0; w < rowWords_; ++w) {
+            std::uint64_t bits = words[w];
+            words[w] = 0;
+            while (bits) {
+                const int x = w * 64 + __builtin_ctzll(bits);
+                bits &= bits - 1;
+                visitCell(grid, grains, seed, step, x, y, z, totals);
+            }
+        }
+    }
+}
+
+SweepResult GridSweep::sweep(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, bool sleeping,
+                             WorkerPool* pool) {
+    SweepResult result;
+    const Int3 size = size_;
+    const int strips = (size.z + kStripRows - 1) / kStripRows;
+    const bool threaded = pool && pool->threadCount() > 1 && strips > 1;
+    std::vector<SweepResult> stripTotals(threaded ? std::size_t(strips) : 0);
+
+    for (int y = 1; y < size.y; ++y) {
+        const int awakeRows = sleeping ? awakeRowsInLayer(y) : size.z;
+        if (awakeRows == 0) continue;
+        const bool parallel = threaded && awakeRows >= kMinAwakeRowsForThreads;
+        for (int phase = 0; phase < 2; ++phase) {
+            if (!parallel) {
+                for (int strip = phase; strip < strips; strip += 2)
+                    sweepStrip(grid, grains, seed, step, sleeping, y, strip, result);
+                continue;
+            }
+            const int count = (strips - phase + 1) / 2;
+            pool->parallelFor(count, [&](int i) {
+                const int strip = phase + 2 * i;
+                sweepStrip(grid, grains, seed, step, sleeping, y, strip, stripTotals[std::size_t(strip)]);
+            });
+        }
+    }
+    for (const SweepResult& t : stripTotals) {
+        result.moves += t.moves;
+        result.visited += t.visited;
+    }
+    return result;
+}
+
+} // namespace sandcore

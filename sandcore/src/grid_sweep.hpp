@@ -1,0 +1,89 @@
+#pragma once
+// The bottom-up sweep of one grid (R3) over its awake grains (R5), shared by threads (R6).
+// Private to sandcore.
+//
+// Canonical visiting order, the same for every thread count: layers from the bottom up; within
+// a layer, strips of kStripRows rows in two phases (even strips, then odd strips); within a strip,
+// rows by ascending z and cells by ascending x. A grain in row z only reads and writes rows
+// z-1..z+1 of the layers next to it, so strips of one phase never touch each other's cells and
+// may run on different threads in any order.
+
+#include "sandcore/cell_grid.hpp"
+#include "sandcore/grain_store.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace sandcore {
+
+class WorkerPool;
+
+inline constexpr int kStripRows = 8;
+
+struct SweepResult {
+    std::int64_t moves = 0;   ///< grains moved
+    std::int64_t visited = 0; ///< cells looked at
+};
+
+class GridSweep {
+public:
+    /// Awake bits for a grid of this size. bottomIsOutlet: grains in layer 0 stay awake for the
+    /// transition (the upper grid). The grid itself is passed to each call, so a Scene can move.
+    GridSweep(Int3 gridSize, GridLevel level, bool bottomIsOutlet);
+
+    void wake(std::uint32_t cell);              ///< the cell is visited in its layer's next turn
+    void wakeAt(int x, int y, int z);           ///< as wake, by coordinate
+    void wakePredecessorsOf(int x, int y, int z); ///< the 9 cells above (x, y, z)
+    void wakeEveryGrain(const CellGrid& grid); ///< after edits that bypass the rules
+    void clear();                               ///< nothing awake
+
+    /// When set, a cell of this grid's top layer that empties wakes the cell of `above`'s
+    /// layer 0 at the same x and z (the lower grid wakes the upper grid's outlet row).
+    void setGridAbove(GridSweep* above) { above_ = above; }
+
+    /// Applies the rules to layers 1..top, bottom-up. sleeping = false visits every cell.
+    SweepResult sweep(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, bool sleeping, WorkerPool* pool);
+
+    /// Calls visit(cell) for every cell of layer 0 that is awake (or every cell, when not
+    /// sleeping), in index order, and puts them to sleep.
+    template <class Visit> void forEachInBottomLayer(bool sleeping, Visit&& visit) {
+        const int sizeX = size_.x;
+        for (int z = 0; z < size_.z; ++z) {
+            const std::uint32_t row = std::uint32_t(z);
+            if (!sleeping) {
+                clearRow(row);
+                for (int x = 0; x < sizeX; ++x) visit(std::uint32_t(x) + std::uint32_t(sizeX) * std::uint32_t(z));
+                continue;
+            }
+            if (!rowAwake_[row]) continue;
+            rowAwake_[row] = 0;
+            for (int w = 0; w < rowWords_; ++w) {
+                std::uint64_t bits = words_[std::size_t(row) * rowWords_ + std::size_t(w)];
+                words_[std::size_t(row) * rowWords_ + std::size_t(w)] = 0;
+                while (bits) {
+                    const int x = w * 64 + __builtin_ctzll(bits);
+                    bits &= bits - 1;
+                    visit(std::uint32_t(x) + std::uint32_t(sizeX) * std::uint32_t(z));
+                }
+            }
+        }
+    }
+
+private:
+    void sweepStrip(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, bool sleeping, int y, int strip,
+                    SweepResult& totals);
+    void visitCell(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, int x, int y, int z,
+                   SweepResult& totals);
+    void clearRow(std::uint32_t row);
+    int awakeRowsInLayer(int y) const;
+
+    Int3 size_;
+    GridLevel level_;
+    bool bottomIsOutlet_;
+    GridSweep* above_ = nullptr;
+    int rowWords_;                       // 64-bit words per row of awake bits
+    std::vector<std::uint64_t> words_;   // awake bits, row = y * sizeZ + z, padded to whole words
+    std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
+};
+
+} // namespace sandcore

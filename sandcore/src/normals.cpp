@@ -1,0 +1,88 @@
+#include "sandcore/normals.hpp"
+
+#include <cmath>
+
+namespace sandcore {
+
+namespace {
+Vec3 normalised(float x, float y, float z) {
+    const float length = std::sqrt(x * x + y * y + z * z);
+    if (length == 0.0f) return {0.0f, 1.0f, 0.0f};
+    return {x / length, y / length, z / length};
+}
+} // namespace
+
+std::vector<int> columnHeights(const CellGrid& grid) {
+    const Int3 s = grid.size();
+    std::vector<int> heights(std::size_t(s.x) * std::size_t(s.z), 0);
+    for (int z = 0; z < s.z; ++z)
+        for (int x = 0; x < s.x; ++x)
+            for (int y = s.y - 1; y >= 0; --y)
+                if (grid.at(x, y, z) >= 0) {
+                    heights[std::size_t(x) + std::size_t(s.x) * std::size_t(z)] = y + 1;
+                    break;
+                }
+    return heights;
+}
+
+// thesis §3.8 (Abb. 33 and its table): a neighbour column that is higher tilts the face normal
+// away from it, one that is lower tilts it towards it, and an equal one gives (0, 1, 0).
+Vec3 columnNormal(const std::vector<int>& heights, Int3 gridSize, int x, int z) {
+    const int here = heights[std::size_t(x) + std::size_t(gridSize.x) * std::size_t(z)];
+    float sx = 0, sy = 0, sz = 0;
+    int faces = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int xx = x + dx, zz = z + dz;
+            if ((dx == 0 && dz == 0) || xx < 0 || zz < 0 || xx >= gridSize.x || zz >= gridSize.z) continue;
+            const int there = heights[std::size_t(xx) + std::size_t(gridSize.x) * std::size_t(zz)];
+            const float side = there > here ? -1.0f : there < here ? 1.0f : 0.0f;
+            const Vec3 face = normalised(side * float(dx), 1.0f, side * float(dz));
+            sx += face.x;
+            sy += face.y;
+            sz += face.z;
+            ++faces;
+        }
+    if (faces == 0) return {0.0f, 1.0f, 0.0f};
+    return normalised(sx, sy, sz);
+}
+
+Vec3 gradientNormal(const CellGrid& grid, std::uint32_t cell) {
+    const Int3 c = grid.coordinate(cell);
+    int gx = 0, gy = 0, gz = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int x = c.x + dx, y = c.y + dy, z = c.z + dz;
+                if (!grid.contains(x, y, z) || grid.at(x, y, z) < 0) continue;
+                gx += dx;
+                gy += dy;
+                gz += dz;
+            }
+    // Sand lies where the gradient points; the surface faces the other way.
+    return normalised(float(-gx), float(-gy), float(-gz));
+}
+
+void estimateGrainNormals(const Scene& scene, NormalMethod method, std::span<Vec3> out) {
+    const GrainStore& grains = scene.grains();
+    if (method == NormalMethod::OccupancyGradient) {
+        for (std::uint32_t id = 0; id < grains.size(); ++id)
+            out[id] = gradientNormal(scene.grid(grains.level[id]), grains.cell[id]);
+        return;
+    }
+    for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
+        const CellGrid& grid = scene.grid(level);
+        const Int3 s = grid.size();
+        const std::vector<int> heights = columnHeights(grid);
+        std::vector<Vec3> normals(heights.size());
+        for (int z = 0; z < s.z; ++z)
+            for (int x = 0; x < s.x; ++x)
+                normals[std::size_t(x) + std::size_t(s.x) * std::size_t(z)] = columnNormal(heights, s, x, z);
+        for (std::uint32_t id = 0; id < grains.size(); ++id) {
+            if (grains.level[id] != level) continue;
+            out[id] = normals[grains.cell[id] % grid.layerSize()];
+        }
+    }
+}
+
+} // namespace sandcore

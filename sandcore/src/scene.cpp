@@ -1,0 +1,208 @@
+#include "sandcore/scene.hpp"
+
+#include "grid_sweep.hpp"
+#include "sandcore/counter_random.hpp"
+#include "sandcore/worker_pool.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace sandcore {
+
+namespace {
+
+bool layoutOnly(const CellGrid& grid) {
+    const auto cells = grid.cells();
+    return std::all_of(cells.begin(), cells.end(), [](CellValue v) { return v == kEmpty || v == kInvalid; });
+}
+
+CellBox clipped(CellBox box, Int3 size) {
+    box.min = {std::max(box.min.x, 0), std::max(box.min.y, 0), std::max(box.min.z, 0)};
+    box.max = {std::min(box.max.x, size.x), std::min(box.max.y, size.y), std::min(box.max.z, size.z)};
+    return box;
+}
+
+template <class Visit> void forEachCellIn(const CellGrid& grid, CellBox box, Visit&& visit) {
+    box = clipped(box, grid.size());
+    for (int y = box.min.y; y < box.max.y; ++y)
+        for (int z = box.min.z; z < box.max.z; ++z)
+            for (int x = box.min.x; x < box.max.x; ++x) visit(grid.index(x, y, z));
+}
+
+} // namespace
+
+Scene::Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::vector<std::uint32_t> upperFill,
+             StepSettings settings)
+    : kind_(kind), settings_(settings), upperLayout_(std::move(upperLayout)), lowerLayout_(std::move(lowerLayout)),
+      upper_(upperLayout_), lower_(lowerLayout_), upperFill_(std::move(upperFill)) {
+    if (upper_.size().x != lower_.size().x || upper_.size().z != lower_.size().z)
+        throw std::invalid_argument("upper and lower grid must have the same x and z size");
+    if (!layoutOnly(upperLayout_) || !layoutOnly(lowerLayout_))
+        throw std::invalid_argument("grid layouts may hold only EMPTY and INVALID cells");
+    for (std::uint32_t cell : upperFill_)
+        if (cell >= upper_.cellCount() || upperLayout_[cell] != kEmpty)
+            throw std::invalid_argument("a fill cell lies outside the upper grid or on an INVALID cell");
+    if (settings_.threads < 1) throw std::invalid_argument("threads must be at least 1");
+    upperSweep_ = std::make_unique<GridSweep>(upper_.size(), GridLevel::Upper, true);
+    lowerSweep_ = std::make_unique<GridSweep>(lower_.size(), GridLevel::Lower, false);
+    lowerSweep_->setGridAbove(upperSweep_.get());
+    pool_ = std::make_unique<WorkerPool>(settings_.threads);
+    reset();
+}
+
+Scene::~Scene() = default;
+Scene::Scene(Scene&&) noexcept = default;
+Scene& Scene::operator=(Scene&&) noexcept = default;
+
+GridSweep& Scene::sweepOf(GridLevel level) { return level == GridLevel::Upper ? *upperSweep_ : *lowerSweep_; }
+
+void Scene::rebuildCells(GridLevel level) {
+    CellGrid& grid = gridRef(level);
+    const CellGrid& layout = level == GridLevel::Upper ? upperLayout_ : lowerLayout_;
+    std::copy(layout.cells().begin(), layout.cells().end(), grid.cells().begin());
+    for (const CellBox& box : obstacles(level))
+        forEachCellIn(grid, box, [&](std::uint32_t n) { grid[n] = kInvalid; });
+}
+
+void Scene::reset() {
+    grains_.clear();
+    nextIdentity_ = 0;
+    counters_ = {};
+    rebuildCells(GridLevel::Upper);
+    rebuildCells(GridLevel::Lower);
+    upperSweep_->clear();
+    lowerSweep_->clear();
+    for (std::uint32_t cell : upperFill_) addGrain(GridLevel::Upper, cell);
+}
+
+void Scene::step() {
+    const std::uint64_t stepNumber = counters_.stepsDone + 1;
+    WorkerPool* pool = settings_.threads > 1 ? pool_.get() : nullptr;
+    const SweepResult lower = lowerSweep_->sweep(lower_, grains_, settings_.seed, stepNumber, settings_.sleeping, pool);
+    const SweepResult upper = upperSweep_->sweep(upper_, grains_, settings_.seed, stepNumber, settings_.sleeping, pool);
+    counters_.stepsDone = stepNumber;
+    counters_.movesLastStep = lower.moves + upper.moves;
+    counters_.visitedLastStep = lower.visited + upper.visited;
+    transition();
+}
+
+// thesis §3.3.3 transition/insert: a grain in the upper grid's bottom row moves into the cell of
+// the lower grid's top row at the same world position when that cell is EMPTY.
+void Scene::transition() {
+    const int lowerTop = lower_.size().y - 1;
+    std::int64_t moved = 0, visited = 0;
+    upperSweep_->forEachInBottomLayer(settings_.sleeping, [&](std::uint32_t cell) {
+        ++visited;
+        const CellValue grain = upper_[cell];
+        if (grain < 0) return;
+        const Int3 c = upper_.coordinate(cell);
+        const std::uint32_t below = lower_.index(c.x, lowerTop, c.z);
+        if (lower_[below] != kEmpty) return; // woken again when that cell empties
+        lower_[below] = grain;
+        upper_[cell] = kEmpty;
+        grains_.level[std::size_t(grain)] = GridLevel::Lower;
+        grains_.cell[std::size_t(grain)] = below;
+        grains_.cameFrom[std::size_t(grain)] = kNoMove; // same world position
+        grains_.movedAtStep[std::size_t(grain)] = counters_.stepsDone;
+        lowerSweep_->wakeAt(c.x, lowerTop, c.z);
+        upperSweep_->wakePredecessorsOf(c.x, 0, c.z);
+        ++moved;
+    });
+    counters_.grainsUpper -= moved;
+    counters_.grainsLower += moved;
+    counters_.movesLastStep += moved;
+    counters_.visitedLastStep += visited;
+}
+
+std::uint64_t Scene::stateHash() const {
+    // Fixed constants and explicit widths keep the value the same on every platform.
+    std::uint64_t hash = 0x9e3779b97f4a7c15ull;
+    for (const CellGrid* grid : {&upper_, &lower_}) {
+        const Int3 s = grid->size();
+        hash = mix64(hash ^ (std::uint64_t(std::uint32_t(s.x)) | std::uint64_t(std::uint32_t(s.y)) << 21 |
+                             std::uint64_t(std::uint32_t(s.z)) << 42));
+        for (CellValue v : grid->cells()) hash = mix64(hash + std::uint64_t(std::uint32_t(v)) + 0x632be59bd9b4e019ull);
+    }
+    return hash;
+}
+
+Int3 Scene::gridOrigin(GridLevel level) const {
+    return level == GridLevel::Upper ? Int3{0, lower_.size().y - 1, 0} : Int3{0, 0, 0};
+}
+
+void Scene::setSeed(std::uint64_t seed) { settings_.seed = seed; }
+
+void Scene::setThreads(int threads) {
+    if (threads < 1) throw std::invalid_argument("threads must be at least 1");
+    if (threads == settings_.threads) return;
+    settings_.threads = threads;
+    pool_ = std::make_unique<WorkerPool>(threads);
+}
+
+void Scene::setSleeping(bool sleeping) {
+    if (sleeping && !settings_.sleeping) markEverythingAwake();
+    settings_.sleeping = sleeping;
+}
+
+void Scene::markEverythingAwake() {
+    upperSweep_->wakeEveryGrain(upper_);
+    lowerSweep_->wakeEveryGrain(lower_);
+}
+
+std::int64_t Scene::addGrain(GridLevel level, std::uint32_t cell, std::uint32_t rgba) {
+    CellGrid& grid = gridRef(level);
+    if (cell >= grid.cellCount() || grid[cell] != kEmpty) return -1;
+    const std::uint32_t id = grains_.add(level, cell, nextIdentity_++, rgba);
+    grid[cell] = CellValue(id);
+    sweepOf(level).wake(cell);
+    (level == GridLevel::Upper ? counters_.grainsUpper : counters_.grainsLower) += 1;
+    return id;
+}
+
+bool Scene::removeGrain(GridLevel level, std::uint32_t cell) {
+    CellGrid& grid = gridRef(level);
+    if (cell >= grid.cellCount() || grid[cell] < 0) return false;
+    const std::uint32_t id = std::uint32_t(grid[cell]);
+    grid[cell] = kEmpty;
+    const std::uint32_t moved = grains_.removeBySwap(id);
+    if (moved != id) gridRef(grains_.level[id])[grains_.cell[id]] = CellValue(id);
+    const Int3 c = grid.coordinate(cell);
+    sweepOf(level).wakePredecessorsOf(c.x, c.y, c.z);
+    if (level == GridLevel::Lower && c.y == grid.size().y - 1) upperSweep_->wakeAt(c.x, 0, c.z);
+    (level == GridLevel::Upper ? counters_.grainsUpper : counters_.grainsLower) -= 1;
+    return true;
+}
+
+std::int64_t Scene::addObstacle(GridLevel level, CellBox box) {
+    CellGrid& grid = gridRef(level);
+    std::int64_t removed = 0;
+    forEachCellIn(grid, box, [&](std::uint32_t n) {
+        if (grid[n] >= 0) removed += removeGrain(level, n) ? 1 : 0;
+        grid[n] = kInvalid;
+    });
+    (level == GridLevel::Upper ? upperObstacles_ : lowerObstacles_).push_back(box);
+    return removed;
+}
+
+void Scene::clearObstacles(GridLevel level) {
+    auto& list = level == GridLevel::Upper ? upperObstacles_ : lowerObstacles_;
+    if (list.empty()) return;
+    const std::vector<CellBox> removed = std::move(list);
+    list.clear();
+    CellGrid& grid = gridRef(level);
+    const CellGrid& layout = level == GridLevel::Upper ? upperLayout_ : lowerLayout_;
+    for (const CellBox& box : removed)
+        forEachCellIn(grid, box, [&](std::uint32_t n) {
+            if (grid[n] != kInvalid || layout[n] != kEmpty) return;
+            grid[n] = kEmpty;
+            const Int3 c = grid.coordinate(n);
+            sweepOf(level).wakePredecessorsOf(c.x, c.y, c.z);
+            if (level == GridLevel::Lower && c.y == grid.size().y - 1) upperSweep_->wakeAt(c.x, 0, c.z);
+        });
+}
+
+const std::vector<CellBox>& Scene::obstacles(GridLevel level) const {
+    return level == GridLevel::Upper ? upperObstacles_ : lowerObstacles_;
+}
+
+} // namespace sandcore

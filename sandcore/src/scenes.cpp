@@ -1,0 +1,76 @@
+#include "sandcore/scenes.hpp"
+
+#include "sandcore/hourglass_split.hpp"
+#include "sandcore/mask_cleanup.hpp"
+
+#include <stdexcept>
+
+namespace sandcore {
+
+namespace {
+
+// Cells outside the shape are INVALID: no grain ever leaves the vessel.
+CellGrid layoutFromMask(const InsideMask& mask) {
+    CellGrid grid(mask.size, kInvalid);
+    for (std::size_t n = 0; n < mask.inside.size(); ++n)
+        if (mask.inside[n]) grid[std::uint32_t(n)] = kEmpty;
+    return grid;
+}
+
+void requireInside(const InsideMask& mask, const char* what) {
+    if (mask.countInside() == 0) throw std::invalid_argument(std::string(what) + " has no inside cells");
+}
+
+// The bulb's cells from the outlet up, whole layers at a time, until fillFraction of them are taken.
+std::vector<std::uint32_t> fillFromBottom(const InsideMask& mask, float fillFraction) {
+    if (!(fillFraction > 0.0f && fillFraction <= 1.0f))
+        throw std::invalid_argument("fill fraction must lie in (0, 1]");
+    const auto wanted = std::int64_t(double(fillFraction) * double(mask.countInside()) + 0.5);
+    std::vector<std::uint32_t> cells;
+    for (int y = 0; y < mask.size.y && std::int64_t(cells.size()) < wanted; ++y)
+        for (int z = 0; z < mask.size.z; ++z)
+            for (int x = 0; x < mask.size.x; ++x)
+                if (mask.at(x, y, z)) cells.push_back(std::uint32_t(mask.indexOf(x, y, z)));
+    return cells;
+}
+
+} // namespace
+
+Scene makeCanvasScene(const CanvasSettings& canvas, const StepSettings& step) {
+    return Scene(SceneKind::Canvas, CellGrid(canvas.upperSize), CellGrid(canvas.lowerSize), {}, step);
+}
+
+Scene makeHourglassScene(const InsideMask& vessel, const HourglassSettings& hourglass, const StepSettings& step) {
+    requireInside(vessel, "the vessel");
+    const int top = vessel.size.y - 1;
+    const int neck = findNeckLayer(vessel);
+    const bool split = hasNeck(vessel, neck);
+    InsideMask upper = split ? sliceLayers(vessel, neck, top) : vessel;
+    if (hourglass.drainCompletely) removeSharpEdges(upper, 0, upper.size.y - 1);
+    requireInside(upper, "the upper bulb");
+    CellGrid lowerLayout = split ? layoutFromMask(sliceLayers(vessel, 0, neck)) : CellGrid(vessel.size, kEmpty);
+    return Scene(SceneKind::Hourglass, layoutFromMask(upper), std::move(lowerLayout),
+                 fillFromBottom(upper, hourglass.fillFraction), step);
+}
+
+Scene makeSculptureScene(const InsideMask& model, const StepSettings& step) {
+    requireInside(model, "the model");
+    const Int3 m = model.size;
+    CellGrid upper({2 * m.x, m.y, 2 * m.z}, kEmpty);
+    CellGrid lower({2 * m.x, 2 * m.y, 2 * m.z}, kEmpty);
+    const int offsetX = m.x / 2, offsetZ = m.z / 2;
+    std::vector<std::uint32_t> fill;
+    for (int y = 0; y < m.y; ++y)
+        for (int z = 0; z < m.z; ++z)
+            for (int x = 0; x < m.x; ++x)
+                if (model.at(x, y, z)) fill.push_back(upper.index(x + offsetX, y, z + offsetZ));
+    return Scene(SceneKind::Sculpture, std::move(upper), std::move(lower), std::move(fill), step);
+}
+
+std::uint32_t pourCell(const Scene& scene) {
+    const CellGrid& upper = scene.grid(GridLevel::Upper);
+    const Int3 s = upper.size();
+    return upper.index(s.x / 2, s.y - 1, s.z / 2);
+}
+
+} // namespace sandcore
