@@ -34,14 +34,23 @@ std::vector<std::uint32_t> fillFromBottom(const InsideMask& mask, float fillFrac
     return cells;
 }
 
+// The mask without its empty bottom and top layers, so a plain vessel's floor is its outlet.
+InsideMask trimmedToInsideLayers(const InsideMask& mask) {
+    int bottom = 0, top = mask.size.y - 1;
+    while (mask.countInsideLayer(bottom) == 0) ++bottom;
+    while (mask.countInsideLayer(top) == 0) --top;
+    return sliceLayers(mask, bottom, top);
+}
+
 } // namespace
 
 Scene makeCanvasScene(const CanvasSettings& canvas, const StepSettings& step) {
     return Scene(SceneKind::Canvas, CellGrid(canvas.upperSize), CellGrid(canvas.lowerSize), {}, step);
 }
 
-Scene makeHourglassScene(const InsideMask& vessel, const HourglassSettings& hourglass, const StepSettings& step) {
-    requireInside(vessel, "the vessel");
+Scene makeHourglassScene(const InsideMask& untrimmed, const HourglassSettings& hourglass, const StepSettings& step) {
+    requireInside(untrimmed, "the vessel");
+    const InsideMask vessel = trimmedToInsideLayers(untrimmed);
     const int top = vessel.size.y - 1;
     const int neck = findNeckLayer(vessel);
     const bool split = hasNeck(vessel, neck);

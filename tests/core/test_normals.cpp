@@ -1,0 +1,82 @@
+// R12: both normal estimates on known slopes.
+#include "sandcore/normals.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using namespace sandcore;
+
+namespace {
+// A grid filled with grains wherever height(x, z) > y.
+template <class Height> CellGrid heightField(Int3 size, Height height) {
+    CellGrid grid(size);
+    CellValue id = 0;
+    for (int y = 0; y < size.y; ++y)
+        for (int z = 0; z < size.z; ++z)
+            for (int x = 0; x < size.x; ++x)
+                if (y < height(x, z)) grid[grid.index(x, y, z)] = id++;
+    return grid;
+}
+
+double angleBetweenDegrees(Vec3 a, Vec3 b) {
+    const double dot = double(a.x) * b.x + double(a.y) * b.y + double(a.z) * b.z;
+    const double la = std::sqrt(double(a.x) * a.x + double(a.y) * a.y + double(a.z) * a.z);
+    const double lb = std::sqrt(double(b.x) * b.x + double(b.y) * b.y + double(b.z) * b.z);
+    return std::acos(std::min(1.0, dot / (la * lb))) * 180.0 / M_PI;
+}
+
+// Top grain of column (x, z).
+std::uint32_t topCell(const CellGrid& grid, int x, int z) {
+    for (int y = grid.size().y - 1; y >= 0; --y)
+        if (grid.at(x, y, z) >= 0) return grid.index(x, y, z);
+    FAIL("empty column");
+    return 0;
+}
+} // namespace
+
+TEST_CASE("flat floor: both methods give (0, 1, 0)") {
+    const CellGrid grid = heightField({9, 6, 9}, [](int, int) { return 3; });
+    const auto heights = columnHeights(grid);
+    CHECK(heights[4 + 9 * 4] == 3);
+    CHECK(columnNormal(heights, grid.size(), 4, 4) == Vec3{0.0f, 1.0f, 0.0f});
+    CHECK(gradientNormal(grid, topCell(grid, 4, 4)) == Vec3{0.0f, 1.0f, 0.0f});
+}
+
+TEST_CASE("45-degree ramp along x: the gradient is exact, the thesis's column method within 15 degrees") {
+    const CellGrid grid = heightField({12, 14, 9}, [](int x, int) { return x + 1; });
+    const Vec3 ramp{-float(M_SQRT1_2), float(M_SQRT1_2), 0.0f};
+    const Vec3 gradient = gradientNormal(grid, topCell(grid, 5, 4));
+    CHECK(gradient.x == doctest::Approx(ramp.x).epsilon(1e-6));
+    CHECK(gradient.y == doctest::Approx(ramp.y).epsilon(1e-6));
+    CHECK(gradient.z == doctest::Approx(0.0).epsilon(1e-6));
+    const Vec3 column = columnNormal(columnHeights(grid), grid.size(), 5, 4);
+    // The thesis's table averages 8 unit face normals: 3 tilt towards -x, 3 towards -x, 2 are
+    // flat, so the estimate leans 12.0 degrees towards the vertical (atan(3.72 / 5.72) = 33.0).
+    CHECK(angleBetweenDegrees(column, ramp) == doctest::Approx(12.0).epsilon(0.01));
+    CHECK(column.x < 0.0f);
+    CHECK(column.z == doctest::Approx(0.0));
+}
+
+TEST_CASE("diagonal ramp: the gradient within 1 degree, the column method with its known bias") {
+    const CellGrid grid = heightField({12, 26, 12}, [](int x, int z) { return x + z + 1; });
+    const Vec3 ramp{-0.57735026f, 0.57735026f, -0.57735026f};
+    const Vec3 gradient = gradientNormal(grid, topCell(grid, 5, 5));
+    CHECK(angleBetweenDegrees(gradient, ramp) < 1.0);
+    const Vec3 column = columnNormal(columnHeights(grid), grid.size(), 5, 5);
+    CHECK(column.x == doctest::Approx(column.z));
+    // The column method's known bias is larger here: it leans 23.5 degrees towards the vertical.
+    CHECK(angleBetweenDegrees(column, ramp) == doctest::Approx(23.47).epsilon(0.01));
+}
+
+TEST_CASE("the gradient works on a vessel wall where the column method cannot") {
+    // Sand against a wall at x = 0..2: the exposed face at x = 3 looks along +x.
+    CellGrid grid({8, 8, 8});
+    CellValue id = 0;
+    for (int y = 0; y < 8; ++y)
+        for (int z = 0; z < 8; ++z)
+            for (int x = 0; x < 3; ++x) grid[grid.index(x, y, z)] = id++;
+    const Vec3 n = gradientNormal(grid, grid.index(2, 4, 4));
+    CHECK(n.x == doctest::Approx(1.0));
+    CHECK(n.y == doctest::Approx(0.0));
+}
