@@ -58,7 +58,7 @@ int runSimulate(SimulateOptions& options) {
     const std::uint32_t pourAt = sandcore::pourCell(scene);
     std::vector<double> stepMilliseconds;
     stepMilliseconds.reserve(std::size_t(std::min<std::int64_t>(stepLimit, 1'000'000)));
-    std::int64_t moves = 0, done = 0;
+    std::int64_t moves = 0, visited = 0, done = 0;
     const auto start = Clock::now();
     while (done < stepLimit) {
         if (done < options.pour) scene.addGrain(sandcore::GridLevel::Upper, pourAt);
@@ -66,6 +66,7 @@ int runSimulate(SimulateOptions& options) {
         scene.step();
         stepMilliseconds.push_back(std::chrono::duration<double, std::milli>(Clock::now() - before).count());
         moves += scene.counters().movesLastStep;
+        visited += scene.counters().visitedLastStep;
         ++done;
         if (options.untilSettled && done >= options.pour && scene.settled()) break;
     }
@@ -80,6 +81,7 @@ int runSimulate(SimulateOptions& options) {
         out["grains"] = scene.grainCount();
         out["steps"] = done;
         out["moves"] = moves;
+        out["cells_visited"] = visited;
         out["hash"] = hash;
         out["seconds"] = seconds;
         out["steps_per_second"] = stepsPerSecond;

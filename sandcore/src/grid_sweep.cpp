@@ -30,14 +30,35 @@ void GridSweep::wake(std::uint32_t cell) {
     wakeAt(int(x), int(rest / std::uint32_t(size_.z)), int(rest % std::uint32_t(size_.z)));
 }
 
+// Sets the awake bits x0..x1 (at most 3 apart) of one row with one or two word operations.
+void GridSweep::wakeSpan(std::size_t row, int x0, int x1) {
+    std::uint64_t* words = words_.data() + row * std::size_t(rowWords_);
+    const int first = x0 >> 6, last = x1 >> 6;
+    if (first == last) {
+        words[first] |= ((std::uint64_t{2} << (x1 - x0)) - 1) << (x0 & 63);
+    } else {
+        words[first] |= ~std::uint64_t{0} << (x0 & 63);
+        words[last] |= (std::uint64_t{2} << (x1 & 63)) - 1;
+    }
+    rowAwake_[row] = 1;
+}
+
 void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     const Int3 size = size_;
     if (y + 1 >= size.y) return;
     const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, size.x - 1);
     const int z0 = std::max(z - 1, 0), z1 = std::min(z + 1, size.z - 1);
-    for (int zz = z0; zz <= z1; ++zz)
-        for (int xx = x0; xx <= x1; ++xx) wakeAt(xx, y + 1, zz);
+    const std::size_t layerRow = std::size_t(y + 1) * std::size_t(size.z);
+    for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
 }
+
+void GridSweep::applyDeferredWakes() {
+    for (std::uint32_t column : deferredWakesAbove_)
+        above_->wakeAt(int(column % std::uint32_t(size_.x)), 0, int(column / std::uint32_t(size_.x)));
+    deferredWakesAbove_.clear();
+}
+
+std::int64_t GridSweep::awakeRowCount() const { return std::count(rowAwake_.begin(), rowAwake_.end(), std::uint8_t{1}); }
 
 void GridSweep::wakeEveryGrain(const CellGrid& grid) {
     const auto cells = grid.cells();
@@ -80,7 +101,12 @@ void GridSweep::visitCell(CellGrid& grid, GrainStore& grains, std::uint64_t seed
 
     if (y - 1 > 0 || bottomIsOutlet_) wakeAt(target->x, y - 1, target->z); // it may move on next step
     wakePredecessorsOf(x, y, z);                                           // the cell it left is free
-    if (above_ && y == size_.y - 1) above_->wakeAt(x, 0, z);
+    if (above_ && y == size_.y - 1) {
+        if (deferWakesAbove_)
+            deferredWakesAbove_.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
+        else
+            above_->wakeAt(x, 0, z);
+    }
 }
 
 void GridSweep::sweepStrip(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, bool sleeping, int y,

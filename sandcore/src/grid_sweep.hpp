@@ -40,6 +40,13 @@ public:
     /// When set, a cell of this grid's top layer that empties wakes the cell of `above`'s
     /// layer 0 at the same x and z (the lower grid wakes the upper grid's outlet row).
     void setGridAbove(GridSweep* above) { above_ = above; }
+    /// While deferred, those wakes are kept until applyDeferredWakes(), so the grid above may
+    /// be swept at the same time on another thread.
+    void setDeferWakesAbove(bool defer) { deferWakesAbove_ = defer; }
+    /// Applies the wakes kept while deferred.
+    void applyDeferredWakes();
+    /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
+    std::int64_t awakeRowCount() const;
 
     /// Applies the rules to layers 1..top, bottom-up. sleeping = false visits every cell.
     SweepResult sweep(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, bool sleeping, WorkerPool* pool);
@@ -75,12 +82,15 @@ private:
     void visitCell(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, int x, int y, int z,
                    SweepResult& totals);
     void clearRow(std::uint32_t row);
+    void wakeSpan(std::size_t row, int x0, int x1);
     int awakeRowsInLayer(int y) const;
 
     Int3 size_;
     GridLevel level_;
     bool bottomIsOutlet_;
     GridSweep* above_ = nullptr;
+    bool deferWakesAbove_ = false;
+    std::vector<std::uint32_t> deferredWakesAbove_; // x + sizeX * z of the outlet cells to wake
     int rowWords_;                       // 64-bit words per row of awake bits
     std::vector<std::uint64_t> words_;   // awake bits, row = y * sizeZ + z, padded to whole words
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits

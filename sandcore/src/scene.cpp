@@ -78,8 +78,26 @@ void Scene::reset() {
 void Scene::step() {
     const std::uint64_t stepNumber = counters_.stepsDone + 1;
     WorkerPool* pool = settings_.threads > 1 ? pool_.get() : nullptr;
-    const SweepResult lower = lowerSweep_->sweep(lower_, grains_, settings_.seed, stepNumber, settings_.sleeping, pool);
-    const SweepResult upper = upperSweep_->sweep(upper_, grains_, settings_.seed, stepNumber, settings_.sleeping, pool);
+    SweepResult lower, upper;
+    // The two grids touch no common cell during their sweeps (the lower grid's wakes of the
+    // outlet row wait until both are done), so when both have work they run side by side, each
+    // on one thread; otherwise the busy grid splits its layers into strips over the threads.
+    const bool sideBySide = pool && settings_.sleeping && lowerSweep_->awakeRowCount() > 0 &&
+                            upperSweep_->awakeRowCount() > 0;
+    if (sideBySide) {
+        lowerSweep_->setDeferWakesAbove(true);
+        pool->parallelFor(2, [&](int grid) {
+            if (grid == 0)
+                lower = lowerSweep_->sweep(lower_, grains_, settings_.seed, stepNumber, true, nullptr);
+            else
+                upper = upperSweep_->sweep(upper_, grains_, settings_.seed, stepNumber, true, nullptr);
+        });
+        lowerSweep_->setDeferWakesAbove(false);
+        lowerSweep_->applyDeferredWakes();
+    } else {
+        lower = lowerSweep_->sweep(lower_, grains_, settings_.seed, stepNumber, settings_.sleeping, pool);
+        upper = upperSweep_->sweep(upper_, grains_, settings_.seed, stepNumber, settings_.sleeping, pool);
+    }
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;
     counters_.visitedLastStep = lower.visited + upper.visited;

@@ -1,6 +1,7 @@
 #include "sandcore/worker_pool.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace sandcore {
 
@@ -8,6 +9,10 @@ namespace {
 // A step dispatches many short loops back to back; workers spin briefly before sleeping so
 // they catch the next loop without a futex round trip, and sleep when the simulation idles.
 constexpr int kSpinsBeforeSleep = 1 << 14;
+constexpr std::uint64_t kFieldMask = (std::uint64_t{1} << 21) - 1;
+
+constexpr std::uint64_t nextTaskOf(std::uint64_t ticket) { return ticket & kFieldMask; }
+constexpr std::uint64_t taskCountOf(std::uint64_t ticket) { return (ticket >> 21) & kFieldMask; }
 } // namespace
 
 WorkerPool::WorkerPool(int threads) {
@@ -18,50 +23,49 @@ WorkerPool::WorkerPool(int threads) {
 
 WorkerPool::~WorkerPool() {
     stopping_.store(true, std::memory_order_release);
-    generation_.fetch_add(1, std::memory_order_acq_rel);
-    generation_.notify_all();
+    wakeups_.fetch_add(1, std::memory_order_release);
+    wakeups_.notify_all();
     // jthread joins on destruction
 }
 
-void WorkerPool::runTasks() {
-    for (;;) {
-        const int i = nextTask_.fetch_add(1, std::memory_order_relaxed);
-        if (i >= taskCount_) return;
-        (*task_)(i);
+void WorkerPool::claimAndRunTasks() {
+    std::uint64_t ticket = ticket_.load(std::memory_order_acquire);
+    while (nextTaskOf(ticket) < taskCountOf(ticket)) {
+        if (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel, std::memory_order_acquire))
+            continue; // another thread claimed it; ticket now holds the new value
+        (*task_)(int(nextTaskOf(ticket)));
+        unfinished_.fetch_sub(1, std::memory_order_release);
+        ticket = ticket_.load(std::memory_order_acquire);
     }
 }
 
 void WorkerPool::parallelFor(int count, const std::function<void(int)>& task) {
+    if (count < 0 || std::uint64_t(count) > kFieldMask) throw std::invalid_argument("parallelFor: bad task count");
     if (workers_.empty() || count <= 1) {
         for (int i = 0; i < count; ++i) task(i);
         return;
     }
     task_ = &task;
-    taskCount_ = count;
-    nextTask_.store(0, std::memory_order_relaxed);
-    busyWorkers_.store(int(workers_.size()), std::memory_order_relaxed);
-    generation_.fetch_add(1, std::memory_order_release); // publishes task_ and taskCount_
-    generation_.notify_all();
-    runTasks();
-    // Every worker checks in for this generation before task may go out of scope.
-    for (int spins = 0; busyWorkers_.load(std::memory_order_acquire) != 0; ++spins)
+    unfinished_.store(count, std::memory_order_relaxed);
+    ++loopNumber_;
+    ticket_.store((loopNumber_ << 42) | (std::uint64_t(count) << 21), std::memory_order_release);
+    wakeups_.fetch_add(1, std::memory_order_release);
+    wakeups_.notify_all();
+    claimAndRunTasks();
+    // Only tasks that others claimed can still be running: wait for those, not for idle workers.
+    for (int spins = 0; unfinished_.load(std::memory_order_acquire) != 0; ++spins)
         if (spins > kSpinsBeforeSleep) std::this_thread::yield();
 }
 
 void WorkerPool::workerLoop() {
-    std::uint64_t seen = 0;
-    for (;;) {
-        std::uint64_t now = generation_.load(std::memory_order_acquire);
+    std::uint32_t seen = wakeups_.load(std::memory_order_acquire);
+    while (!stopping_.load(std::memory_order_acquire)) {
+        claimAndRunTasks();
+        std::uint32_t now = wakeups_.load(std::memory_order_acquire);
         for (int spins = 0; now == seen && spins < kSpinsBeforeSleep; ++spins)
-            now = generation_.load(std::memory_order_acquire);
-        while (now == seen) {
-            generation_.wait(seen, std::memory_order_acquire);
-            now = generation_.load(std::memory_order_acquire);
-        }
-        seen = now;
-        if (stopping_.load(std::memory_order_acquire)) return;
-        runTasks();
-        busyWorkers_.fetch_sub(1, std::memory_order_release);
+            now = wakeups_.load(std::memory_order_acquire);
+        if (now == seen) wakeups_.wait(seen, std::memory_order_acquire);
+        seen = wakeups_.load(std::memory_order_acquire);
     }
 }
 

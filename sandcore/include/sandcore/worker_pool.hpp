@@ -21,20 +21,24 @@ public:
     /// Threads that share a loop, the caller included.
     int threadCount() const { return int(workers_.size()) + 1; }
 
-    /// Calls task(i) for every i in [0, count), spread over the threads; returns when all are done.
+    /// Calls task(i) for every i in [0, count < 2^21), spread over the threads; returns when all are done.
     /// Tasks must not depend on which thread runs them or in which order.
     void parallelFor(int count, const std::function<void(int)>& task);
 
 private:
     void workerLoop();
-    void runTasks();
+    void claimAndRunTasks();
 
     std::vector<std::jthread> workers_;
+    // The loop being run. Written only while no task of the previous loop is unfinished, and
+    // read only by a thread that has claimed a task of this loop, so no reader sees a stale one.
     const std::function<void(int)>* task_ = nullptr;
-    int taskCount_ = 0;
-    std::atomic<int> nextTask_{0};
-    std::atomic<int> busyWorkers_{0};
-    std::atomic<std::uint64_t> generation_{0};
+    // Tasks are claimed from one word: (loop number << 42) | (task count << 21) | next task.
+    // A thread that wakes late cannot claim a task of a loop that has already finished.
+    std::atomic<std::uint64_t> ticket_{0};
+    std::atomic<int> unfinished_{0};     // tasks of the current loop not yet done
+    std::atomic<std::uint32_t> wakeups_{0}; // bumped to wake sleeping workers
+    std::uint64_t loopNumber_ = 0;
     std::atomic<bool> stopping_{false};
 };
 
