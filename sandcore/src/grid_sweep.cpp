@@ -27,7 +27,9 @@ void GridSweep::wakeAt(int x, int y, int z) {
 
 void GridSweep::wake(std::uint32_t cell) {
     const std::uint32_t x = cell % std::uint32_t(size_.x), rest = cell / std::uint32_t(size_.x);
-    wakeAt(int(x), int(rest / std::uint32_t(size_.z)), int(rest % std::uint32_t(size_.z)));
+    const int y = int(rest / std::uint32_t(size_.z));
+    if (y == 0 && !bottomIsOutlet_) return; // the floor has nothing below it: never visited
+    wakeAt(int(x), y, int(rest % std::uint32_t(size_.z)));
 }
 
 // Sets the awake bits x0..x1 (at most 3 apart) of one row with one or two word operations.
