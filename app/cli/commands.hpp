@@ -7,5 +7,6 @@
 namespace sandglass {
 
 void addSimulateCommand(CLI::App& app, int& exitCode);   ///< SPEC C1: headless simulation
+void addBenchCommand(CLI::App& app, int& exitCode);      ///< SPEC C4: the speed-against-error report
 
 } // namespace sandglass
