@@ -13,6 +13,7 @@ int runCommandLine(int argc, char** argv) {
     app.require_subcommand(0, 1);
     int exitCode = 0;
     addSimulateCommand(app, exitCode);
+    addVoxelizeCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -7,5 +7,6 @@
 namespace sandglass {
 
 void addSimulateCommand(CLI::App& app, int& exitCode);   ///< SPEC C1: headless simulation
+void addVoxelizeCommand(CLI::App& app, int& exitCode);   ///< SPEC C2: model voxelization report
 
 } // namespace sandglass
