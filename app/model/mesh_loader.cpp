@@ -42,8 +42,6 @@ sandcore::TriangleMesh loadMesh(const std::string& path) {
     if (!std::ifstream(path).good()) throw ModelError(path, "cannot be read (permission denied?)");
 
     Assimp::Importer importer;
-    // Lines and points are removed on import so a file of only those reports "no triangles".
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     const aiScene* scene = importer.ReadFile(
         path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (scene == nullptr) {
