@@ -2,9 +2,12 @@
 // What the user asked for (scene kind, shape, resolution), turned into a sandcore::Scene. The
 // command line, the benchmark and the window all build scenes through here.
 
+#include "model/model_voxelizer.hpp"
+
 #include "sandcore/inside_mask.hpp"
 #include "sandcore/scene.hpp"
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -17,6 +20,19 @@ struct SceneRequest {
     int resolution = 64;        ///< cells along the shape's largest extent (the canvas: its width)
     float neckRadius = 0.0f;    ///< procedural hourglass neck radius in cells; 0 = resolution / 24, at least 1.5
     float fillFraction = 0.85f; ///< share of the upper bulb filled at reset (hourglass)
+    std::string modelPath;      ///< model file (any format assimp reads); empty = the procedural shape
+    bool stretch = false;       ///< model: scale every axis to `resolution` cells (aspect not kept)
+    bool robust = false;        ///< model: majority-vote inside test for open meshes (S5)
+    int noiseThreshold = 1;     ///< model: S3 noNoise removes cells with at most this many inside face neighbours; -1 = off
+    bool drainCompletely = true; ///< hourglass: S3 noSharpEdges carves the upper bulb so it drains completely
+    std::uint64_t memoryLimit = 0; ///< model: bytes a scene may use; 0 = the memory available now
+};
+
+/// A scene and, when it came from a model file, the voxelization report the GUI and CLI show.
+struct BuiltScene {
+    sandcore::Scene scene;                  ///< ready to step
+    std::optional<ModelVoxelization> model; ///< set when request.modelPath was given
+    std::int64_t noiseCellsRemoved = 0;     ///< cells the S3 noNoise clean-up removed from the model
 };
 
 /// "hourglass", "sculpture" or "canvas" to a scene kind; throws std::invalid_argument otherwise.
@@ -28,7 +44,14 @@ const char* sceneKindName(sandcore::SceneKind kind);
 /// for an unknown name or an invalid resolution.
 sandcore::InsideMask makeProceduralMask(std::string_view shape, int resolution, float neckRadius);
 
-/// Builds the requested scene; throws std::invalid_argument with a one-line message on bad input.
+/// Builds the requested scene; throws std::invalid_argument (or ModelError, "FILE: cause", for a
+/// model) with a one-line message on bad input. Nothing is changed on failure.
 sandcore::Scene buildScene(const SceneRequest& request, const sandcore::StepSettings& step);
+
+/// As buildScene, also returning the model's voxelization report.
+BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::StepSettings& step);
+
+/// The bundled default vessel, models/hourglass.obj in the source tree.
+std::string defaultModelPath();
 
 } // namespace sandglass

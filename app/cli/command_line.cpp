@@ -14,6 +14,7 @@ int runCommandLine(int argc, char** argv) {
     int exitCode = 0;
     addSimulateCommand(app, exitCode);
     addBenchCommand(app, exitCode);
+    addVoxelizeCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

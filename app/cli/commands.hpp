@@ -8,5 +8,6 @@ namespace sandglass {
 
 void addSimulateCommand(CLI::App& app, int& exitCode);   ///< SPEC C1: headless simulation
 void addBenchCommand(CLI::App& app, int& exitCode);      ///< SPEC C4: the speed-against-error report
+void addVoxelizeCommand(CLI::App& app, int& exitCode);   ///< SPEC C2: model voxelization report
 
 } // namespace sandglass

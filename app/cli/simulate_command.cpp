@@ -44,6 +44,8 @@ int runSimulate(SimulateOptions& options) {
     using Clock = std::chrono::steady_clock;
     options.request.kind = parseSceneKind(options.scene);
     if (options.steps < 0 && !options.untilSettled) options.steps = 1000;
+    if (!options.request.modelPath.empty() && options.request.kind == sandcore::SceneKind::Canvas)
+        throw std::invalid_argument("--model shapes an hourglass or a sculpture; the canvas has no model");
     if (options.pour > 0 && options.request.kind != sandcore::SceneKind::Canvas)
         throw std::invalid_argument("--pour releases sand on the canvas; use it with --scene canvas");
 
@@ -114,6 +116,14 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--shape", options->request.shape,
                     "procedural shape: sphere, cube or hourglass (default: hourglass for the hourglass, sphere for "
                     "the sculpture)");
+    cmd->add_option("--model", options->request.modelPath,
+                    "model file (OBJ, STL, PLY, glTF, ... ) for the hourglass vessel or the sculpture");
+    cmd->add_flag("--stretch", options->request.stretch, "model: scale every axis to --res cells (aspect not kept)");
+    cmd->add_flag("--robust", options->request.robust, "model: majority-vote inside test for open meshes");
+    cmd->add_option("--noise", options->request.noiseThreshold,
+                    "model: noNoise removes cells with at most this many inside face neighbours (-1 = off)")
+        ->capture_default_str()
+        ->check(CLI::Range(-1, 5));
     cmd->add_option("--res", options->request.resolution, "cells along the shape's largest extent")
         ->capture_default_str();
     cmd->add_option("--neck", options->request.neckRadius, "neck radius of the procedural hourglass, cells (0 = auto)");

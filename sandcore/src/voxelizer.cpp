@@ -1,0 +1,248 @@
+#include "sandcore/voxelizer.hpp"
+
+#include "sandcore/cell_grid.hpp"
+#include "sandcore/worker_pool.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sandcore {
+
+namespace {
+
+// Grid coordinates become integers in units of 1/kQuantum cell. With |coordinate| <= 2^14 cells
+// every value stays below 2^29, a difference below 2^30, and a 2x2 determinant below 2^61: the
+// orientation predicates are exact in int64.
+constexpr std::int64_t kQuantum = std::int64_t{1} << 15;
+constexpr double kMaxGridCoordinate = 2.0 * kMaxVoxelResolution;
+
+const char* const kAxisNames[3] = {"x", "y", "z"};
+
+using Point = std::array<std::int64_t, 3>;
+
+std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+// Sign of orient(a, b, p) in the row plane (v, w), for p moved by (eps, eps^2) (simulation of
+// simplicity). Only an edge of zero length gives 0. Two triangles sharing an edge see it with
+// opposite orientation, so a perturbed point on a shared edge lies in exactly one of them.
+int perturbedSide(std::int64_t av, std::int64_t aw, std::int64_t bv, std::int64_t bw, std::int64_t pv,
+                  std::int64_t pw, std::int64_t& det) {
+    det = (bv - av) * (pw - aw) - (bw - aw) * (pv - av);
+    if (det != 0) return det > 0 ? 1 : -1;
+    // The perturbation adds (bv - av) * eps^2 - (bw - aw) * eps.
+    if (bw != aw) return bw < aw ? 1 : -1;
+    if (bv != av) return bv > av ? 1 : -1;
+    return 0;
+}
+
+struct RayFrame {
+    int u, v, w; // the ray runs along u; rows are indexed by (v, w)
+};
+
+// Where the ray through row point (pv, pw) along +u crosses triangle (a, b, c), in cells along u;
+// false when it misses. A triangle whose projection has zero area is never hit.
+bool crossRay(const Point& a, const Point& b, const Point& c, RayFrame f, std::int64_t pv, std::int64_t pw,
+              double& crossing) {
+    std::int64_t weightC = 0, weightA = 0, weightB = 0;
+    const int s0 = perturbedSide(a[f.v], a[f.w], b[f.v], b[f.w], pv, pw, weightC);
+    if (s0 == 0) return false;
+    if (perturbedSide(b[f.v], b[f.w], c[f.v], c[f.w], pv, pw, weightA) != s0) return false;
+    if (perturbedSide(c[f.v], c[f.w], a[f.v], a[f.w], pv, pw, weightB) != s0) return false;
+    const double total = double(weightA) + double(weightB) + double(weightC);
+    // Relative to a, so a face of constant u gives that u exactly.
+    const double offset = (double(weightB) * double(b[f.u] - a[f.u]) + double(weightC) * double(c[f.u] - a[f.u])) / total;
+    crossing = (double(a[f.u]) + offset) / double(kQuantum);
+    return true;
+}
+
+// Triangle ids per row, in compressed rows: row r owns ids[first[r] .. first[r + 1]).
+struct RowBins {
+    std::vector<std::uint32_t> first;
+    std::vector<std::uint32_t> ids;
+};
+
+// Row index range [lo, hi] whose centres (2j + 1) * kQuantum / 2 lie within [minValue, maxValue].
+void rowRange(std::int64_t minValue, std::int64_t maxValue, int rows, int& lo, int& hi) {
+    const std::int64_t half = kQuantum / 2;
+    const std::int64_t first = -floorDiv(-(minValue - half), kQuantum); // ceil
+    const std::int64_t last = floorDiv(maxValue - half, kQuantum);
+    lo = int(std::max<std::int64_t>(first, 0));
+    hi = int(std::min<std::int64_t>(last, rows - 1));
+}
+
+RowBins binTriangles(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                     RayFrame f, Int3 rows) {
+    const int rowsV = rows.x, rowsW = rows.y;
+    RowBins bins;
+    bins.first.assign(std::size_t(rowsV) * std::size_t(rowsW) + 1, 0);
+    auto forEachRow = [&](const std::array<std::uint32_t, 3>& t, auto&& visit) {
+        const Point &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+        int vLo, vHi, wLo, wHi;
+        rowRange(std::min({a[f.v], b[f.v], c[f.v]}), std::max({a[f.v], b[f.v], c[f.v]}), rowsV, vLo, vHi);
+        rowRange(std::min({a[f.w], b[f.w], c[f.w]}), std::max({a[f.w], b[f.w], c[f.w]}), rowsW, wLo, wHi);
+        for (int k = wLo; k <= wHi; ++k)
+            for (int j = vLo; j <= vHi; ++j) visit(std::size_t(j) + std::size_t(rowsV) * std::size_t(k));
+    };
+    for (const auto& t : triangles) forEachRow(t, [&](std::size_t row) { ++bins.first[row + 1]; });
+    for (std::size_t r = 1; r < bins.first.size(); ++r) bins.first[r] += bins.first[r - 1];
+    bins.ids.resize(bins.first.back());
+    std::vector<std::uint32_t> cursor(bins.first.begin(), bins.first.end() - 1);
+    for (std::size_t i = 0; i < triangles.size(); ++i)
+        forEachRow(triangles[i], [&](std::size_t row) { bins.ids[cursor[row]++] = std::uint32_t(i); });
+    return bins;
+}
+
+// Grid coordinates of every vertex as fixed-point integers.
+std::vector<Point> quantize(const std::vector<std::array<double, 3>>& grid) {
+    std::vector<Point> points(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i)
+        for (std::size_t a = 0; a < 3; ++a) {
+            const double g = grid[i][a];
+            if (!std::isfinite(g) || std::abs(g) > kMaxGridCoordinate)
+                throw std::invalid_argument("vertex coordinate outside the voxel grid's range");
+            points[i][a] = std::llround(g * double(kQuantum));
+        }
+    return points;
+}
+
+// One pass of rays along axis f.u. Plain mode writes inside cells between pairs of crossings
+// into `mask`; robust mode adds, per cell, one vote for odd parity counted from each end of the row.
+void castRays(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+              RayFrame f, Int3 size, const VoxelizeSettings& settings, WorkerPool& pool,
+              std::vector<std::uint8_t>& out, bool votes) {
+    const int sizes[3] = {size.x, size.y, size.z};
+    const int rowsV = sizes[f.v], rowsW = sizes[f.w], length = sizes[f.u];
+    const std::size_t stride[3] = {1, std::size_t(size.x) * std::size_t(size.z), std::size_t(size.x)};
+    RowBins bins;
+    if (settings.binning) bins = binTriangles(points, triangles, f, {rowsV, rowsW, 0});
+
+    pool.parallelFor(rowsW, [&](int k) {
+        std::vector<double> crossings;
+        for (int j = 0; j < rowsV; ++j) {
+            const std::int64_t pv = (2 * std::int64_t(j) + 1) * (kQuantum / 2);
+            const std::int64_t pw = (2 * std::int64_t(k) + 1) * (kQuantum / 2);
+            crossings.clear();
+            auto test = [&](std::uint32_t id) {
+                const auto& t = triangles[id];
+                double at;
+                if (crossRay(points[t[0]], points[t[1]], points[t[2]], f, pv, pw, at)) crossings.push_back(at);
+            };
+            if (settings.binning) {
+                const std::size_t row = std::size_t(j) + std::size_t(rowsV) * std::size_t(k);
+                for (std::uint32_t n = bins.first[row]; n < bins.first[row + 1]; ++n) test(bins.ids[n]);
+            } else {
+                for (std::uint32_t id = 0; id < triangles.size(); ++id) test(id);
+            }
+            if (crossings.empty()) continue;
+            std::sort(crossings.begin(), crossings.end());
+            const std::size_t base = std::size_t(j) * stride[f.v] + std::size_t(k) * stride[f.w];
+            // Cell i counts a crossing at x when its centre i + 0.5 >= x: the first such i is ceil(x - 0.5).
+            auto firstCellFrom = [&](double x) {
+                return int(std::clamp(std::ceil(x - 0.5), 0.0, double(length)));
+            };
+            if (!votes) {
+                // An unpaired last crossing (open mesh) does not open a run to the grid's end.
+                for (std::size_t n = 0; n + 1 < crossings.size(); n += 2) {
+                    const int from = firstCellFrom(crossings[n]), to = firstCellFrom(crossings[n + 1]);
+                    for (int i = from; i < to; ++i) out[base + std::size_t(i) * stride[f.u]] = 1;
+                }
+                continue;
+            }
+            const std::size_t total = crossings.size();
+            std::size_t passed = 0;
+            for (int i = 0; i < length; ++i) {
+                while (passed < total && crossings[passed] <= i + 0.5) ++passed;
+                const int vote = int(passed % 2) + int((total - passed) % 2);
+                out[base + std::size_t(i) * stride[f.u]] += std::uint8_t(vote);
+            }
+        }
+    });
+}
+
+InsideMask insideFromGridPoints(const std::vector<std::array<double, 3>>& grid,
+                                const std::vector<std::array<std::uint32_t, 3>>& triangles, Int3 size,
+                                const VoxelizeSettings& settings) {
+    if (settings.threads < 1) throw std::invalid_argument("voxelize needs at least one thread");
+    InsideMask mask = InsideMask::empty(size);
+    for (const auto& t : triangles)
+        for (std::uint32_t i : t)
+            if (i >= grid.size()) throw std::invalid_argument("a triangle refers to a missing vertex");
+    const std::vector<Point> points = quantize(grid);
+    WorkerPool pool(settings.threads);
+    if (!settings.robust) {
+        castRays(points, triangles, {0, 1, 2}, size, settings, pool, mask.inside, false);
+        return mask;
+    }
+    // S5: each axis gives two votes (parity counted from either end); they agree on a closed mesh.
+    std::vector<std::uint8_t> votes(mask.inside.size(), 0);
+    castRays(points, triangles, {0, 1, 2}, size, settings, pool, votes, true);
+    castRays(points, triangles, {1, 2, 0}, size, settings, pool, votes, true);
+    castRays(points, triangles, {2, 0, 1}, size, settings, pool, votes, true);
+    for (std::size_t n = 0; n < votes.size(); ++n) mask.inside[n] = votes[n] >= 4 ? 1 : 0;
+    return mask;
+}
+
+} // namespace
+
+double VoxelizeResult::relativeError() const {
+    return meshVolume > 0.0 ? (double(cellsInside) - meshVolume) / meshVolume : 0.0;
+}
+
+VoxelPlacement placeInGrid(const TriangleMesh& mesh, const VoxelizeSettings& settings) {
+    if (settings.resolution < 1 || settings.resolution > kMaxVoxelResolution)
+        throw std::invalid_argument("resolution must lie in 1.." + std::to_string(kMaxVoxelResolution) + ", got " +
+                                    std::to_string(settings.resolution));
+    const MeshBounds bounds = boundsOf(mesh);
+    VoxelPlacement placement;
+    double largest = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        const double extent = bounds.extent(a);
+        if (!std::isfinite(extent) || !std::isfinite(bounds.min[std::size_t(a)]))
+            throw std::invalid_argument("the model has a non-finite coordinate");
+        if (extent <= 0.0) throw std::invalid_argument(std::string("the model has zero extent along ") + kAxisNames[a]);
+        largest = std::max(largest, extent);
+    }
+    const double resolution = settings.resolution;
+    int sizes[3];
+    for (std::size_t a = 0; a < 3; ++a) {
+        const double extent = bounds.extent(int(a));
+        const double scale = settings.stretch ? resolution / extent : resolution / largest;
+        // The largest axis maps to exactly `resolution` cells; rounding must not add a cell.
+        const double cells = extent * scale;
+        sizes[a] = std::max(1, int(std::ceil(cells * (1.0 - 1e-12))));
+        placement.modelMin[a] = bounds.min[a];
+        placement.scale[a] = scale;
+        placement.padding[a] = 0.5 * (sizes[a] - cells); // centred; never below y = 0
+    }
+    placement.size = {sizes[0], sizes[1], sizes[2]};
+    validateGridSize(placement.size);
+    return placement;
+}
+
+VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settings) {
+    VoxelizeResult result;
+    result.placement = placeInGrid(mesh, settings);
+    const VoxelPlacement& p = result.placement;
+    std::vector<std::array<double, 3>> grid(mesh.vertices.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const Vec3 v = mesh.vertices[i];
+        const double model[3] = {v.x, v.y, v.z};
+        for (std::size_t a = 0; a < 3; ++a) grid[i][a] = (model[a] - p.modelMin[a]) * p.scale[a] + p.padding[a];
+    }
+    result.mask = insideFromGridPoints(grid, mesh.triangles, p.size, settings);
+    result.cellsInside = result.mask.countInside();
+    result.closedness = closednessOf(mesh);
+    result.meshVolume = std::abs(signedVolume(mesh)) * p.scale[0] * p.scale[1] * p.scale[2];
+    return result;
+}
+
+InsideMask voxelizeGridSpace(const TriangleMesh& gridMesh, Int3 size, const VoxelizeSettings& settings) {
+    std::vector<std::array<double, 3>> grid(gridMesh.vertices.size());
+    for (std::size_t i = 0; i < grid.size(); ++i)
+        grid[i] = {gridMesh.vertices[i].x, gridMesh.vertices[i].y, gridMesh.vertices[i].z};
+    return insideFromGridPoints(grid, gridMesh.triangles, size, settings);
+}
+
+} // namespace sandcore
