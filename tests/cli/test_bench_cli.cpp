@@ -13,8 +13,9 @@ TEST_CASE("bench --quick writes the Markdown report, CSV tables and PNG plots, a
     const fs::path out = fs::path(cli::temporaryPath()).concat("-report");
     const auto r = cli::runSandglass("bench --quick --out " + out.string());
     REQUIRE_MESSAGE(r.exitCode == 0, r.err);
-    for (const char* file : {"README.md", "simulation.csv", "plausibility.csv", "discharge.csv", "simulation.png",
-                             "discharge.png"}) {
+    for (const char* file : {"README.md", "voxelization.csv", "voxelization_dense.csv", "voxelization_binning.csv",
+                             "simulation.csv", "plausibility.csv", "discharge.csv", "voxelization.png",
+                             "simulation.png", "discharge.png"}) {
         CAPTURE(file);
         REQUIRE(fs::exists(out / file));
         CHECK(fs::file_size(out / file) > 100);
@@ -24,6 +25,7 @@ TEST_CASE("bench --quick writes the Markdown report, CSV tables and PNG plots, a
     text << readme.rdbuf();
     CHECK(text.str().find("Checks: all passed.") != std::string::npos);
     CHECK(text.str().find("| discharge rate") != std::string::npos);
+    CHECK(text.str().find("| sphere | 20480 | 64 |") != std::string::npos);
     CHECK(text.str().find("repose angle") != std::string::npos);
     // The PNGs are real images.
     std::ifstream png(out / "simulation.png", std::ios::binary);
