@@ -167,6 +167,26 @@ void Scene::markEverythingAwake() {
     lowerSweep_->wakeEveryGrain(lower_);
 }
 
+SceneSnapshot Scene::snapshot() const {
+    return {upper_, lower_, grains_, nextIdentity_, counters_, upperObstacles_, lowerObstacles_};
+}
+
+void Scene::restore(const SceneSnapshot& saved) {
+    if (!(saved.upper.size() == upper_.size()) || !(saved.lower.size() == lower_.size()))
+        throw std::invalid_argument("the snapshot belongs to a scene with other grids");
+    std::copy(saved.upper.cells().begin(), saved.upper.cells().end(), upper_.cells().begin());
+    std::copy(saved.lower.cells().begin(), saved.lower.cells().end(), lower_.cells().begin());
+    grains_ = saved.grains;
+    nextIdentity_ = saved.nextIdentity;
+    counters_ = saved.counters;
+    upperObstacles_ = saved.upperObstacles;
+    lowerObstacles_ = saved.lowerObstacles;
+    // Waking every grain is a superset of the awake set at the time: the sweep's result is the same (R5).
+    upperSweep_->clear();
+    lowerSweep_->clear();
+    markEverythingAwake();
+}
+
 std::int64_t Scene::addGrain(GridLevel level, std::uint32_t cell, std::uint32_t rgba) {
     CellGrid& grid = gridRef(level);
     if (cell >= grid.cellCount() || grid[cell] != kEmpty) return -1;

@@ -43,6 +43,17 @@ struct SceneCounters {
     std::uint64_t stepsDone = 0;    ///< steps since the last reset
 };
 
+/// Everything that makes up a scene's state, saved so an edit can be undone (P7).
+struct SceneSnapshot {
+    CellGrid upper;                        ///< upper grid cells
+    CellGrid lower;                        ///< lower grid cells
+    GrainStore grains;                     ///< per-grain records
+    std::uint32_t nextIdentity = 0;        ///< identity the next new grain gets
+    SceneCounters counters;                ///< R14 counters
+    std::vector<CellBox> upperObstacles;   ///< obstacles of the upper grid
+    std::vector<CellBox> lowerObstacles;   ///< obstacles of the lower grid
+};
+
 class Scene {
 public:
     /// A scene from two layouts (cells kEmpty or kInvalid only) of equal x and z size, and the
@@ -78,6 +89,12 @@ public:
     void setSeed(std::uint64_t seed);   ///< changes the randomness of later steps
     void setThreads(int threads);       ///< 1 or more; the result does not change
     void setSleeping(bool sleeping);    ///< R5 on or off; the result does not change
+
+    /// The whole state, for undo.
+    SceneSnapshot snapshot() const;
+    /// Returns to a state taken by snapshot() of this scene: the state hash and every later
+    /// step are as they were then. Throws std::invalid_argument for a snapshot of other grids.
+    void restore(const SceneSnapshot& saved);
 
     /// Places a grain in an EMPTY cell; returns its id, or -1 when the cell is not EMPTY.
     /// rgba 0 means the default sand colours.
