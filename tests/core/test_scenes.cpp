@@ -126,3 +126,21 @@ TEST_CASE("scenes reject bad input") {
     noThreads.threads = 0;
     CHECK_THROWS(makeCanvasScene({}, noThreads));
 }
+
+TEST_CASE("restore returns to a snapshot exactly, and the steps after it repeat") {
+    Scene scene = makeSculptureScene(makeSphereMask(12));
+    for (int i = 0; i < 10; ++i) scene.step();
+    const SceneSnapshot saved = scene.snapshot();
+    const std::uint64_t hashAtSnapshot = scene.stateHash();
+    for (int i = 0; i < 30; ++i) scene.step();
+    const std::uint64_t hashLater = scene.stateHash();
+    scene.addObstacle(GridLevel::Lower, {{0, 0, 0}, {4, 4, 4}});
+    scene.restore(saved);
+    CHECK(scene.stateHash() == hashAtSnapshot);
+    CHECK(scene.obstacles(GridLevel::Lower).empty());
+    CHECK(scene.counters().stepsDone == 10);
+    for (int i = 0; i < 30; ++i) scene.step();
+    CHECK(scene.stateHash() == hashLater);
+    Scene other = makeCanvasScene();
+    CHECK_THROWS(other.restore(saved));
+}
