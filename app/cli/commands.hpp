@@ -7,5 +7,11 @@
 namespace sandglass {
 
 void addSimulateCommand(CLI::App& app, int& exitCode);   ///< SPEC C1: headless simulation
+void addGuiCommand(CLI::App& app, int& exitCode);        ///< SPEC §6: the window on a scene
+void addRenderCommand(CLI::App& app, int& exitCode);     ///< SPEC C3: one frame offscreen to PNG
+void addBenchCommand(CLI::App& app, int& exitCode);      ///< SPEC B1 (--render); C4/B2 belongs here too
+
+/// `sandglass` without arguments: the window on the default hourglass, draining.
+int runDefaultWindow();
 
 } // namespace sandglass

@@ -1,0 +1,75 @@
+// `sandglass bench`: with --render, the frame-rate benchmark B1 (thesis §4.3) on the thesis's
+// benchmark scene (about 3,500 filled cells) and a large one, written as benchmark.txt + .csv.
+// The speed-against-error report (B2, SPEC C4) is the other half of this command.
+#include "cli/commands.hpp"
+#include "cli/view_options.hpp"
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace sandglass {
+
+namespace {
+
+struct BenchOptions {
+    bool render = false;
+    std::string out = ".";
+    std::vector<int> resolutions{38, 248};
+    std::string size = "1024x768";
+    BenchmarkTiming timing;
+    bool quick = false;
+};
+
+int runRenderBenchmark(const BenchOptions& options, const std::string& commandLine) {
+    std::vector<BenchmarkReport> reports;
+    for (int resolution : options.resolutions) {
+        ViewOptions view;
+        view.resolution = resolution;
+        view.size = options.size;
+        ApplicationOptions settings = applicationOptionsFrom(view, 1024, 768);
+        settings.window.visible = false;
+        settings.window.vsync = false;
+        settings.offscreen = true;
+        Application application(std::move(settings));
+        std::cout << "hourglass, resolution " << resolution << ": " << application.scene().grainCount()
+                  << " filled cells" << std::endl;
+        std::vector<BenchmarkCase> cases = thesisBenchmarkCases();
+        if (options.quick) cases.resize(4); // inner drawn, 1 grain per cell, no light: one row per mode
+        reports.push_back(application.runBenchmark(cases, options.timing));
+    }
+    writeBenchmarkFiles(options.out, reports, commandLine);
+    std::cout << "wrote " << (std::filesystem::path(options.out) / "benchmark.txt").string() << " and benchmark.csv"
+              << std::endl;
+    return 0;
+}
+
+} // namespace
+
+void addBenchCommand(CLI::App& app, int& exitCode) {
+    auto options = std::make_shared<BenchOptions>();
+    CLI::App* cmd = app.add_subcommand("bench", "Benchmarks: --render runs the frame-rate benchmark (B1)");
+    cmd->add_flag("--render", options->render, "frame-rate benchmark B1: every mode, light, inner grains, 1 and 20 "
+                                               "grains per cell; writes benchmark.txt and benchmark.csv");
+    cmd->add_option("--out", options->out, "folder for the result files")->capture_default_str();
+    cmd->add_option("--res", options->resolutions, "hourglass resolutions to measure (38: ~3,500 cells, 248: ~1M)")
+        ->capture_default_str()
+        ->check(CLI::Range(8, 1024));
+    cmd->add_option("--size", options->size, "framebuffer size, WxH pixels")->capture_default_str();
+    cmd->add_option("--max-frames", options->timing.maxFrames, "frames per row at most")->capture_default_str();
+    cmd->add_option("--seconds", options->timing.maxSeconds, "seconds per row at most (after 3 frames)")
+        ->capture_default_str();
+    cmd->add_flag("--quick", options->quick, "one row per mode only (smoke test)");
+    cmd->callback([options, &exitCode] {
+        if (!options->render)
+            throw std::invalid_argument("bench: the speed-against-error report (B2) is not part of this build yet; "
+                                        "use --render for the frame-rate benchmark");
+        std::ostringstream line;
+        line << "sandglass bench --render";
+        line << " --out " << options->out << " --size " << options->size << " --res";
+        for (int r : options->resolutions) line << ' ' << r;
+        exitCode = runRenderBenchmark(*options, line.str());
+    });
+}
+
+} // namespace sandglass
