@@ -42,6 +42,10 @@ BenchmarkReport Application::runBenchmark(const std::vector<BenchmarkCase>& case
         state_.render.innerGrains = setup.innerGrains;
         state_.simulationRunning = true;
         state_.showGui = true;
+        // Every row starts from a full upper bulb, so each measures the same flowing sand
+        // (a drained hourglass would upload nothing and flatter the later rows).
+        scene_->reset();
+        renderer_.sceneChanged();
         for (int i = 0; i < timing.warmupFrames; ++i) frame();
         BenchmarkRow row;
         row.setup = setup;

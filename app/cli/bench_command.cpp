@@ -15,7 +15,7 @@ namespace {
 struct BenchOptions {
     bool render = false;
     std::string out = ".";
-    std::vector<int> resolutions{38, 248};
+    std::vector<int> resolutions{37, 248};
     std::string size = "1024x768";
     BenchmarkTiming timing;
     bool quick = false;
@@ -52,7 +52,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("--render", options->render, "frame-rate benchmark B1: every mode, light, inner grains, 1 and 20 "
                                                "grains per cell; writes benchmark.txt and benchmark.csv");
     cmd->add_option("--out", options->out, "folder for the result files")->capture_default_str();
-    cmd->add_option("--res", options->resolutions, "hourglass resolutions to measure (38: ~3,500 cells, 248: ~1M)")
+    cmd->add_option("--res", options->resolutions, "hourglass resolutions to measure (37: 3,460 cells, 248: 995,072)")
         ->capture_default_str()
         ->check(CLI::Range(8, 1024));
     cmd->add_option("--size", options->size, "framebuffer size, WxH pixels")->capture_default_str();
