@@ -13,8 +13,10 @@ int runCommandLine(int argc, char** argv) {
     app.require_subcommand(0, 1);
     int exitCode = 0;
     addSimulateCommand(app, exitCode);
-    addBenchCommand(app, exitCode);
     addVoxelizeCommand(app, exitCode);
+    addGuiCommand(app, exitCode);
+    addRenderCommand(app, exitCode);
+    addBenchCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -32,8 +34,12 @@ int runCommandLine(int argc, char** argv) {
         return 1;
     }
     if (app.get_subcommands().empty()) {
-        std::cerr << "sandglass: choose a subcommand (see --help)\n";
-        return 2;
+        try {
+            return runDefaultWindow();
+        } catch (const std::exception& e) {
+            std::cerr << "sandglass: " << e.what() << "\n";
+            return 1;
+        }
     }
     return exitCode;
 }

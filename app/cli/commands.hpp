@@ -7,7 +7,12 @@
 namespace sandglass {
 
 void addSimulateCommand(CLI::App& app, int& exitCode);   ///< SPEC C1: headless simulation
-void addBenchCommand(CLI::App& app, int& exitCode);      ///< SPEC C4: the speed-against-error report
 void addVoxelizeCommand(CLI::App& app, int& exitCode);   ///< SPEC C2: model voxelization report
+void addGuiCommand(CLI::App& app, int& exitCode);        ///< SPEC §6: the window on a scene
+void addRenderCommand(CLI::App& app, int& exitCode);     ///< SPEC C3: one frame offscreen to PNG
+void addBenchCommand(CLI::App& app, int& exitCode);      ///< SPEC C4/B2 report; B1 frame rates with --render
+
+/// `sandglass` without arguments: the window on the default hourglass, draining.
+int runDefaultWindow();
 
 } // namespace sandglass

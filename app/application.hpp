@@ -1,0 +1,93 @@
+#pragma once
+// The window application (SPEC G1-G4): the ImGui main loop of poll -> new frame -> panels ->
+// commands -> simulation steps by the SimClock -> scene -> panels drawn -> swap. The same
+// object renders hidden frames for `sandglass render` and runs the B1 benchmark.
+
+#include "app_state.hpp"
+#include "camera.hpp"
+#include "frame_benchmark.hpp"
+#include "imgui_layer.hpp"
+#include "input_routing.hpp"
+#include "render/framebuffer.hpp"
+#include "render/scene_renderer.hpp"
+#include "window.hpp"
+
+#include "sandcore/scene.hpp"
+#include "sandcore/sim_clock.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <future>
+#include <memory>
+#include <optional>
+
+namespace sandglass {
+
+/// How the application starts.
+struct ApplicationOptions {
+    WindowOptions window;            ///< size, visibility, vsync
+    bool offscreen = false;          ///< draw into an offscreen framebuffer of the window's size (hidden runs)
+    AppState initial;                ///< scene, display settings and simulation on/off at start
+    int stepsBeforeStart = 0;        ///< simulation steps run before the first frame
+    int frameLimit = 0;              ///< close after this many frames; 0 = run until closed
+    std::filesystem::path screenshotFile; ///< with frameLimit: the last frame is saved here
+    std::filesystem::path benchmarkFolder = "."; ///< where the B key writes benchmark.txt and .csv
+};
+
+class Application {
+public:
+    /// Opens the window and builds the scene; throws WindowError (no display / GL context),
+    /// std::invalid_argument (bad scene settings) or std::runtime_error (shader problem).
+    explicit Application(ApplicationOptions options);
+    ~Application();
+    Application(const Application&) = delete;
+    Application& operator=(const Application&) = delete;
+
+    /// The main loop until the window closes, Esc, Exit or the frame limit; returns the exit code.
+    int run();
+    /// One whole frame into the current target, with `elapsedSeconds` of wall time fed to the
+    /// clock; does not swap.
+    void renderFrame(double elapsedSeconds);
+    /// The last frame drawn, read back from the target.
+    RgbImage captureFrame() const;
+    /// Runs the B1 cases on the current scene (simulation and GUI on) and returns the rows.
+    BenchmarkReport runBenchmark(const std::vector<BenchmarkCase>& cases, const BenchmarkTiming& timing);
+
+    AppState& state() { return state_; }                         ///< panels' view of the application
+    const sandcore::Scene& scene() const { return *scene_; }     ///< the running scene
+    OrbitCamera& camera() { return camera_; }                    ///< the view
+    std::int64_t framesDrawn() const { return framesDrawn_; }    ///< frames since start
+    const Window& window() const { return window_; }             ///< the window and its context
+
+private:
+    friend struct ApplicationCallbacks;
+    void targetSize(int& width, int& height) const;
+    void bindTarget() const;
+    void handleMouse();
+    void handleKey(KeyCommand command);
+    void serveCommands();
+    void startRebuild();
+    void finishRebuild();
+    void adoptScene(sandcore::Scene scene);
+    void stepSimulation(double elapsedSeconds);
+    void updateStatistics(double elapsedSeconds);
+    void saveScreenshot(const std::filesystem::path& file);
+    void runInteractiveBenchmark();
+
+    ApplicationOptions options_;
+    AppState state_;
+    Window window_;
+    ImGuiLayer imgui_;
+    std::optional<OffscreenTarget> offscreen_;
+    SceneRenderer renderer_;
+    std::unique_ptr<sandcore::Scene> scene_;
+    std::future<sandcore::Scene> pendingScene_;
+    std::chrono::steady_clock::time_point rebuildStarted_;
+    sandcore::SimClock clock_;
+    OrbitCamera camera_;
+    double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
+    std::int64_t framesDrawn_ = 0;
+    int screenshotsTaken_ = 0;
+};
+
+} // namespace sandglass

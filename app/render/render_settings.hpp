@@ -1,0 +1,52 @@
+#pragma once
+// How grains are drawn (SPEC V1-V6): the display half of the application state. The panels
+// change it; the renderer reads it every frame.
+
+#include "sandcore/normals.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace sandglass {
+
+/// The four looks of thesis §3.8 (SPEC V1).
+enum class RenderMode : std::uint8_t {
+    Points,          ///< GL points of a fixed pixel size (the thesis's default)
+    Sprites,         ///< round shaded point sprites of a fixed pixel size ("ungerichtete Sprites")
+    Billboards,      ///< a shaded quad per grain, turned to face the camera exactly
+    PseudoBillboards ///< quads sharing one orientation from the camera's rotation, set once per frame
+};
+
+/// Every render mode in panel order.
+inline constexpr RenderMode kRenderModes[] = {RenderMode::Points, RenderMode::Sprites, RenderMode::Billboards,
+                                              RenderMode::PseudoBillboards};
+
+/// Command-line name: "points", "sprites", "billboards" or "pseudo".
+const char* renderModeName(RenderMode mode);
+/// The thesis's short table name: "P", "S", "BB" or "PBB".
+const char* renderModeShortName(RenderMode mode);
+/// Panel label: "Points", "Sprites", "Billboards", "Pseudo-billboards".
+const char* renderModeLabel(RenderMode mode);
+/// The mode named by renderModeName, or nothing.
+std::optional<RenderMode> parseRenderMode(std::string_view name);
+
+/// Grains per cell of SPEC V2 (the thesis's mInnerCountMax).
+inline constexpr int kMaxGrainsPerCell = 32;
+
+/// Display settings; every default is the thesis's (§3.7) unless it says otherwise.
+struct RenderSettings {
+    RenderMode mode = RenderMode::Points; ///< thesis default: points
+    int grainsPerCell = 4;                ///< sub-grains drawn per cell, 1..32 (V2)
+    bool lighting = false;                ///< V3: lambert from estimated normals; thesis default off
+    bool innerGrains = true;              ///< V4: draw grains hidden by their 6 neighbours; default on
+    bool blackBackground = false;         ///< V5: thesis default white
+    bool hull = true;                     ///< V6: translucent vessel hull (beyond the thesis)
+    float pointSize = 3.0f;               ///< points and sprites: diameter in pixels at content scale 1
+    float quadSize = 0.9f;                ///< billboards: quad edge in cells at 1 grain per cell (shrinks with k)
+    float jitter = 0.5f;                  ///< R8 jitter 0..1 of a grain inside its cell
+    float cellSize = 1.0f;                ///< world units per cell (the thesis's mSize)
+    sandcore::NormalMethod normals = sandcore::NormalMethod::OccupancyGradient; ///< R12 estimate used by V3
+};
+
+} // namespace sandglass

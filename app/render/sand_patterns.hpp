@@ -1,0 +1,25 @@
+#pragma once
+// Thesis §3.8 "Scribble": a fixed set of random patterns, each placing up to 32 sub-grains inside
+// a cell and giving each a pale sand colour. A grain uses pattern (identity mod count), so the
+// choice never changes from frame to frame (no flicker) and costs no random numbers per frame.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sandglass {
+
+/// One pattern: offsets in [-1, 1] per axis (scaled by half a cell when drawn) and RGBA8 colours.
+struct SandPattern {
+    std::array<std::array<float, 3>, 32> offsets{}; ///< sub-grain positions inside the cell, [-1, 1]
+    std::array<std::uint32_t, 32> colors{};         ///< RGBA8, R in the low byte, alpha 255
+};
+
+/// Number of patterns the renderer uploads (the thesis's mCount).
+inline constexpr int kSandPatternCount = 64;
+
+/// The patterns, the same on every run: colours in RGB (220-240, 220-240, 150-190) with one
+/// tint per pattern and a small variation per sub-grain; sub-grain 0 sits at the cell centre.
+std::vector<SandPattern> makeSandPatterns(int count = kSandPatternCount);
+
+} // namespace sandglass

@@ -1,0 +1,62 @@
+#pragma once
+// Draws a scene's sand and hull with OpenGL 3.3 (SPEC V1-V6). All per-grain work runs in the
+// vertex shader: the grains go up in one buffer update per frame (none when nothing moved) and
+// are drawn with one instanced call, k sub-grains per instance.
+
+#include "camera.hpp"
+#include "render/gl_objects.hpp"
+#include "render/grain_instances.hpp"
+#include "render/render_settings.hpp"
+
+#include "sandcore/scene.hpp"
+
+#include <cstdint>
+#include <filesystem>
+
+namespace sandglass {
+
+/// What the last frame drew.
+struct RenderStats {
+    std::int64_t grainsDrawn = 0;   ///< grain instances (inner grains skipped when hidden)
+    std::int64_t subGrainsDrawn = 0; ///< grainsDrawn * grains per cell
+    std::int64_t innerGrains = 0;   ///< grains hidden by their 6 neighbours (R13)
+    bool uploaded = false;          ///< the grain buffer was updated this frame
+};
+
+class SceneRenderer {
+public:
+    /// Loads the shaders from a folder and makes the pattern textures; needs a current GL 3.3
+    /// context. Throws std::runtime_error with one line on a shader problem.
+    explicit SceneRenderer(const std::filesystem::path& shaderFolder);
+
+    /// Takes a new scene: rebuilds the hull mesh and forgets cached grain data.
+    void setScene(const sandcore::Scene& scene, float cellSize);
+    /// The scene's grains moved (a step, reset or edit): normals and inner flags are stale.
+    void sceneChanged();
+
+    /// Clears the bound framebuffer (width x height pixels) and draws the scene at stepFraction
+    /// of the current step. pixelScale multiplies point sizes (HiDPI content scale).
+    void draw(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
+              const OrbitCamera& camera, int width, int height, float pixelScale);
+
+    const RenderStats& stats() const { return stats_; } ///< what the last draw did
+
+private:
+    void uploadGrains(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings);
+    void drawGrains(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection,
+                    float pixelScale);
+    void drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection);
+
+    GlProgram grainProgram_, hullProgram_;
+    GlVertexArray grainArray_, hullArray_, lineArray_;
+    GlBuffer grainBuffer_, hullBuffer_, lineBuffer_;
+    GlTexture patternOffsets_, patternColors_;
+    GrainInstanceBuilder builder_;
+    std::int64_t instanceCount_ = 0;
+    std::int64_t hullVertices_ = 0, lineVertices_ = 0;
+    bool grainsStale_ = true;
+    RenderSettings uploadedWith_;
+    RenderStats stats_;
+};
+
+} // namespace sandglass

@@ -1,0 +1,175 @@
+#include "gui/panels.hpp"
+
+#include <imgui.h>
+
+namespace sandglass {
+
+void drawPanels(AppState& state) {
+    const float scale = ImGui::GetFontSize() / 13.0f; // HiDPI: the font was loaded at content scale
+    ImGui::SetNextWindowPos(ImVec2(10.0f * scale, 10.0f * scale), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(330.0f * scale, 0.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.88f);
+    if (ImGui::Begin("sandglass", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (ImGui::CollapsingHeader("Control", ImGuiTreeNodeFlags_DefaultOpen)) drawControlSection(state);
+        if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) drawDisplaySection(state);
+        if (ImGui::CollapsingHeader("Scene")) drawSceneSection(state);
+        if (state.scene.request.kind == sandcore::SceneKind::Canvas &&
+            ImGui::CollapsingHeader("Painting", ImGuiTreeNodeFlags_DefaultOpen))
+            drawPaintingSection(state);
+        if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) drawStatisticsSection(state);
+        if (!state.statusLine.empty()) {
+            ImGui::Separator();
+            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 22.0f);
+            ImGui::TextUnformatted(state.statusLine.c_str());
+            ImGui::PopTextWrapPos();
+        }
+    }
+    ImGui::End();
+}
+
+void drawControlSection(AppState& state) {
+    // Thesis: a green/red button; here a coloured toggle with the same meaning.
+    const bool running = state.simulationRunning;
+    ImGui::PushStyleColor(ImGuiCol_Button, running ? ImVec4(0.20f, 0.60f, 0.25f, 1.0f) : ImVec4(0.65f, 0.20f, 0.20f, 1.0f));
+    if (ImGui::Button(running ? "Simulation: on " : "Simulation: off")) state.simulationRunning = !running;
+    ImGui::PopStyleColor();
+    ImGui::SameLine();
+    if (ImGui::Button("Step")) state.pending.singleStep = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) state.pending.reset = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Exit")) state.pending.quit = true;
+    float speed = float(state.stepsPerSecond);
+    if (ImGui::SliderFloat("flow (steps/s)", &speed, 1.0f, 240.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
+        state.stepsPerSecond = speed;
+    if (ImGui::Button("Screenshot (P)")) state.pending.screenshot = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Benchmark (B)")) state.pending.benchmark = true;
+}
+
+void drawDisplaySection(AppState& state) {
+    RenderSettings& render = state.render;
+    // Thesis "+"/"-": more or fewer grains drawn per cell.
+    ImGui::TextUnformatted("grains per cell");
+    ImGui::SameLine();
+    if (ImGui::Button(" - ") && render.grainsPerCell > 1) --render.grainsPerCell;
+    ImGui::SameLine();
+    ImGui::Text("%2d", render.grainsPerCell);
+    ImGui::SameLine();
+    if (ImGui::Button(" + ") && render.grainsPerCell < kMaxGrainsPerCell) ++render.grainsPerCell;
+
+    int mode = int(render.mode);
+    const char* labels[] = {renderModeLabel(kRenderModes[0]), renderModeLabel(kRenderModes[1]),
+                            renderModeLabel(kRenderModes[2]), renderModeLabel(kRenderModes[3])};
+    if (ImGui::Combo("mode", &mode, labels, 4)) render.mode = kRenderModes[mode];
+    int background = render.blackBackground ? 1 : 0;
+    ImGui::TextUnformatted("background");
+    ImGui::SameLine();
+    ImGui::RadioButton("white", &background, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("black", &background, 1);
+    render.blackBackground = background == 1;
+    ImGui::Checkbox("lighting", &render.lighting);
+    ImGui::SameLine();
+    ImGui::Checkbox("inner grains", &render.innerGrains);
+    ImGui::SameLine();
+    ImGui::Checkbox("glass", &render.hull);
+    if (render.lighting) {
+        int method = int(render.normals);
+        const char* methods[] = {"column heights (thesis)", "occupancy gradient"};
+        if (ImGui::Combo("normals", &method, methods, 2)) render.normals = sandcore::NormalMethod(method);
+    }
+    if (render.mode == RenderMode::Points || render.mode == RenderMode::Sprites)
+        ImGui::SliderFloat("point size (px)", &render.pointSize, 1.0f, 16.0f, "%.1f");
+    else
+        ImGui::SliderFloat("grain size (cells)", &render.quadSize, 0.2f, 2.0f, "%.2f");
+    ImGui::SliderFloat("jitter", &render.jitter, 0.0f, 1.0f, "%.2f");
+}
+
+void drawSceneSection(AppState& state) {
+    SceneSettings& scene = state.scene;
+    int kind = int(scene.request.kind);
+    const char* kinds[] = {"hourglass", "sculpture", "canvas"};
+    if (ImGui::Combo("scene", &kind, kinds, 3)) {
+        scene.request.kind = sandcore::SceneKind(kind);
+        scene.request.shape.clear(); // each scene has its own default shape
+        state.pending.rebuild = true;
+    }
+    if (scene.request.kind != sandcore::SceneKind::Canvas) {
+        const char* shapes[] = {"hourglass", "sphere", "cube"};
+        const bool hourglass = scene.request.kind == sandcore::SceneKind::Hourglass;
+        const std::string current =
+            !scene.request.shape.empty() ? scene.request.shape : hourglass ? "hourglass" : "sphere";
+        if (ImGui::BeginCombo("shape", scene.modelFile.empty() ? current.c_str() : "(model file)")) {
+            for (const char* shape : shapes)
+                if (ImGui::Selectable(shape, scene.modelFile.empty() && current == shape)) {
+                    scene.request.shape = shape;
+                    scene.modelFile.clear();
+                    state.pending.rebuild = true;
+                }
+            ImGui::EndCombo();
+        }
+        if (ImGui::BeginListBox("models/", ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * 4.0f))) {
+            for (const std::string& file : state.modelFiles)
+                if (ImGui::Selectable(file.c_str(), scene.modelFile == file)) {
+                    scene.modelFile = file;
+                    state.pending.rebuild = true;
+                }
+            if (state.modelFiles.empty()) ImGui::TextDisabled("(no model files)");
+            ImGui::EndListBox();
+        }
+        char path[512] = {};
+        scene.modelFile.copy(path, sizeof path - 1);
+        if (ImGui::InputText("model path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
+            scene.modelFile = path;
+            state.pending.rebuild = true;
+        }
+        ImGui::TextDisabled("or drop a model file on the window");
+    }
+    ImGui::SliderInt("resolution", &scene.request.resolution, 16, 256);
+    int seed = int(scene.seed);
+    if (ImGui::InputInt("seed", &seed) && seed >= 0) scene.seed = std::uint64_t(seed);
+    ImGui::SliderInt("threads", &scene.threads, 1, 16);
+    if (ImGui::Button("Rebuild scene")) state.pending.rebuild = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Frame camera")) state.pending.frameCamera = true;
+}
+
+void drawPaintingSection(AppState& state) {
+    PaintingSettings& painting = state.painting;
+    int erase = painting.erase ? 1 : 0;
+    ImGui::RadioButton("draw", &erase, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("erase", &erase, 1);
+    painting.erase = erase == 1;
+    int target = painting.pickAtTarget ? 1 : 0;
+    ImGui::RadioButton("source", &target, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("target", &target, 1);
+    painting.pickAtTarget = target == 1;
+    int thin = painting.thinLines ? 1 : 0;
+    ImGui::RadioButton("thick", &thin, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("thin", &thin, 1);
+    painting.thinLines = thin == 1;
+    ImGui::Checkbox("draft image", &painting.showDraft);
+}
+
+void drawStatisticsSection(AppState& state) {
+    const FrameStatistics& stats = state.stats;
+    ImGui::Text("%.1f fps   %.2f ms per frame", stats.framesPerSecond, stats.millisecondsPerFrame);
+    // The ring buffer starts at the oldest frame, so the plot scrolls left.
+    ImGui::PlotLines("##frametimes", stats.frameMilliseconds.data(), FrameStatistics::kHistory, stats.historyNext,
+                     "frame time (ms)", 0.0f, 50.0f, ImVec2(0.0f, 3.5f * ImGui::GetFontSize()));
+    ImGui::Text("grains %lld (upper %lld, lower %lld)", (long long)stats.grains, (long long)stats.grainsUpper,
+                (long long)stats.grainsLower);
+    ImGui::Text("moving %lld   inner %lld", (long long)stats.movingGrains, (long long)stats.innerGrains);
+    ImGui::Text("steps %llu   %.1f steps/s   %.3f ms per step", (unsigned long long)stats.stepsDone,
+                stats.stepsPerSecond, stats.millisecondsPerStep);
+    ImGui::Text("drawn %lld %s", (long long)stats.subGrainsDrawn,
+                state.render.mode == RenderMode::Points || state.render.mode == RenderMode::Sprites ? "points"
+                                                                                                     : "quads");
+    ImGui::TextDisabled("%s", state.glRenderer.c_str());
+}
+
+} // namespace sandglass

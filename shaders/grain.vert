@@ -1,0 +1,69 @@
+#version 330 core
+// One sand grain per instance; gl_VertexID picks the sub-grain (thesis §3.8 "Scribble") and,
+// for quads, the corner. Nothing per grain is computed on the CPU beyond its position.
+
+layout(location = 0) in vec3 grainPosition;   // R8 display position, world units
+layout(location = 1) in vec4 grainNormal;     // packed 10:10:10:2, unit normal
+layout(location = 2) in uint grainIdentity;   // picks the pattern
+layout(location = 3) in uint grainColor;      // RGBA8, 0 = the pattern's sand colour
+
+uniform mat4 viewProjection;
+uniform int mode;                // 0 points, 1 sprites, 2 billboards, 3 pseudo-billboards
+uniform float cellSize;          // world units per cell
+uniform float pointSize;         // points and sprites, pixels
+uniform float quadHalfSize;      // billboards, world units
+uniform vec3 cameraPosition;     // world units
+uniform vec3 cameraUp;           // unit, world space
+uniform vec3 pseudoRight;        // pseudo-billboards: the camera's rotation applied once per frame
+uniform vec3 pseudoUp;
+uniform bool lighting;
+uniform vec3 lightPosition;      // a white point light slightly below the camera (§3.8)
+uniform sampler2D patternOffsets; // x: sub-grain (0..31), y: pattern; xyz in [-1, 1]
+uniform sampler2D patternColors;  // same layout, RGBA8
+uniform int patternCount;
+
+out vec3 shadedColor;
+out vec2 quadCorner;
+
+const vec2 corners[6] = vec2[6](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
+
+void main() {
+    bool quads = mode >= 2;
+    int subGrain = quads ? gl_VertexID / 6 : gl_VertexID;
+    ivec2 texel = ivec2(subGrain, int(grainIdentity % uint(patternCount)));
+    vec3 centre = grainPosition + texelFetch(patternOffsets, texel, 0).xyz * (0.5 * cellSize);
+
+    vec3 base = texelFetch(patternColors, texel, 0).rgb;
+    if (grainColor != 0u) {
+        vec3 own = vec3(float(grainColor & 255u), float((grainColor >> 8) & 255u), float((grainColor >> 16) & 255u)) / 255.0;
+        base = own * (base / vec3(0.90, 0.90, 0.67)); // keep the pattern's small variation
+    }
+    if (lighting) {
+        vec3 n = normalize(grainNormal.xyz);
+        vec3 toLight = normalize(lightPosition - centre);
+        float lambert = max(dot(n, toLight), 0.0);
+        base *= 0.45 + 0.65 * lambert; // ambient keeps the side away from the light readable
+    }
+    shadedColor = base;
+
+    vec3 world = centre;
+    quadCorner = vec2(0.0);
+    if (quads) {
+        quadCorner = corners[gl_VertexID % 6];
+        vec3 right, up;
+        if (mode == 2) {
+            // Thesis §3.8 billboard: l = look at this grain, r = C_up x l, u = l x r.
+            vec3 look = normalize(centre - cameraPosition);
+            right = normalize(cross(cameraUp, look));
+            up = cross(look, right);
+            right = -right; // keep the texture's left on the screen's left
+        } else {
+            right = pseudoRight;
+            up = pseudoUp;
+        }
+        world += (quadCorner.x * right + quadCorner.y * up) * quadHalfSize;
+    } else {
+        gl_PointSize = pointSize;
+    }
+    gl_Position = viewProjection * vec4(world, 1.0);
+}

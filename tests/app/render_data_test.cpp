@@ -1,0 +1,99 @@
+// The data the GPU draws from: Scribble patterns (V2), packed normals, the glass hull (V6) and
+// the benchmark's table form (B1). No GL needed.
+#include "frame_benchmark.hpp"
+#include "render/grain_instances.hpp"
+#include "render/hull_mesh.hpp"
+#include "render/sand_patterns.hpp"
+#include "scene_request.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+using namespace sandglass;
+
+TEST_CASE("patterns: thesis sand colours, offsets inside the cell, the same on every run") {
+    const std::vector<SandPattern> patterns = makeSandPatterns();
+    REQUIRE(patterns.size() == std::size_t(kSandPatternCount));
+    std::set<std::uint32_t> tints;
+    for (const SandPattern& pattern : patterns) {
+        tints.insert(pattern.colors[0]);
+        for (std::size_t i = 0; i < pattern.colors.size(); ++i) {
+            const std::uint32_t c = pattern.colors[i];
+            CHECK((c & 0xffu) >= 220u);
+            CHECK((c & 0xffu) <= 240u);
+            CHECK(((c >> 8) & 0xffu) >= 220u);
+            CHECK(((c >> 8) & 0xffu) <= 240u);
+            CHECK(((c >> 16) & 0xffu) >= 150u);
+            CHECK(((c >> 16) & 0xffu) <= 190u);
+            for (float v : pattern.offsets[i]) CHECK(std::abs(v) <= 1.0f);
+        }
+    }
+    CHECK(tints.size() > patterns.size() / 2); // patterns differ from each other
+    const std::vector<SandPattern> again = makeSandPatterns();
+    CHECK(again[7].colors == patterns[7].colors);
+    CHECK(again[7].offsets == patterns[7].offsets);
+}
+
+TEST_CASE("instances: normals survive packing within 1/500") {
+    for (sandcore::Vec3 n : {sandcore::Vec3{0, 1, 0}, sandcore::Vec3{0.6f, 0.8f, 0}, sandcore::Vec3{-0.48f, 0.6f, -0.64f}}) {
+        const sandcore::Vec3 back = unpackNormal(packNormal(n));
+        CHECK(back.x == doctest::Approx(n.x).epsilon(0.002));
+        CHECK(back.y == doctest::Approx(n.y).epsilon(0.002));
+        CHECK(back.z == doctest::Approx(n.z).epsilon(0.002));
+    }
+}
+
+TEST_CASE("instances: hiding inner grains draws only the visible ones") {
+    SceneRequest request;
+    request.resolution = 24;
+    sandcore::Scene scene = buildScene(request, {});
+    GrainInstanceBuilder builder;
+    RenderSettings settings;
+    const std::size_t all = builder.build(scene, 0.0f, settings).size();
+    CHECK(all == std::size_t(scene.grainCount()));
+    settings.innerGrains = false;
+    builder.sceneChanged();
+    const std::size_t visible = builder.build(scene, 0.0f, settings).size();
+    CHECK(builder.innerGrainCount() > 0);
+    CHECK(visible == all - std::size_t(builder.innerGrainCount()));
+}
+
+TEST_CASE("hull: the hourglass gets glass faces, the canvas an outline, the sculpture only a floor") {
+    SceneRequest request;
+    request.resolution = 24;
+    const HullMesh hourglass = buildHullMesh(buildScene(request, {}), 1.0f);
+    CHECK(hourglass.triangles.size() > 0);
+    CHECK(hourglass.triangles.size() % 6 == 0);
+    for (const HullVertex& v : hourglass.triangles)
+        CHECK(std::abs(v.nx * v.nx + v.ny * v.ny + v.nz * v.nz - 1.0f) < 1e-3f);
+    request.kind = sandcore::SceneKind::Canvas;
+    const HullMesh canvas = buildHullMesh(buildScene(request, {}), 1.0f);
+    CHECK(canvas.triangles.empty());
+    CHECK(canvas.lines.size() == 2 * 12 * 2); // two boxes of 12 edges, 2 vertices each
+    request.kind = sandcore::SceneKind::Sculpture;
+    const HullMesh sculpture = buildHullMesh(buildScene(request, {}), 1.0f);
+    CHECK(sculpture.triangles.empty());
+    CHECK(sculpture.lines.size() == 8);
+}
+
+TEST_CASE("benchmark: the thesis's table form, every mode with and without light and inner grains") {
+    const std::vector<BenchmarkCase> cases = thesisBenchmarkCases();
+    CHECK(cases.size() == 32);
+    BenchmarkReport report{"hourglass, resolution 38", "test GPU", "3.3 test", 640, 480, {}};
+    for (const BenchmarkCase& c : cases) report.rows.push_back({c, true, true, 3482, 10, 0.5});
+    std::ostringstream text, csv;
+    writeBenchmarkText(text, {report}, "sandglass bench --render");
+    writeBenchmarkCsv(csv, {report});
+    CHECK(text.str().find("Sim\tGui\tMode\tPpC\tfilled\tLight\tinner\tFPS") != std::string::npos);
+    CHECK(text.str().find("on\ton\tPBB\t20\t3482\ton\tno\t20.0") != std::string::npos);
+    CHECK(text.str().find("GPU (GL_RENDERER): test GPU") != std::string::npos);
+    CHECK(text.str().find("Driver (GL_VERSION): 3.3 test") != std::string::npos);
+    std::istringstream lines(csv.str());
+    std::string line;
+    int count = 0;
+    while (std::getline(lines, line)) ++count;
+    CHECK(count == 33);
+}

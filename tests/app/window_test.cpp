@@ -1,0 +1,69 @@
+// SPEC G1: the window opens, runs 200 frames with the simulation on and closes cleanly.
+#include "display_guard.hpp"
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+struct ProcessResult {
+    int exitCode = -1;
+    std::string output;
+};
+
+ProcessResult runSandglass(const std::string& arguments) {
+    const std::string command = std::string(SANDGLASS_EXECUTABLE) + " " + arguments + " 2>&1";
+    ProcessResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::array<char, 512> buffer{};
+    while (fgets(buffer.data(), int(buffer.size()), pipe) != nullptr) result.output += buffer.data();
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+} // namespace
+
+TEST_CASE("window: 200 frames with the simulation on, then a clean exit with every grain kept") {
+    if (!sandglass::testing::displayAvailable()) {
+        MESSAGE("no X display (run under xvfb-run): window not opened");
+        return;
+    }
+    const ProcessResult run = runSandglass("gui --res 24 --run --frames 200 --size 320x240");
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    unsigned long long frames = 0, steps = 0;
+    long long grains = -1, grainsAtStart = -2;
+    const auto line = run.output.find("frames ");
+    REQUIRE(line != std::string::npos);
+    REQUIRE(std::sscanf(run.output.c_str() + line, "frames %llu, steps %llu, grains %lld (at start %lld)", &frames,
+                        &steps, &grains, &grainsAtStart) == 4);
+    CHECK(frames == 200);
+    CHECK(steps > 0);
+    CHECK(grains == grainsAtStart);
+}
+
+TEST_CASE("window: --screenshot writes the last frame") {
+    if (!sandglass::testing::displayAvailable()) {
+        MESSAGE("no X display (run under xvfb-run): window not opened");
+        return;
+    }
+    const std::string file = "build/window-test-screenshot.png";
+    std::remove(file.c_str());
+    const ProcessResult run = runSandglass("gui --res 16 --frames 3 --size 200x150 --screenshot " + file);
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    FILE* png = std::fopen(file.c_str(), "rb");
+    REQUIRE(png != nullptr);
+    unsigned char signature[8] = {};
+    CHECK(std::fread(signature, 1, 8, png) == 8);
+    std::fclose(png);
+    CHECK(signature[1] == 'P');
+    CHECK(signature[2] == 'N');
+    CHECK(signature[3] == 'G');
+}
