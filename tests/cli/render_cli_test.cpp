@@ -1,11 +1,11 @@
 // SPEC C3 and §6: bad input to render, gui and bench gives one line on stderr and a non-zero code.
+#include "run_process.hpp"
+
 #include <doctest/doctest.h>
 
-#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
@@ -15,22 +15,8 @@ struct Result {
 };
 
 Result runWithStderr(const std::string& arguments) {
-    // stdout is dropped; stderr is what a user sees for bad input.
-    const std::string command = std::string(SANDGLASS_EXECUTABLE) + " " + arguments + " 2>&1 >/dev/null";
-    Result result;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 512> buffer{};
-    while (fgets(buffer.data(), int(buffer.size()), pipe) != nullptr) result.errors += buffer.data();
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
-
-int lineCount(const std::string& text) {
-    int lines = 0;
-    for (char c : text) lines += c == '\n';
-    return lines;
+    const cli::ProcessResult r = cli::runSandglass(arguments);
+    return {r.exitCode, r.err};
 }
 
 } // namespace
@@ -39,11 +25,11 @@ TEST_CASE("cli: bad render, gui and bench input gives one line and a non-zero ex
     for (const char* arguments :
          {"render --out x.png --mode voxels", "render --out x.png --grains-per-cell 40", "render --mode points",
           "render --out x.png --size 12", "render --out x.png --scene teapot", "gui --screenshot x.png",
-          "gui --res 3 --frames 1", "bench", "bench --render --res 2"}) {
+          "gui --res 3 --frames 1", "bench --out", "bench --render --res 2"}) {
         CAPTURE(arguments);
         const Result result = runWithStderr(arguments);
         CHECK(result.exitCode != 0);
-        CHECK(lineCount(result.errors) == 1);
+        CHECK(cli::lineCount(result.errors) == 1);
         CHECK(result.errors.rfind("sandglass: ", 0) == 0);
     }
 }
