@@ -15,10 +15,9 @@ namespace sandglass {
 
 /// Which scene to build and how its steps run.
 struct SceneSettings {
-    SceneRequest request;        ///< scene kind, procedural shape, resolution, fill
+    SceneRequest request;        ///< scene kind, model file or procedural shape, resolution, fill
     std::uint64_t seed = 1;      ///< R3 seed of the slip randomness
     int threads = 1;             ///< R6 worker threads (the result does not depend on it)
-    std::string modelFile;       ///< a model picked in the list, typed or dropped on the window
 };
 
 /// Thesis §3.7 "Zeichnen" (canvas) controls, each with the thesis's default.

@@ -21,9 +21,6 @@ using Clock = std::chrono::steady_clock;
 
 // Scenes are built off the main thread so the window stays responsive (SPEC G2).
 sandcore::Scene buildSceneFor(const SceneSettings& settings) {
-    if (!settings.modelFile.empty())
-        throw std::invalid_argument("cannot load " + settings.modelFile +
-                                    ": this build has the procedural shapes only (hourglass, sphere, cube)");
     sandcore::StepSettings step;
     step.seed = settings.seed;
     step.threads = std::max(1, settings.threads);
@@ -77,7 +74,7 @@ struct ApplicationCallbacks {
     static void drop(GLFWwindow* window, int count, const char** paths) {
         if (count < 1) return;
         Application& app = of(window);
-        app.state_.scene.modelFile = paths[0];
+        app.state_.scene.request.modelPath = paths[0];
         if (app.state_.scene.request.kind == sandcore::SceneKind::Canvas)
             app.state_.scene.request.kind = sandcore::SceneKind::Hourglass;
         app.state_.pending.rebuild = true;

@@ -43,6 +43,15 @@ sandcore::InsideMask makeProceduralMask(std::string_view shape, int resolution, 
 
 std::string defaultModelPath() { return std::string(SANDGLASS_SOURCE_DIR) + "/models/hourglass.obj"; }
 
+std::string defaultModelFor(SceneKind kind) {
+    switch (kind) {
+    case SceneKind::Hourglass: return defaultModelPath();
+    case SceneKind::Sculpture: return std::string(SANDGLASS_SOURCE_DIR) + "/models/snowman.obj";
+    case SceneKind::Canvas: return {};
+    }
+    return {};
+}
+
 BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::StepSettings& step) {
     if (request.resolution < 8)
         throw std::invalid_argument("resolution must be at least 8 cells, got " + std::to_string(request.resolution));

@@ -54,4 +54,8 @@ BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::Ste
 /// The bundled default vessel, models/hourglass.obj in the source tree.
 std::string defaultModelPath();
 
+/// The model a scene shows when the user names none: models/hourglass.obj for the hourglass,
+/// models/snowman.obj for the sculpture, none (empty) for the canvas.
+std::string defaultModelFor(sandcore::SceneKind kind);
+
 } // namespace sandglass

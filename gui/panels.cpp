@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <filesystem>
+
 namespace sandglass {
 
 void drawPanels(AppState& state) {
@@ -92,7 +94,8 @@ void drawSceneSection(AppState& state) {
     const char* kinds[] = {"hourglass", "sculpture", "canvas"};
     if (ImGui::Combo("scene", &kind, kinds, 3)) {
         scene.request.kind = sandcore::SceneKind(kind);
-        scene.request.shape.clear(); // each scene has its own default shape
+        scene.request.shape.clear(); // each scene has its own default model
+        scene.request.modelPath = defaultModelFor(scene.request.kind);
         state.pending.rebuild = true;
     }
     if (scene.request.kind != sandcore::SceneKind::Canvas) {
@@ -100,28 +103,32 @@ void drawSceneSection(AppState& state) {
         const bool hourglass = scene.request.kind == sandcore::SceneKind::Hourglass;
         const std::string current =
             !scene.request.shape.empty() ? scene.request.shape : hourglass ? "hourglass" : "sphere";
-        if (ImGui::BeginCombo("shape", scene.modelFile.empty() ? current.c_str() : "(model file)")) {
+        const std::string shown = scene.request.modelPath.empty()
+                                      ? current
+                                      : std::filesystem::path(scene.request.modelPath).filename().string();
+        if (ImGui::BeginCombo("procedural shape", shown.c_str())) {
             for (const char* shape : shapes)
-                if (ImGui::Selectable(shape, scene.modelFile.empty() && current == shape)) {
+                if (ImGui::Selectable(shape, scene.request.modelPath.empty() && current == shape)) {
                     scene.request.shape = shape;
-                    scene.modelFile.clear();
+                    scene.request.modelPath.clear();
                     state.pending.rebuild = true;
                 }
             ImGui::EndCombo();
         }
         if (ImGui::BeginListBox("models/", ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * 4.0f))) {
             for (const std::string& file : state.modelFiles)
-                if (ImGui::Selectable(file.c_str(), scene.modelFile == file)) {
-                    scene.modelFile = file;
+                if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(),
+                                      scene.request.modelPath == file)) {
+                    scene.request.modelPath = file;
                     state.pending.rebuild = true;
                 }
             if (state.modelFiles.empty()) ImGui::TextDisabled("(no model files)");
             ImGui::EndListBox();
         }
         char path[512] = {};
-        scene.modelFile.copy(path, sizeof path - 1);
+        scene.request.modelPath.copy(path, sizeof path - 1);
         if (ImGui::InputText("model path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
-            scene.modelFile = path;
+            scene.request.modelPath = path;
             state.pending.rebuild = true;
         }
         ImGui::TextDisabled("or drop a model file on the window");

@@ -7,6 +7,7 @@ namespace sandglass {
 
 void addViewOptions(CLI::App& command, ViewOptions& options) {
     command.add_option("--scene", options.scene, "hourglass, sculpture or canvas")->capture_default_str();
+    command.add_option("--model", options.model, "model file (OBJ, STL, PLY, glTF, ...) as vessel or sculpture");
     command.add_option("--shape", options.shape, "procedural shape: hourglass, sphere or cube (default per scene)");
     command.add_option("--res", options.resolution, "cells along the shape's largest extent")->capture_default_str();
     command.add_option("--seed", options.seed, "seed of the slip randomness")->capture_default_str();
@@ -28,6 +29,10 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
     AppState& state = result.initial;
     state.scene.request.kind = parseSceneKind(options.scene);
     state.scene.request.shape = options.shape;
+    if (!options.model.empty() && !options.shape.empty())
+        throw std::invalid_argument("choose either --model or --shape");
+    state.scene.request.modelPath = options.model;
+    if (options.model.empty() && options.shape.empty()) state.scene.request.modelPath = defaultModelFor(state.scene.request.kind);
     state.scene.request.resolution = options.resolution;
     state.scene.seed = options.seed;
     const std::optional<RenderMode> mode = parseRenderMode(options.mode);

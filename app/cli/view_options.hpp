@@ -13,7 +13,8 @@ namespace sandglass {
 /// Scene and display choices as typed on the command line.
 struct ViewOptions {
     std::string scene = "hourglass";  ///< hourglass, sculpture or canvas
-    std::string shape;                ///< procedural shape; empty = the scene's default
+    std::string model;                ///< model file; empty = the scene's default (see applicationOptionsFrom)
+    std::string shape;                ///< procedural shape instead of a model file
     int resolution = 64;              ///< cells along the shape's largest extent
     std::uint64_t seed = 1;           ///< R3 seed
     std::string mode = "points";      ///< points, sprites, billboards or pseudo
@@ -26,11 +27,12 @@ struct ViewOptions {
     int steps = 0;                    ///< simulation steps before the first frame
 };
 
-/// Adds --scene --shape --res --seed --mode --grains-per-cell --light --no-inner --black
+/// Adds --scene --model --shape --res --seed --mode --grains-per-cell --light --no-inner --black
 /// --no-hull --size --steps to a subcommand.
 void addViewOptions(CLI::App& command, ViewOptions& options);
 
 /// Application options from the typed ones; throws std::invalid_argument with one line on a bad value.
+/// Without --model and --shape the hourglass is models/hourglass.obj and the sculpture models/snowman.obj.
 ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaultWidth, int defaultHeight);
 
 } // namespace sandglass
