@@ -80,17 +80,20 @@ void Scene::step() {
     WorkerPool* pool = settings_.threads > 1 ? pool_.get() : nullptr;
     SweepResult lower, upper;
     // The two grids touch no common cell during their sweeps (the lower grid's wakes of the
-    // outlet row wait until both are done), so when both have work they run side by side, each
-    // on one thread; otherwise the busy grid splits its layers into strips over the threads.
-    const bool sideBySide = pool && settings_.sleeping && lowerSweep_->awakeRowCount() > 0 &&
-                            upperSweep_->awakeRowCount() > 0;
+    // outlet row wait until both are done), so when both have comparable work they run side by
+    // side, each on one thread; otherwise the busy grid splits its layers into strips over the
+    // threads. Neither choice changes the result.
+    const std::int64_t lowerWork = settings_.sleeping ? lowerSweep_->awakeRowCount() : std::int64_t(lower_.cellCount());
+    const std::int64_t upperWork = settings_.sleeping ? upperSweep_->awakeRowCount() : std::int64_t(upper_.cellCount());
+    const bool sideBySide = pool && std::min(lowerWork, upperWork) > 0 &&
+                            4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
     if (sideBySide) {
         lowerSweep_->setDeferWakesAbove(true);
         pool->parallelFor(2, [&](int grid) {
             if (grid == 0)
-                lower = lowerSweep_->sweep(lower_, grains_, settings_.seed, stepNumber, true, nullptr);
+                lower = lowerSweep_->sweep(lower_, grains_, settings_.seed, stepNumber, settings_.sleeping, nullptr);
             else
-                upper = upperSweep_->sweep(upper_, grains_, settings_.seed, stepNumber, true, nullptr);
+                upper = upperSweep_->sweep(upper_, grains_, settings_.seed, stepNumber, settings_.sleeping, nullptr);
         });
         lowerSweep_->setDeferWakesAbove(false);
         lowerSweep_->applyDeferredWakes();

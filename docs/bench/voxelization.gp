@@ -1,0 +1,9 @@
+set terminal pngcairo size 800,500
+set output 'voxelization.png'
+set title 'Voxelization: time against volume error (labels: resolution)'
+set xlabel 'ms (2 threads)'
+set ylabel '|relative volume error|'
+set logscale xy
+set grid
+set key right top
+plot 'voxelization.dat' index 0 with linespoints title 'sphere', '' index 0 using 1:2:3 with labels offset 1,0.7 notitle, '' index 1 with linespoints title 'hourglass', '' index 2 with linespoints title 'torus'
