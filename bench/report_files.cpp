@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 
 namespace sandbench {
 
@@ -59,6 +60,28 @@ bool runGnuplot(const std::filesystem::path& scriptFile, const std::string& scri
     const std::string command =
         "cd '" + folder.string() + "' && gnuplot '" + scriptFile.filename().string() + "' >/dev/null 2>&1";
     return std::system(command.c_str()) == 0;
+}
+
+bool writeLinePlot(const std::filesystem::path& folder, const LinePlot& plot) {
+    // One gnuplot data block per series; blocks are separated by two blank lines.
+    std::string data, commands;
+    for (std::size_t s = 0; s < plot.series.size(); ++s) {
+        const PlotSeries& series = plot.series[s];
+        for (std::size_t i = 0; i < series.points.size(); ++i) {
+            data += fixed(series.points[i].first, 6) + " " + fixed(series.points[i].second, 8);
+            data += " \"" + (i < series.labels.size() ? series.labels[i] : std::string()) + "\"\n";
+        }
+        data += "\n\n";
+        const std::string block = (s == 0 ? "'" + plot.name + ".dat'" : std::string("''")) + " index " + std::to_string(s);
+        commands += (s == 0 ? "plot " : ", ") + block + " using 1:2 with linespoints title '" + series.title + "'";
+        if (!series.labels.empty()) commands += ", '' index " + std::to_string(s) + " using 1:2:3 with labels offset 1,0.7 notitle";
+    }
+    writeText(folder / (plot.name + ".dat"), data);
+    std::string script = "set terminal pngcairo size 800,500\nset output '" + plot.name + ".png'\n";
+    script += "set title '" + plot.title + "'\nset xlabel '" + plot.xLabel + "'\nset ylabel '" + plot.yLabel + "'\n";
+    script += std::string(plot.logScale ? "set logscale xy\n" : "set yrange [0:*]\n") + "set grid\nset key " +
+              plot.keyPosition + "\n" + commands + "\n";
+    return runGnuplot(folder / (plot.name + ".gp"), script);
 }
 
 } // namespace sandbench

@@ -65,23 +65,18 @@ Section voxelizationSection(const ReportOptions& options, std::ostream& log) {
     const std::vector<VoxelRun> runs = measureVoxelization(resolutions, threads, repeat);
     const Table table = voxelTable(runs);
     writeCsv(table, options.outDir / "voxelization.csv");
-    std::string data;
+    LinePlot plot{"voxelization", "Voxelization: time against volume error (labels: resolution)", "ms (2 threads)",
+                  "|relative volume error|", true, "left bottom", {}};
     for (const char* mesh : {"sphere", "hourglass", "torus"}) {
+        PlotSeries series{mesh, {}, {}};
         for (const VoxelRun& run : runs)
-            if (run.mesh == mesh)
-                data += fixed(run.milliseconds, 4) + " " + fixed(std::max(std::abs(run.meshError), 1e-6), 8) + " " +
-                        std::to_string(run.resolution) + "\n";
-        data += "\n\n";
+            if (run.mesh == mesh) {
+                series.points.push_back({run.milliseconds, std::max(std::abs(run.meshError), 1e-6)});
+                series.labels.push_back(std::to_string(run.resolution));
+            }
+        plot.series.push_back(std::move(series));
     }
-    writeText(options.outDir / "voxelization.dat", data);
-    const bool plotted = runGnuplot(options.outDir / "voxelization.gp",
-               "set terminal pngcairo size 800,500\nset output 'voxelization.png'\n"
-               "set title 'Voxelization: time against volume error (labels: resolution)'\n"
-               "set xlabel 'ms (2 threads)'\nset ylabel '|relative volume error|'\nset logscale xy\nset grid\n"
-               "set key right top\n"
-               "plot 'voxelization.dat' index 0 with linespoints title 'sphere', "
-               "'' index 0 using 1:2:3 with labels offset 1,0.7 notitle, "
-               "'' index 1 with linespoints title 'hourglass', '' index 2 with linespoints title 'torus'\n");
+    const bool plotted = writeLinePlot(options.outDir, plot);
     if (!plotted) log << "sandglass: gnuplot could not draw voxelization.png\n";
 
     log << "voxelization: dense mesh and binning\n";
@@ -114,24 +109,18 @@ Section simulationSection(const ReportOptions& options, std::ostream& log) {
     const Table table = drainTable(runs);
     writeCsv(table, options.outDir / "simulation.csv");
 
-    // One gnuplot data block per series (blocks are separated by two blank lines).
-    std::string data;
-    const std::pair<bool, int> series[] = {{true, 1}, {true, 2}, {false, 1}, {false, 2}};
-    for (const auto& [sleeping, threads] : series) {
+    LinePlot plot{"simulation", "Hourglass drain: median ms per step", "resolution (cells)", "ms per step", true,
+                  "left top", {}};
+    const std::pair<bool, int> kinds[] = {{true, 1}, {true, 2}, {false, 1}, {false, 2}};
+    for (const auto& [sleeping, threads] : kinds) {
+        PlotSeries series{std::string(sleeping ? "sleeping" : "full sweep") + ", " + std::to_string(threads) +
+                              (threads == 1 ? " thread" : " threads"),
+                          {}, {}};
         for (const DrainRun& run : runs)
-            if (run.sleeping == sleeping && run.threads == threads)
-                data += std::to_string(run.resolution) + " " + fixed(run.medianMs, 4) + "\n";
-        data += "\n\n";
+            if (run.sleeping == sleeping && run.threads == threads) series.points.push_back({double(run.resolution), run.medianMs});
+        plot.series.push_back(std::move(series));
     }
-    writeText(options.outDir / "simulation.dat", data);
-    const bool plotted = runGnuplot(options.outDir / "simulation.gp",
-               "set terminal pngcairo size 800,500\nset output 'simulation.png'\n"
-               "set title 'Hourglass drain: median ms per step'\nset xlabel 'resolution (cells)'\n"
-               "set ylabel 'ms per step'\nset logscale xy\nset key left top\nset grid\n"
-               "plot 'simulation.dat' index 0 with linespoints title 'sleeping, 1 thread', "
-               "'' index 1 with linespoints title 'sleeping, 2 threads', "
-               "'' index 2 with linespoints title 'full sweep, 1 thread', "
-               "'' index 3 with linespoints title 'full sweep, 2 threads'\n");
+    const bool plotted = writeLinePlot(options.outDir, plot);
 
     Section section;
     section.passed = drainsAgree(runs) && plotted;
@@ -161,18 +150,15 @@ Section plausibilitySection(const ReportOptions& options, std::ostream& log) {
     const std::vector<double> middle = windowedDischargeRates(series, window, 0.1, 0.9);
     const double variation = coefficientOfVariation(middle);
     const std::vector<double> all = windowedDischargeRates(series, window, 0.0, 1.0);
-    std::string data;
-    for (std::size_t i = 0; i < all.size(); ++i) data += std::to_string((i + 0.5) * window) + " " + fixed(all[i], 3) + "\n";
-    writeText(options.outDir / "discharge.dat", data);
     Table dischargeCsv{{"step", "grains through the neck"}, {}};
     for (std::size_t i = 0; i < series.grainsPerStep.size(); ++i)
         dischargeCsv.rows.push_back({std::to_string(i + 1), std::to_string(series.grainsPerStep[i])});
     writeCsv(dischargeCsv, options.outDir / "discharge.csv");
-    const bool plotted = runGnuplot(options.outDir / "discharge.gp",
-               "set terminal pngcairo size 800,400\nset output 'discharge.png'\n"
-               "set title 'Hourglass discharge (mean of " + std::to_string(window) + " steps)'\n"
-               "set xlabel 'step'\nset ylabel 'grains per step'\nset yrange [0:*]\nset grid\n"
-               "plot 'discharge.dat' using 1:2 with lines title 'discharge rate'\n");
+    PlotSeries rate{"discharge rate", {}, {}};
+    for (std::size_t i = 0; i < all.size(); ++i) rate.points.push_back({(double(i) + 0.5) * window, all[i]});
+    const bool plotted = writeLinePlot(options.outDir, {"discharge", "Hourglass discharge (mean of " +
+                                                           std::to_string(window) + " steps)",
+                                                        "step", "grains per step", false, "right top", {rate}});
 
     log << "plausibility: repose angles\n";
     const ReposeAngles hourglassPile = measureReposeAngles(hourglass.grid(GridLevel::Lower));

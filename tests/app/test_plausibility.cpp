@@ -4,6 +4,8 @@
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
 
+#include "support/height_field.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -11,20 +13,9 @@
 using namespace sandcore;
 using namespace sandbench;
 
-namespace {
-template <class Height> CellGrid pile(Int3 size, Height height) {
-    CellGrid grid(size);
-    CellValue id = 0;
-    for (int y = 0; y < size.y; ++y)
-        for (int z = 0; z < size.z; ++z)
-            for (int x = 0; x < size.x; ++x)
-                if (y < height(x, z)) grid[grid.index(x, y, z)] = id++;
-    return grid;
-}
-} // namespace
-
 TEST_CASE("a stepped pyramid stands at 45 degrees along the axes and 35.26 along the diagonals") {
-    const CellGrid grid = pile({41, 22, 41}, [](int x, int z) { return std::max(0, 20 - std::max(std::abs(x - 20), std::abs(z - 20))); });
+    const CellGrid grid = support::heightField(
+        {41, 22, 41}, [](int x, int z) { return std::max(0, 20 - std::max(std::abs(x - 20), std::abs(z - 20))); });
     const ReposeAngles angles = measureReposeAngles(grid);
     CHECK(angles.flanksMeasured == 8);
     CHECK(angles.alongAxes == doctest::Approx(45.0).epsilon(1e-9));
@@ -33,7 +24,7 @@ TEST_CASE("a stepped pyramid stands at 45 degrees along the axes and 35.26 along
 
 TEST_CASE("a round cone of 30 degrees measures 30 degrees within a degree in every direction") {
     const double slope = std::tan(30.0 * M_PI / 180.0);
-    const CellGrid grid = pile({81, 30, 81}, [&](int x, int z) {
+    const CellGrid grid = support::heightField({81, 30, 81}, [&](int x, int z) {
         const double r = std::hypot(x - 40, z - 40);
         return std::max(0, int(std::lround(24.0 - r * slope)));
     });
@@ -43,7 +34,8 @@ TEST_CASE("a round cone of 30 degrees measures 30 degrees within a degree in eve
 }
 
 TEST_CASE("a flank ends at a wall: INVALID columns are not part of the pile") {
-    CellGrid grid = pile({41, 22, 41}, [](int x, int z) { return std::max(0, 20 - std::max(std::abs(x - 20), std::abs(z - 20))); });
+    CellGrid grid = support::heightField(
+        {41, 22, 41}, [](int x, int z) { return std::max(0, 20 - std::max(std::abs(x - 20), std::abs(z - 20))); });
     // A wall at x >= 30 would cut the +x flank after 9 cells; the fit still sees 45 degrees.
     for (int y = 0; y < 22; ++y)
         for (int z = 0; z < 41; ++z)

@@ -1,6 +1,8 @@
 // R12: both normal estimates on known slopes.
 #include "sandcore/normals.hpp"
 
+#include "support/height_field.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -8,17 +10,6 @@
 using namespace sandcore;
 
 namespace {
-// A grid filled with grains wherever height(x, z) > y.
-template <class Height> CellGrid heightField(Int3 size, Height height) {
-    CellGrid grid(size);
-    CellValue id = 0;
-    for (int y = 0; y < size.y; ++y)
-        for (int z = 0; z < size.z; ++z)
-            for (int x = 0; x < size.x; ++x)
-                if (y < height(x, z)) grid[grid.index(x, y, z)] = id++;
-    return grid;
-}
-
 double angleBetweenDegrees(Vec3 a, Vec3 b) {
     const double dot = double(a.x) * b.x + double(a.y) * b.y + double(a.z) * b.z;
     const double la = std::sqrt(double(a.x) * a.x + double(a.y) * a.y + double(a.z) * a.z);
@@ -36,7 +27,7 @@ std::uint32_t topCell(const CellGrid& grid, int x, int z) {
 } // namespace
 
 TEST_CASE("flat floor: both methods give (0, 1, 0)") {
-    const CellGrid grid = heightField({9, 6, 9}, [](int, int) { return 3; });
+    const CellGrid grid = support::heightField({9, 6, 9}, [](int, int) { return 3; });
     const auto heights = columnHeights(grid);
     CHECK(heights[4 + 9 * 4] == 3);
     CHECK(columnNormal(heights, grid.size(), 4, 4) == Vec3{0.0f, 1.0f, 0.0f});
@@ -44,7 +35,7 @@ TEST_CASE("flat floor: both methods give (0, 1, 0)") {
 }
 
 TEST_CASE("45-degree ramp along x: the gradient is exact, the thesis's column method within 15 degrees") {
-    const CellGrid grid = heightField({12, 14, 9}, [](int x, int) { return x + 1; });
+    const CellGrid grid = support::heightField({12, 14, 9}, [](int x, int) { return x + 1; });
     const Vec3 ramp{-float(M_SQRT1_2), float(M_SQRT1_2), 0.0f};
     const Vec3 gradient = gradientNormal(grid, topCell(grid, 5, 4));
     CHECK(gradient.x == doctest::Approx(ramp.x).epsilon(1e-6));
@@ -59,7 +50,7 @@ TEST_CASE("45-degree ramp along x: the gradient is exact, the thesis's column me
 }
 
 TEST_CASE("diagonal ramp: the gradient within 1 degree, the column method with its known bias") {
-    const CellGrid grid = heightField({12, 26, 12}, [](int x, int z) { return x + z + 1; });
+    const CellGrid grid = support::heightField({12, 26, 12}, [](int x, int z) { return x + z + 1; });
     const Vec3 ramp{-0.57735026f, 0.57735026f, -0.57735026f};
     const Vec3 gradient = gradientNormal(grid, topCell(grid, 5, 5));
     CHECK(angleBetweenDegrees(gradient, ramp) < 1.0);
