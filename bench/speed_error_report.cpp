@@ -224,7 +224,15 @@ Section plausibilitySection(const ReportOptions& options, std::ostream& log) {
         "cell per cell along the axes (45 deg) and one cell per diagonal step of sqrt(2) cells along the "
         "diagonals (35.3 deg). Drift: the largest distance between a resting grain's drawn position and its "
         "cell's display point after 10^6 steps of a poured canvas (400 grains).\n\n" +
-        toMarkdown(table) + "\n![discharge](discharge.png)\n\n";
+        toMarkdown(table) +
+        (middle.empty() ? std::string()
+                        : "\nThe discharge is not constant in this model: over the middle 80% it goes from " +
+                              fixed(middle.front(), 1) + " to " + fixed(middle.back(), 1) +
+                              " grains per step. The cellular rules carry no stress, so nothing saturates the "
+                              "pressure above the neck as in real sand (the Janssen effect behind Beverloo's "
+                              "law); how fast the crater above the neck is refilled depends on how much sand "
+                              "stands around it.\n") +
+        "\n![discharge](discharge.png)\n\n";
     return section;
 }
 
