@@ -57,6 +57,9 @@ public:
     /// The canvas mouse path (SPEC P1-P4): the window's mouse handling calls it every frame in
     /// the canvas scene, tests call it with scripted samples. Returns true when grains changed.
     bool handleCanvasPointer(const PointerSample& sample);
+    /// P1: the canvas column under a cursor position (window coordinates) on the surface the
+    /// painting settings pick (source or target); the same lookup a stroke makes.
+    std::optional<CanvasColumn> columnUnderCursor(double cursorX, double cursorY);
     /// The view the canvas is picked in: the camera and the current window and target sizes.
     CanvasView canvasView() const;
     /// P5: loads a PNG or JPEG as the draft and shows it; on a bad file the status line gets the

@@ -43,6 +43,11 @@ PaintSettings Application::paintSettings() const {
     return settings;
 }
 
+std::optional<CanvasColumn> Application::columnUnderCursor(double cursorX, double cursorY) {
+    if (scene_->kind() != sandcore::SceneKind::Canvas) return std::nullopt;
+    return canvasInput_.columnUnderCursor(*scene_, cursorX, cursorY, canvasView(), paintSettings().target);
+}
+
 bool Application::handleCanvasPointer(const PointerSample& sample) {
     if (scene_->kind() != sandcore::SceneKind::Canvas || pendingScene_.valid()) return false;
     const bool changed = canvasInput_.handlePointer(*scene_, sample, canvasView(), paintSettings());
