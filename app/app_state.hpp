@@ -20,12 +20,23 @@ struct SceneSettings {
     int threads = 1;             ///< R6 worker threads (the result does not depend on it)
 };
 
-/// Thesis §3.7 "Zeichnen" (canvas) controls, each with the thesis's default.
+/// Thesis §3.7 "Zeichnen" (canvas) controls, each with the thesis's default, plus SPEC P3, P6,
+/// P7 and G2 obstacle placement.
 struct PaintingSettings {
     bool erase = false;         ///< draw (default) or erase
     bool pickAtTarget = false;  ///< the mouse marks the source (default) or the target of falling sand
     bool thinLines = false;     ///< thick (default) or thin lines
     bool showDraft = false;     ///< draft image shown; default none
+    int brushRadius = 0;        ///< cells around the picked column that also get sand; 0 = one column
+    bool defaultSandColor = true;                        ///< new grains in the pale sand colours
+    std::array<float, 3> sandColor{0.80f, 0.36f, 0.22f}; ///< RGB 0..1 of new grains when not default
+    bool colorFromDraft = false; ///< P6: new grains take the draft's colour at their column
+    std::string draftPath;       ///< the draft file the next loadDraft command reads
+    std::string loadedDraft;     ///< the draft in use; empty = none
+    std::vector<std::string> draftFiles; ///< models/draft_* files, for the draft list
+    std::array<int, 3> obstacleMin{8, 0, 8};    ///< next obstacle's first cell (lower grid), inclusive
+    std::array<int, 3> obstacleMax{16, 6, 16};  ///< next obstacle's last cell + 1 (lower grid), exclusive
+    std::size_t undoSteps = 0;   ///< strokes that Undo can take back
 };
 
 /// Requests raised by panels and keys, served once per frame.
@@ -37,6 +48,10 @@ struct PendingCommands {
     bool benchmark = false;    ///< run the B1 frame-rate benchmark
     bool quit = false;         ///< close the window
     bool frameCamera = false;  ///< reset the camera to frame the scene
+    bool undo = false;            ///< P7: take back the last stroke (Ctrl+Z)
+    bool loadDraft = false;       ///< P5: load PaintingSettings::draftPath as the draft
+    bool addObstacle = false;     ///< R11: add the box PaintingSettings::obstacleMin/Max to the lower grid
+    bool clearObstacles = false;  ///< R11: remove every obstacle of the canvas
 };
 
 /// Numbers for the statistics panel, refreshed every frame.

@@ -53,7 +53,7 @@ struct ApplicationCallbacks {
     static void key(GLFWwindow* window, int key, int scancode, int action, int mods) {
         ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
         if (action == GLFW_RELEASE) return;
-        const KeyCommand command = keyCommand(capture(), key);
+        const KeyCommand command = keyCommand(capture(), key, mods);
         const bool cameraKey = applyCameraCommand(command, of(window).camera_);
         if (!cameraKey && action == GLFW_PRESS) of(window).handleKey(command);
     }
@@ -74,6 +74,12 @@ struct ApplicationCallbacks {
     static void drop(GLFWwindow* window, int count, const char** paths) {
         if (count < 1) return;
         Application& app = of(window);
+        // P5: an image dropped on the canvas is a draft; every other file is a model.
+        if (app.scene_->kind() == sandcore::SceneKind::Canvas && isDraftImageFile(paths[0])) {
+            app.state_.painting.draftPath = paths[0];
+            app.state_.pending.loadDraft = true;
+            return;
+        }
         app.state_.scene.request.modelPath = paths[0];
         if (app.state_.scene.request.kind == sandcore::SceneKind::Canvas)
             app.state_.scene.request.kind = sandcore::SceneKind::Hourglass;
@@ -83,7 +89,8 @@ struct ApplicationCallbacks {
 
 Application::Application(ApplicationOptions options)
     : options_(std::move(options)), state_(options_.initial), window_(options_.window),
-      imgui_(window_.handle(), window_.contentScale()), renderer_(shaderDirectory()) {
+      imgui_(window_.handle(), window_.contentScale()), renderer_(shaderDirectory()),
+      canvasInput_(shaderDirectory()) {
     if (options_.offscreen) {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
@@ -102,6 +109,7 @@ Application::Application(ApplicationOptions options)
     state_.glRenderer = window_.glRenderer();
     state_.glVersion = window_.glVersion();
     state_.modelFiles = listModelFiles();
+    state_.painting.draftFiles = listDraftFiles(std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models");
     adoptScene(buildSceneFor(state_.scene));
     for (int i = 0; i < options_.stepsBeforeStart; ++i) scene_->step();
     renderer_.sceneChanged();
@@ -116,6 +124,7 @@ Application::~Application() {
 void Application::adoptScene(sandcore::Scene scene) {
     scene_ = std::make_unique<sandcore::Scene>(std::move(scene));
     renderer_.setScene(*scene_, state_.render.cellSize);
+    canvasInput_.sceneReplaced();
     sandcore::Vec3 lo, hi;
     sandcore::sceneBounds(*scene_, {state_.render.cellSize, state_.render.jitter}, lo, hi);
     camera_.frame(lo, hi);
@@ -167,6 +176,7 @@ void Application::renderFrame(double elapsedSeconds) {
     if (state_.showGui) drawPanels(state_);
     serveCommands();
     stepSimulation(elapsedSeconds);
+    updateDraftPlacement();
     bindTarget();
     int width = 0, height = 0;
     targetSize(width, height);
@@ -202,6 +212,8 @@ void Application::handleMouse() {
     for (const auto& [glfwButton, button] : buttons)
         if (glfwGetMouseButton(handle, glfwButton) == GLFW_PRESS)
             applyMouseDrag(capture, button, alt, dx, dy, float(height), camera_);
+    if (scene_->kind() == sandcore::SceneKind::Canvas)
+        handleCanvasPointer({x, y, glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS, alt, capture.mouse});
 }
 
 void Application::handleKey(KeyCommand command) {
@@ -218,6 +230,7 @@ void Application::handleKey(KeyCommand command) {
     case KeyCommand::RunBenchmark: state_.pending.benchmark = true; break;
     case KeyCommand::Quit: state_.pending.quit = true; break;
     case KeyCommand::Screenshot: state_.pending.screenshot = true; break;
+    case KeyCommand::Undo: state_.pending.undo = true; break;
     default: break;
     }
     std::fflush(stdout);
@@ -232,6 +245,7 @@ void Application::serveCommands() {
     pending.rebuild = false;
     if (pending.reset) {
         scene_->reset();
+        canvasInput_.sceneReplaced();
         renderer_.sceneChanged();
         state_.statusLine = "reset";
     }
@@ -244,6 +258,7 @@ void Application::serveCommands() {
         camera_.frame(lo, hi);
     }
     pending.frameCamera = false;
+    servePaintingCommands();
 }
 
 void Application::startRebuild() {

@@ -8,6 +8,7 @@
 #include "frame_benchmark.hpp"
 #include "imgui_layer.hpp"
 #include "input_routing.hpp"
+#include "paint/canvas_input.hpp"
 #include "render/framebuffer.hpp"
 #include "render/scene_renderer.hpp"
 #include "window.hpp"
@@ -53,6 +54,23 @@ public:
     /// Runs the B1 cases on the current scene (simulation and GUI on) and returns the rows.
     BenchmarkReport runBenchmark(const std::vector<BenchmarkCase>& cases, const BenchmarkTiming& timing);
 
+    /// The canvas mouse path (SPEC P1-P4): the window's mouse handling calls it every frame in
+    /// the canvas scene, tests call it with scripted samples. Returns true when grains changed.
+    bool handleCanvasPointer(const PointerSample& sample);
+    /// P1: the canvas column under a cursor position (window coordinates) on the surface the
+    /// painting settings pick (source or target); the same lookup a stroke makes.
+    std::optional<CanvasColumn> columnUnderCursor(double cursorX, double cursorY);
+    /// The view the canvas is picked in: the camera and the current window and target sizes.
+    CanvasView canvasView() const;
+    /// P5: loads a PNG or JPEG as the draft and shows it; on a bad file the status line gets the
+    /// one-line reason and the previous draft stays. Returns true when it loaded.
+    bool loadDraft(const std::string& path);
+    /// Serves the commands the panels and keys raised (rebuild, reset, undo, draft, obstacles...).
+    void serveCommands();
+    /// Runs simulation steps now, outside the clock (for scripted drawings and tests).
+    void runSteps(int steps);
+    const CanvasInput& canvasInput() const { return canvasInput_; } ///< picker and painter state
+
     AppState& state() { return state_; }                         ///< panels' view of the application
     const sandcore::Scene& scene() const { return *scene_; }     ///< the running scene
     OrbitCamera& camera() { return camera_; }                    ///< the view
@@ -65,7 +83,9 @@ private:
     void bindTarget() const;
     void handleMouse();
     void handleKey(KeyCommand command);
-    void serveCommands();
+    void servePaintingCommands();
+    PaintSettings paintSettings() const;
+    void updateDraftPlacement();
     void startRebuild();
     void finishRebuild();
     void adoptScene(sandcore::Scene scene);
@@ -80,6 +100,7 @@ private:
     ImGuiLayer imgui_;
     std::optional<OffscreenTarget> offscreen_;
     SceneRenderer renderer_;
+    CanvasInput canvasInput_;
     std::unique_ptr<sandcore::Scene> scene_;
     std::future<sandcore::Scene> pendingScene_;
     std::chrono::steady_clock::time_point rebuildStarted_;

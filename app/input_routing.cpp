@@ -27,8 +27,9 @@ bool applyScroll(const InputCapture& capture, float wheelSteps, OrbitCamera& cam
     return true;
 }
 
-KeyCommand keyCommand(const InputCapture& capture, int glfwKey) {
+KeyCommand keyCommand(const InputCapture& capture, int glfwKey, int glfwModifiers) {
     if (capture.keyboard) return KeyCommand::None;
+    if (glfwKey == GLFW_KEY_Z && (glfwModifiers & GLFW_MOD_CONTROL)) return KeyCommand::Undo;
     switch (glfwKey) {
     case GLFW_KEY_SPACE: return KeyCommand::ToggleGui;
     case GLFW_KEY_F: return KeyCommand::PrintFrameRate;

@@ -24,6 +24,7 @@ enum class KeyCommand {
     RunBenchmark,      ///< B
     Quit,              ///< Esc
     Screenshot,        ///< P
+    Undo,              ///< Ctrl+Z: take back the last stroke (P7)
     RotateLeft, RotateRight, RotateUp, RotateDown, ///< arrow keys
     ZoomIn, ZoomOut,   ///< + and -
     ViewPerspective,   ///< 1
@@ -41,8 +42,8 @@ bool applyMouseDrag(const InputCapture& capture, MouseButton button, bool altHel
                     float viewportHeightPixels, OrbitCamera& camera);
 /// Mouse wheel zoom by `wheelSteps` notches (positive = closer); false when ImGui wants the mouse.
 bool applyScroll(const InputCapture& capture, float wheelSteps, OrbitCamera& camera);
-/// The command of a GLFW key press (GLFW_KEY_*); None when ImGui wants the keyboard.
-KeyCommand keyCommand(const InputCapture& capture, int glfwKey);
+/// The command of a GLFW key press (GLFW_KEY_*, modifiers GLFW_MOD_*); None when ImGui wants the keyboard.
+KeyCommand keyCommand(const InputCapture& capture, int glfwKey, int glfwModifiers = 0);
 /// The command of a typed character ('#', '+', '-'); None when ImGui wants the keyboard.
 KeyCommand characterCommand(const InputCapture& capture, unsigned codepoint);
 /// Applies a camera command (arrows, zoom, views); returns false for any other command.

@@ -159,7 +159,55 @@ void drawPaintingSection(AppState& state) {
     ImGui::SameLine();
     ImGui::RadioButton("thin", &thin, 1);
     painting.thinLines = thin == 1;
+    ImGui::SliderInt("brush radius (cells)", &painting.brushRadius, 0, 8);
+
+    // P6: the colour of new grains.
+    ImGui::Checkbox("default sand", &painting.defaultSandColor);
+    if (!painting.defaultSandColor) {
+        ImGui::SameLine();
+        ImGui::ColorEdit3("##sand colour", painting.sandColor.data(), ImGuiColorEditFlags_NoInputs);
+    }
+    ImGui::BeginDisabled(painting.loadedDraft.empty());
+    ImGui::Checkbox("colour from draft", &painting.colorFromDraft);
+    ImGui::EndDisabled();
+
+    // P5: the draft image, from models/draft_*, a path or a file dropped on the window.
+    ImGui::BeginDisabled(painting.loadedDraft.empty());
     ImGui::Checkbox("draft image", &painting.showDraft);
+    ImGui::EndDisabled();
+    const std::string shown =
+        painting.loadedDraft.empty() ? "(none)" : std::filesystem::path(painting.loadedDraft).filename().string();
+    if (ImGui::BeginCombo("draft", shown.c_str())) {
+        for (const std::string& file : painting.draftFiles)
+            if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(),
+                                  painting.loadedDraft == file)) {
+                painting.draftPath = file;
+                state.pending.loadDraft = true;
+            }
+        ImGui::EndCombo();
+    }
+    char path[512] = {};
+    painting.draftPath.copy(path, sizeof path - 1);
+    if (ImGui::InputText("draft path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        painting.draftPath = path;
+        state.pending.loadDraft = true;
+    }
+    ImGui::TextDisabled("or drop a PNG or JPEG on the window");
+
+    // P7
+    ImGui::BeginDisabled(painting.undoSteps == 0);
+    if (ImGui::Button("Undo stroke (Ctrl+Z)")) state.pending.undo = true;
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::Text("%zu kept", painting.undoSteps);
+
+    // SPEC G2 / R11: a box of INVALID cells in the lower grid; sand piles on it.
+    ImGui::TextUnformatted("obstacle (lower-grid cells, max exclusive)");
+    ImGui::InputInt3("min x y z", painting.obstacleMin.data());
+    ImGui::InputInt3("max x y z", painting.obstacleMax.data());
+    if (ImGui::Button("Add obstacle")) state.pending.addObstacle = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Clear obstacles")) state.pending.clearObstacles = true;
 }
 
 void drawStatisticsSection(AppState& state) {

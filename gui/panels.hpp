@@ -16,7 +16,8 @@ void drawControlSection(AppState& state);
 void drawDisplaySection(AppState& state);
 /// SPEC G2: scene kind, shape or model file, resolution, seed, threads, rebuild.
 void drawSceneSection(AppState& state);
-/// Thesis §3.7 "Zeichnen": draw/erase, source/target, thick/thin, draft (canvas only).
+/// Thesis §3.7 "Zeichnen": draw/erase, source/target, thick/thin, draft (canvas only); brush,
+/// colour, colour from draft, draft file, undo and obstacles (SPEC P3, P5-P7, G2).
 void drawPaintingSection(AppState& state);
 /// SPEC G2 and V7: grains, moving grains, steps/s, ms per step, ms per frame, frame-time plot.
 void drawStatisticsSection(AppState& state);

@@ -3,6 +3,7 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -33,6 +34,22 @@ std::uint32_t DraftImage::colorAt(double u, double v) const {
     const int y = std::clamp(int(v * height_), 0, height_ - 1);
     const std::uint8_t* p = rgba_.data() + (std::size_t(y) * std::size_t(width_) + std::size_t(x)) * 4;
     return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | 0xff000000u;
+}
+
+bool isDraftImageFile(const std::filesystem::path& file) {
+    std::string extension = file.extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".png" || extension == ".jpg" || extension == ".jpeg";
+}
+
+std::vector<std::string> listDraftFiles(const std::filesystem::path& folder) {
+    std::vector<std::string> files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+        if (entry.path().filename().string().starts_with("draft_") && isDraftImageFile(entry.path()))
+            files.push_back(entry.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
 }
 
 } // namespace sandglass

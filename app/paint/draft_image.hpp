@@ -2,6 +2,7 @@
 // P5: the draft image shown over the canvas and sampled for "colour from draft" (P6).
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,10 @@ private:
     std::vector<std::uint8_t> rgba_;
     std::string path_;
 };
+
+/// True for a file name ending in .png, .jpg or .jpeg (any case): dropped on the canvas, it is a draft.
+bool isDraftImageFile(const std::filesystem::path& file);
+/// The draft images of a folder (files named draft_* that isDraftImageFile accepts), sorted.
+std::vector<std::string> listDraftFiles(const std::filesystem::path& folder);
 
 } // namespace sandglass

@@ -40,7 +40,7 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
       hullProgram_(loadShaderProgram(shaderFolder / "hull.vert", shaderFolder / "hull.frag")),
       grainArray_(newVertexArray()), hullArray_(newVertexArray()), lineArray_(newVertexArray()),
       grainBuffer_(newBuffer()), hullBuffer_(newBuffer()), lineBuffer_(newBuffer()),
-      patternOffsets_(newTexture()), patternColors_(newTexture()) {
+      patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
     // Per-instance attributes; the vertex shader needs no per-vertex data (it uses gl_VertexID).
     glBindVertexArray(grainArray_.get());
     glBindBuffer(GL_ARRAY_BUFFER, grainBuffer_.get());
@@ -134,6 +134,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     uploadGrains(scene, stepFraction, settings);
     const glm::mat4 viewProjection = camera.projection(float(width) / float(height)) * camera.view();
     drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale);
+    draft_.draw(draftPlacement_, glm::value_ptr(viewProjection));
     if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
     glBindVertexArray(0);
     glUseProgram(0);

@@ -4,6 +4,7 @@
 // are drawn with one instanced call, k sub-grains per instance.
 
 #include "camera.hpp"
+#include "render/draft_overlay.hpp"
 #include "render/gl_objects.hpp"
 #include "render/grain_instances.hpp"
 #include "render/render_settings.hpp"
@@ -41,6 +42,11 @@ public:
 
     const RenderStats& stats() const { return stats_; } ///< what the last draw did
 
+    /// P5: the draft image drawn over the canvas (uploaded once per image).
+    void setDraftImage(const DraftImage& image) { draft_.setImage(image); }
+    /// P5: where the draft lies and how opaque; drawn by every later draw() while visible.
+    void setDraftPlacement(const DraftPlacement& placement) { draftPlacement_ = placement; }
+
 private:
     void uploadGrains(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings);
     void drawGrains(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection,
@@ -52,6 +58,8 @@ private:
     GlBuffer grainBuffer_, hullBuffer_, lineBuffer_;
     GlTexture patternOffsets_, patternColors_;
     GrainInstanceBuilder builder_;
+    DraftOverlay draft_;
+    DraftPlacement draftPlacement_;
     std::int64_t instanceCount_ = 0;
     std::int64_t hullVertices_ = 0, lineVertices_ = 0;
     bool grainsStale_ = true;
