@@ -15,8 +15,8 @@ void OrbitCamera::frame(sandcore::Vec3 minCorner, sandcore::Vec3 maxCorner) {
     const glm::vec3 lo{minCorner.x, minCorner.y, minCorner.z}, hi{maxCorner.x, maxCorner.y, maxCorner.z};
     home_ = 0.5f * (lo + hi);
     radius_ = std::max(0.5f * glm::length(hi - lo), 1e-3f);
-    // The bounding sphere fits the vertical field of view with a small margin.
-    homeDistance_ = radius_ / std::sin(0.5f * fovY_) * 0.92f;
+    // The whole bounding sphere fits the vertical field of view, so no corner of a box is cut off.
+    homeDistance_ = radius_ / std::sin(0.5f * fovY_);
     setView(CameraView::Perspective);
 }
 

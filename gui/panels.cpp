@@ -171,28 +171,32 @@ void drawPaintingSection(AppState& state) {
     ImGui::Checkbox("colour from draft", &painting.colorFromDraft);
     ImGui::EndDisabled();
 
-    // P5: the draft image, from models/draft_*, a path or a file dropped on the window.
+    // P5: the draft image, from models/draft_*, a path or a file dropped on the window. The
+    // choosers fold away so the panel fits a 1280x800 window.
     ImGui::BeginDisabled(painting.loadedDraft.empty());
     ImGui::Checkbox("draft image", &painting.showDraft);
     ImGui::EndDisabled();
-    const std::string shown =
-        painting.loadedDraft.empty() ? "(none)" : std::filesystem::path(painting.loadedDraft).filename().string();
-    if (ImGui::BeginCombo("draft", shown.c_str())) {
-        for (const std::string& file : painting.draftFiles)
-            if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(),
-                                  painting.loadedDraft == file)) {
-                painting.draftPath = file;
-                state.pending.loadDraft = true;
-            }
-        ImGui::EndCombo();
+    if (ImGui::TreeNode("choose draft")) {
+        const std::string shown =
+            painting.loadedDraft.empty() ? "(none)" : std::filesystem::path(painting.loadedDraft).filename().string();
+        if (ImGui::BeginCombo("draft", shown.c_str())) {
+            for (const std::string& file : painting.draftFiles)
+                if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(),
+                                      painting.loadedDraft == file)) {
+                    painting.draftPath = file;
+                    state.pending.loadDraft = true;
+                }
+            ImGui::EndCombo();
+        }
+        char path[512] = {};
+        painting.draftPath.copy(path, sizeof path - 1);
+        if (ImGui::InputText("draft path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
+            painting.draftPath = path;
+            state.pending.loadDraft = true;
+        }
+        ImGui::TextDisabled("or drop a PNG or JPEG on the window");
+        ImGui::TreePop();
     }
-    char path[512] = {};
-    painting.draftPath.copy(path, sizeof path - 1);
-    if (ImGui::InputText("draft path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
-        painting.draftPath = path;
-        state.pending.loadDraft = true;
-    }
-    ImGui::TextDisabled("or drop a PNG or JPEG on the window");
 
     // P7
     ImGui::BeginDisabled(painting.undoSteps == 0);
@@ -202,12 +206,15 @@ void drawPaintingSection(AppState& state) {
     ImGui::Text("%zu kept", painting.undoSteps);
 
     // SPEC G2 / R11: a box of INVALID cells in the lower grid; sand piles on it.
-    ImGui::TextUnformatted("obstacle (lower-grid cells, max exclusive)");
-    ImGui::InputInt3("min x y z", painting.obstacleMin.data());
-    ImGui::InputInt3("max x y z", painting.obstacleMax.data());
-    if (ImGui::Button("Add obstacle")) state.pending.addObstacle = true;
-    ImGui::SameLine();
-    if (ImGui::Button("Clear obstacles")) state.pending.clearObstacles = true;
+    if (ImGui::TreeNode("obstacles")) {
+        ImGui::TextDisabled("box in lower-grid cells, max exclusive");
+        ImGui::InputInt3("min x y z", painting.obstacleMin.data());
+        ImGui::InputInt3("max x y z", painting.obstacleMax.data());
+        if (ImGui::Button("Add obstacle")) state.pending.addObstacle = true;
+        ImGui::SameLine();
+        if (ImGui::Button("Clear obstacles")) state.pending.clearObstacles = true;
+        ImGui::TreePop();
+    }
 }
 
 void drawStatisticsSection(AppState& state) {
