@@ -54,6 +54,15 @@ void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
 }
 
+void GridSweep::wakeAroundEmptied(int x, int y, int z) {
+    wakePredecessorsOf(x, y, z);
+    if (!above_ || y != size_.y - 1) return;
+    if (deferWakesAbove_)
+        deferredWakesAbove_.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
+    else
+        above_->wakeAt(x, 0, z);
+}
+
 void GridSweep::applyDeferredWakes() {
     for (std::uint32_t column : deferredWakesAbove_)
         above_->wakeAt(int(column % std::uint32_t(size_.x)), 0, int(column / std::uint32_t(size_.x)));
@@ -102,13 +111,7 @@ void GridSweep::visitCell(CellGrid& grid, GrainStore& grains, std::uint64_t seed
     ++totals.moves;
 
     if (y - 1 > 0 || bottomIsOutlet_) wakeAt(target->x, y - 1, target->z); // it may move on next step
-    wakePredecessorsOf(x, y, z);                                           // the cell it left is free
-    if (above_ && y == size_.y - 1) {
-        if (deferWakesAbove_)
-            deferredWakesAbove_.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
-        else
-            above_->wakeAt(x, 0, z);
-    }
+    wakeAroundEmptied(x, y, z);                                            // the cell it left is free
 }
 
 void GridSweep::sweepStrip(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, bool sleeping, int y,

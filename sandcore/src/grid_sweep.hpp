@@ -34,6 +34,9 @@ public:
     void wake(std::uint32_t cell);              ///< the cell is visited in its layer's next turn
     void wakeAt(int x, int y, int z);           ///< as wake, by coordinate
     void wakePredecessorsOf(int x, int y, int z); ///< the 9 cells above (x, y, z)
+    /// A grain left (x, y, z): wakes the 9 cells above it, and the outlet cell of the grid above
+    /// when (x, y, z) lies in the top layer. Every way a cell empties goes through here (R5).
+    void wakeAroundEmptied(int x, int y, int z);
     void wakeEveryGrain(const CellGrid& grid); ///< after edits that bypass the rules
     void clear();                               ///< nothing awake
 

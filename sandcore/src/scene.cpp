@@ -123,10 +123,14 @@ void Scene::transition() {
         upper_[cell] = kEmpty;
         grains_.level[std::size_t(grain)] = GridLevel::Lower;
         grains_.cell[std::size_t(grain)] = below;
-        grains_.cameFrom[std::size_t(grain)] = kNoMove; // same world position
-        grains_.movedAtStep[std::size_t(grain)] = counters_.stepsDone;
+        // Same world position: a grain that fell into the shared row in this very step keeps
+        // gliding from where it came from; one that was resting there does not move on screen.
+        if (grains_.movedAtStep[std::size_t(grain)] != counters_.stepsDone) {
+            grains_.cameFrom[std::size_t(grain)] = kNoMove;
+            grains_.movedAtStep[std::size_t(grain)] = counters_.stepsDone;
+        }
         lowerSweep_->wakeAt(c.x, lowerTop, c.z);
-        upperSweep_->wakePredecessorsOf(c.x, 0, c.z);
+        upperSweep_->wakeAroundEmptied(c.x, 0, c.z);
         ++moved;
     });
     counters_.grainsUpper -= moved;
@@ -208,8 +212,7 @@ bool Scene::removeGrain(GridLevel level, std::uint32_t cell) {
     const std::uint32_t moved = grains_.removeBySwap(id);
     if (moved != id) gridRef(grains_.level[id])[grains_.cell[id]] = CellValue(id);
     const Int3 c = grid.coordinate(cell);
-    sweepOf(level).wakePredecessorsOf(c.x, c.y, c.z);
-    if (level == GridLevel::Lower && c.y == grid.size().y - 1) upperSweep_->wakeAt(c.x, 0, c.z);
+    sweepOf(level).wakeAroundEmptied(c.x, c.y, c.z);
     (level == GridLevel::Upper ? counters_.grainsUpper : counters_.grainsLower) -= 1;
     return true;
 }
@@ -237,8 +240,7 @@ void Scene::clearObstacles(GridLevel level) {
             if (grid[n] != kInvalid || layout[n] != kEmpty) return;
             grid[n] = kEmpty;
             const Int3 c = grid.coordinate(n);
-            sweepOf(level).wakePredecessorsOf(c.x, c.y, c.z);
-            if (level == GridLevel::Lower && c.y == grid.size().y - 1) upperSweep_->wakeAt(c.x, 0, c.z);
+            sweepOf(level).wakeAroundEmptied(c.x, c.y, c.z);
         });
 }
 

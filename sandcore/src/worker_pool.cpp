@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace sandcore {
 
@@ -33,7 +34,12 @@ void WorkerPool::claimAndRunTasks() {
     while (nextTaskOf(ticket) < taskCountOf(ticket)) {
         if (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel, std::memory_order_acquire))
             continue; // another thread claimed it; ticket now holds the new value
-        (*task_)(int(nextTaskOf(ticket)));
+        try {
+            (*task_)(int(nextTaskOf(ticket)));
+        } catch (...) {
+            const std::lock_guard lock(failureMutex_);
+            if (!failure_) failure_ = std::current_exception();
+        }
         unfinished_.fetch_sub(1, std::memory_order_release);
         ticket = ticket_.load(std::memory_order_acquire);
     }
@@ -42,7 +48,13 @@ void WorkerPool::claimAndRunTasks() {
 void WorkerPool::parallelFor(int count, const std::function<void(int)>& task) {
     if (count < 0 || std::uint64_t(count) > kFieldMask) throw std::invalid_argument("parallelFor: bad task count");
     if (workers_.empty() || count <= 1) {
-        for (int i = 0; i < count; ++i) task(i);
+        std::exception_ptr first;
+        for (int i = 0; i < count; ++i) try {
+                task(i);
+            } catch (...) {
+                if (!first) first = std::current_exception();
+            }
+        if (first) std::rethrow_exception(first);
         return;
     }
     task_ = &task;
@@ -55,6 +67,8 @@ void WorkerPool::parallelFor(int count, const std::function<void(int)>& task) {
     // Only tasks that others claimed can still be running: wait for those, not for idle workers.
     for (int spins = 0; unfinished_.load(std::memory_order_acquire) != 0; ++spins)
         if (spins > kSpinsBeforeSleep) std::this_thread::yield();
+    const std::lock_guard lock(failureMutex_);
+    if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
 }
 
 void WorkerPool::workerLoop() {

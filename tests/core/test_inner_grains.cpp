@@ -30,3 +30,19 @@ TEST_CASE("grid edges and INVALID cells hide a face; EMPTY cells expose it") {
     fixtures::putLower(scene, 1, 1, 1);              // covered by a grain; (1,2,1) above that is INVALID
     CHECK(isInnerCell(grid, grid.index(1, 0, 1)));
 }
+
+TEST_CASE("at the seam of the two grids a grain is seen through the other grid") {
+    // A column of grains in the lower grid's top row, with nothing above it in the upper grid.
+    Scene scene = fixtures::boxScene({3, 3, 3}, 3);
+    for (int y = 0; y < 3; ++y)
+        for (int z = 0; z < 3; ++z)
+            for (int x = 0; x < 3; ++x) fixtures::putLower(scene, x, y, z);
+    const CellGrid& lower = scene.grid(GridLevel::Lower);
+    const std::uint32_t topCentre = lower.index(1, 2, 1);
+    CHECK(isInnerCell(lower, topCentre));                       // within its own grid: the edge hides it
+    CHECK(!isInnerGrain(scene, GridLevel::Lower, topCentre));   // but the upper grid above it is EMPTY
+    const CellGrid& upper = scene.grid(GridLevel::Upper);
+    scene.addGrain(GridLevel::Upper, upper.index(1, 1, 1));
+    CHECK(isInnerGrain(scene, GridLevel::Lower, topCentre));    // now covered from above
+    CHECK(isInnerGrain(scene, GridLevel::Lower, lower.index(1, 1, 1)));
+}

@@ -144,3 +144,13 @@ TEST_CASE("transition keeps the world position of the grain") {
     CHECK(cell.z == 1);
     CHECK(scene.grains().cameFrom[std::size_t(id)] == kNoMove);
 }
+
+TEST_CASE("a grain that falls into the shared row and passes to the lower grid in one step still glides") {
+    Scene scene = boxScene({3, 4, 3}, 3);
+    const CellGrid& upper = scene.grid(GridLevel::Upper);
+    const auto id = std::size_t(scene.addGrain(GridLevel::Upper, upper.index(1, 1, 1)));
+    scene.step(); // (1,1,1) -> (1,0,1) in the upper grid, then the transition into the lower grid
+    CHECK(scene.grains().level[id] == GridLevel::Lower);
+    CHECK(scene.grains().movedAtStep[id] == 1);
+    CHECK(scene.grains().cameFrom[id] == packMove(0, 1, 0)); // it came from one cell above, in world terms
+}

@@ -8,10 +8,15 @@
 
 namespace sandcore {
 
-/// True when the grain in `cell` is hidden by its 6 face neighbours.
+/// True when the grain in `cell` is hidden by its 6 face neighbours within one grid.
 bool isInnerCell(const CellGrid& grid, std::uint32_t cell);
 
-/// Writes 1 for every inner grain and 0 for the others (out.size() >= grainCount()); returns
+/// As isInnerCell, but across the seam of the scene's two grids: above the lower grid's top row
+/// lies the upper grid's layer 1, below the upper grid's layer 0 the lower grid's second row from
+/// the top (the two grids share one row, R4).
+bool isInnerGrain(const Scene& scene, GridLevel level, std::uint32_t cell);
+
+/// Writes 1 for every inner grain (isInnerGrain) and 0 for the others (out.size() >= grainCount()); returns
 /// the number of inner grains.
 std::int64_t flagInnerGrains(const Scene& scene, std::span<std::uint8_t> out);
 

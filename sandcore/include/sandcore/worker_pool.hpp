@@ -3,6 +3,8 @@
 // parallel loop, so a pool of N threads starts N - 1 workers.
 
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <cstdint>
 #include <functional>
 #include <thread>
@@ -22,7 +24,8 @@ public:
     int threadCount() const { return int(workers_.size()) + 1; }
 
     /// Calls task(i) for every i in [0, count < 2^21), spread over the threads; returns when all are done.
-    /// Tasks must not depend on which thread runs them or in which order.
+    /// Tasks must not depend on which thread runs them or in which order. If tasks throw, the
+    /// first exception is rethrown here once every task has finished.
     void parallelFor(int count, const std::function<void(int)>& task);
 
 private:
@@ -40,6 +43,8 @@ private:
     std::atomic<std::uint32_t> wakeups_{0}; // bumped to wake sleeping workers
     std::uint64_t loopNumber_ = 0;
     std::atomic<bool> stopping_{false};
+    std::mutex failureMutex_;
+    std::exception_ptr failure_; // the first exception a task of the current loop threw
 };
 
 } // namespace sandcore
