@@ -1,6 +1,7 @@
 #include "sandcore/triangle_mesh.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <bit>
 #include <limits>
 #include <stdexcept>
@@ -24,6 +25,8 @@ MeshBounds boundsOf(const TriangleMesh& mesh) {
             if (i >= mesh.vertices.size()) throw std::invalid_argument("a triangle refers to a missing vertex");
             const Vec3 v = mesh.vertices[i];
             const double c[3] = {v.x, v.y, v.z};
+            if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+                throw std::invalid_argument("the model has a non-finite coordinate (NaN or infinity)");
             for (std::size_t a = 0; a < 3; ++a) {
                 bounds.min[a] = std::min(bounds.min[a], c[a]);
                 bounds.max[a] = std::max(bounds.max[a], c[a]);

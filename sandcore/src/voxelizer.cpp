@@ -59,9 +59,13 @@ bool crossRay(const Point& a, const Point& b, const Point& c, RayFrame f, std::i
 
 // Triangle ids per row, in compressed rows: row r owns ids[first[r] .. first[r + 1]).
 struct RowBins {
-    std::vector<std::uint32_t> first;
+    std::vector<std::uint64_t> first;
     std::vector<std::uint32_t> ids;
 };
+
+// Most row entries binning may make (4 bytes each): a finely fanned sheet at a high resolution
+// could otherwise ask for more memory than the grid itself.
+constexpr std::uint64_t kMaxBinEntries = std::uint64_t{1} << 30;
 
 // Row index range [lo, hi] whose centres (2j + 1) * kQuantum / 2 lie within [minValue, maxValue].
 void rowRange(std::int64_t minValue, std::int64_t maxValue, int rows, int& lo, int& hi) {
@@ -87,8 +91,11 @@ RowBins binTriangles(const std::vector<Point>& points, const std::vector<std::ar
     };
     for (const auto& t : triangles) forEachRow(t, [&](std::size_t row) { ++bins.first[row + 1]; });
     for (std::size_t r = 1; r < bins.first.size(); ++r) bins.first[r] += bins.first[r - 1];
-    bins.ids.resize(bins.first.back());
-    std::vector<std::uint32_t> cursor(bins.first.begin(), bins.first.end() - 1);
+    if (bins.first.back() > kMaxBinEntries)
+        throw std::invalid_argument("the mesh's triangles span too many rows at this resolution (" +
+                                    std::to_string(bins.first.back()) + " row entries); use a lower resolution");
+    bins.ids.resize(std::size_t(bins.first.back()));
+    std::vector<std::uint64_t> cursor(bins.first.begin(), bins.first.end() - 1);
     for (std::size_t i = 0; i < triangles.size(); ++i)
         forEachRow(triangles[i], [&](std::size_t row) { bins.ids[cursor[row]++] = std::uint32_t(i); });
     return bins;
@@ -131,7 +138,7 @@ void castRays(const std::vector<Point>& points, const std::vector<std::array<std
             };
             if (settings.binning) {
                 const std::size_t row = std::size_t(j) + std::size_t(rowsV) * std::size_t(k);
-                for (std::uint32_t n = bins.first[row]; n < bins.first[row + 1]; ++n) test(bins.ids[n]);
+                for (std::uint64_t n = bins.first[row]; n < bins.first[row + 1]; ++n) test(bins.ids[n]);
             } else {
                 for (std::uint32_t id = 0; id < triangles.size(); ++id) test(id);
             }

@@ -224,3 +224,18 @@ TEST_CASE("bad meshes and settings are refused with a message") {
     CHECK_THROWS_AS(voxelize(broken, settings), std::invalid_argument);
     CHECK_THROWS_WITH_AS(voxelize(TriangleMesh{}, settings), "the mesh has no triangles", std::invalid_argument);
 }
+
+TEST_CASE("a NaN or infinite vertex is named as such, not as a grid range problem") {
+    for (float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        TriangleMesh mesh = makeBoxMesh({0, 0, 0}, {1, 1, 1});
+        mesh.vertices[3].y = bad;
+        VoxelizeSettings settings;
+        settings.resolution = 8;
+        try {
+            voxelize(mesh, settings);
+            FAIL("a non-finite vertex was accepted");
+        } catch (const std::invalid_argument& e) {
+            CHECK(std::string(e.what()).find("non-finite coordinate") != std::string::npos);
+        }
+    }
+}
