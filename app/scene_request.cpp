@@ -7,6 +7,7 @@
 #include "sandcore/scenes.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 namespace sandglass {
@@ -29,13 +30,19 @@ const char* sceneKindName(SceneKind kind) {
     return "hourglass";
 }
 
+void requireKnownShape(std::string_view shape) {
+    if (shape != "sphere" && shape != "cube" && shape != "hourglass")
+        throw std::invalid_argument("unknown shape '" + std::string(shape) + "' (sphere, cube or hourglass)");
+}
+
 sandcore::InsideMask makeProceduralMask(std::string_view shape, int resolution, float neckRadius) {
+    requireKnownShape(shape);
     if (shape == "sphere") return sandcore::makeSphereMask(resolution);
     if (shape == "cube") return sandcore::makeCubeMask(resolution);
     if (shape == "hourglass") {
         sandcore::HourglassShape hourglass;
         hourglass.height = resolution;
-        hourglass.neckRadius = neckRadius > 0.0f ? neckRadius : std::max(1.5f, float(resolution) / 24.0f);
+        hourglass.neckRadius = neckRadius > 0.0f ? neckRadius : sandcore::defaultNeckRadius(resolution);
         return sandcore::makeHourglassMask(hourglass);
     }
     throw std::invalid_argument("unknown shape '" + std::string(shape) + "' (sphere, cube or hourglass)");
@@ -52,14 +59,46 @@ std::string defaultModelFor(SceneKind kind) {
     return {};
 }
 
+int defaultResolution(SceneKind kind) { return kind == SceneKind::Canvas ? 60 : 64; }
+
+namespace {
+
+std::string gibibytes(std::uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(1ull << 30));
+    return text;
+}
+
+// S1 for scenes without a model file: refuse before allocating what memory cannot hold.
+void requireMemory(const std::string& what, int resolution, std::uint64_t needed, std::uint64_t memoryLimit) {
+    const std::uint64_t limit = memoryLimit != 0 ? memoryLimit : availableMemoryBytes();
+    if (limit != 0 && needed > limit)
+        throw std::invalid_argument(what + " too large for memory at resolution " + std::to_string(resolution) +
+                                    ": it needs about " + gibibytes(needed) + ", " + gibibytes(limit) +
+                                    " available; choose a lower resolution");
+}
+
+sandcore::Int3 proceduralMaskSize(std::string_view shape, int resolution) {
+    if (shape == "hourglass") return sandcore::hourglassMaskSize({resolution, 1.0f, 0.0f});
+    return {resolution, resolution, resolution};
+}
+
+} // namespace
+
 BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::StepSettings& step) {
-    if (request.resolution < 8)
-        throw std::invalid_argument("resolution must be at least 8 cells, got " + std::to_string(request.resolution));
+    const int resolution = request.resolution != 0 ? request.resolution : defaultResolution(request.kind);
+    if (resolution < 8) throw std::invalid_argument("resolution must be at least 8 cells, got " + std::to_string(resolution));
     if (request.kind == SceneKind::Canvas) {
+        if (!request.modelPath.empty() || !request.shape.empty())
+            throw std::invalid_argument("the canvas takes no model or shape (they are for the hourglass and the sculpture)");
         sandcore::CanvasSettings canvas;
-        const int r = request.resolution;
-        canvas.upperSize = {r, std::max(2, r / 6), r};
-        canvas.lowerSize = {r, std::max(2, r * 2 / 3), r};
+        canvas.upperSize = {resolution, std::max(2, resolution / 6), resolution};
+        canvas.lowerSize = {resolution, std::max(2, resolution * 2 / 3), resolution};
+        const auto cells = std::uint64_t(resolution) * std::uint64_t(resolution) *
+                           std::uint64_t(canvas.upperSize.y + canvas.lowerSize.y);
+        sandcore::validateGridSize(canvas.lowerSize);
+        // Layout and live grid (4 bytes each) per cell, and room for the sand a user pours.
+        requireMemory("the canvas is", resolution, cells * 12, request.memoryLimit);
         return {sandcore::makeCanvasScene(canvas, step), std::nullopt, 0};
     }
     const bool hourglass = request.kind == SceneKind::Hourglass;
@@ -68,14 +107,19 @@ BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::Ste
     settings.drainCompletely = request.drainCompletely;
     if (request.modelPath.empty()) {
         const std::string shape = !request.shape.empty() ? request.shape : hourglass ? "hourglass" : "sphere";
-        const sandcore::InsideMask mask = makeProceduralMask(shape, request.resolution, request.neckRadius);
+        requireKnownShape(shape);
+        const sandcore::Int3 size = proceduralMaskSize(shape, resolution);
+        sandcore::validateGridSize(size);
+        requireMemory("the " + shape + " is", resolution,
+                      estimateModelBytes(hourglass ? ModelUse::Hourglass : ModelUse::Sculpture, size), request.memoryLimit);
+        const sandcore::InsideMask mask = makeProceduralMask(shape, resolution, request.neckRadius);
         if (!hourglass) return {sandcore::makeSculptureScene(mask, step), std::nullopt, 0};
         return {sandcore::makeHourglassScene(mask, settings, step), std::nullopt, 0};
     }
     if (request.noiseThreshold > 5)
         throw std::invalid_argument("noise threshold must lie in -1..5, got " + std::to_string(request.noiseThreshold));
     sandcore::VoxelizeSettings voxelize;
-    voxelize.resolution = request.resolution;
+    voxelize.resolution = resolution;
     voxelize.stretch = request.stretch;
     voxelize.robust = request.robust;
     voxelize.threads = std::max(1, step.threads);
@@ -88,7 +132,7 @@ BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::Ste
     const std::int64_t removed = request.noiseThreshold >= 0 ? sandcore::removeNoise(mask, request.noiseThreshold) : 0;
     if (mask.countInside() == 0)
         throw ModelError(request.modelPath, "no cell lies inside the model at resolution " +
-                                                std::to_string(request.resolution) +
+                                                std::to_string(resolution) +
                                                 (model.voxels.closedness.closed ? "" : " (the mesh is open; try --robust)"));
     try {
         sandcore::Scene scene = hourglass ? sandcore::makeHourglassScene(mask, settings, step)

@@ -17,7 +17,7 @@ namespace sandglass {
 struct SceneRequest {
     sandcore::SceneKind kind = sandcore::SceneKind::Hourglass; ///< which of the three scenes
     std::string shape;          ///< procedural shape: "sphere", "cube" or "hourglass"; empty = the scene's default
-    int resolution = 64;        ///< cells along the shape's largest extent (the canvas: its width)
+    int resolution = 0;         ///< cells along the shape's largest extent (the canvas: its width); 0 = defaultResolution(kind)
     float neckRadius = 0.0f;    ///< procedural hourglass neck radius in cells; 0 = resolution / 24, at least 1.5
     float fillFraction = 0.85f; ///< share of the upper bulb filled at reset (hourglass)
     std::string modelPath;      ///< model file (any format assimp reads); empty = the procedural shape
@@ -40,6 +40,9 @@ sandcore::SceneKind parseSceneKind(std::string_view name);
 /// The name parseSceneKind accepts for a kind.
 const char* sceneKindName(sandcore::SceneKind kind);
 
+/// Throws std::invalid_argument unless shape names a procedural shape ("sphere", "cube", "hourglass").
+void requireKnownShape(std::string_view shape);
+
 /// The procedural mask named by shape ("sphere", "cube", "hourglass"); throws std::invalid_argument
 /// for an unknown name or an invalid resolution.
 sandcore::InsideMask makeProceduralMask(std::string_view shape, int resolution, float neckRadius);
@@ -50,6 +53,9 @@ sandcore::Scene buildScene(const SceneRequest& request, const sandcore::StepSett
 
 /// As buildScene, also returning the model's voxelization report.
 BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::StepSettings& step);
+
+/// The resolution a scene gets when none is asked for: 64 cells, the canvas 60 (R10's 60x10x60 over 60x40x60).
+int defaultResolution(sandcore::SceneKind kind);
 
 /// The bundled default vessel, models/hourglass.obj in the source tree.
 std::string defaultModelPath();

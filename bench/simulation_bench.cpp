@@ -22,7 +22,7 @@ DrainRun drain(int resolution, bool sleeping, int threads) {
     using Clock = std::chrono::steady_clock;
     sandcore::HourglassShape shape;
     shape.height = resolution;
-    shape.neckRadius = std::max(1.5f, float(resolution) / 24.0f); // as `sandglass simulate` does
+    shape.neckRadius = sandcore::defaultNeckRadius(resolution); // as `sandglass simulate` does
     sandcore::StepSettings step;
     step.seed = 1;
     step.threads = threads;

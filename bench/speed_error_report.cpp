@@ -143,7 +143,7 @@ Section plausibilitySection(const ReportOptions& options, std::ostream& log) {
     log << "plausibility: discharge of a " << resolution << "-cell hourglass\n";
     sandcore::HourglassShape shape;
     shape.height = resolution;
-    shape.neckRadius = float(resolution) / 24.0f;
+    shape.neckRadius = sandcore::defaultNeckRadius(resolution);
     sandcore::Scene hourglass = sandcore::makeHourglassScene(sandcore::makeHourglassMask(shape));
     const DischargeSeries series = recordDischarge(hourglass, 10'000'000);
     const int window = 10;

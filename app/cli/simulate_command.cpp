@@ -124,12 +124,14 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
                     "model: noNoise removes cells with at most this many inside face neighbours (-1 = off)")
         ->capture_default_str()
         ->check(CLI::Range(-1, 5));
-    cmd->add_option("--res", options->request.resolution, "cells along the shape's largest extent")
-        ->capture_default_str();
-    cmd->add_option("--neck", options->request.neckRadius, "neck radius of the procedural hourglass, cells (0 = auto)");
+    cmd->add_option("--res", options->request.resolution,
+                    "cells along the shape's largest extent (default 64; the canvas: its width, default 60)")
+        ->check(CLI::Range(1, 1 << 20));
+    cmd->add_option("--neck", options->request.neckRadius, "neck radius of the procedural hourglass, cells (0 = auto)")
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--fill", options->request.fillFraction, "share of the upper bulb filled at the start (0..1]")
         ->capture_default_str();
-    auto* steps = cmd->add_option("--steps", options->steps, "number of steps (default 1000)");
+    auto* steps = cmd->add_option("--steps", options->steps, "number of steps (default 1000)")->check(CLI::NonNegativeNumber);
     auto* settled = cmd->add_flag("--until-settled", options->untilSettled, "run until a step moves nothing");
     steps->excludes(settled);
     cmd->add_option("--max-steps", options->maxSteps, "upper bound for --until-settled")->capture_default_str();

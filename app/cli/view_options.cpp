@@ -9,7 +9,9 @@ void addViewOptions(CLI::App& command, ViewOptions& options) {
     command.add_option("--scene", options.scene, "hourglass, sculpture or canvas")->capture_default_str();
     command.add_option("--model", options.model, "model file (OBJ, STL, PLY, glTF, ...) as vessel or sculpture");
     command.add_option("--shape", options.shape, "procedural shape: hourglass, sphere or cube (default per scene)");
-    command.add_option("--res", options.resolution, "cells along the shape's largest extent")->capture_default_str();
+    command.add_option("--res", options.resolution,
+                       "cells along the shape's largest extent (default 64; the canvas: its width, default 60)")
+        ->check(CLI::Range(1, 1 << 20));
     command.add_option("--seed", options.seed, "seed of the slip randomness")->capture_default_str();
     command.add_option("--mode", options.mode, "points, sprites, billboards or pseudo")->capture_default_str();
     command.add_option("--grains-per-cell", options.grainsPerCell, "grains drawn per cell, 1..32")
@@ -32,8 +34,10 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
     if (!options.model.empty() && !options.shape.empty())
         throw std::invalid_argument("choose either --model or --shape");
     state.scene.request.modelPath = options.model;
-    if (options.model.empty() && options.shape.empty()) state.scene.request.modelPath = defaultModelFor(state.scene.request.kind);
-    state.scene.request.resolution = options.resolution;
+    if (options.model.empty() && options.shape.empty())
+        state.scene.request.modelPath = defaultModelFor(state.scene.request.kind);
+    state.scene.request.resolution =
+        options.resolution != 0 ? options.resolution : defaultResolution(state.scene.request.kind);
     state.scene.seed = options.seed;
     const std::optional<RenderMode> mode = parseRenderMode(options.mode);
     if (!mode) throw std::invalid_argument("unknown mode '" + options.mode + "' (points, sprites, billboards or pseudo)");

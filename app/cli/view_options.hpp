@@ -15,7 +15,7 @@ struct ViewOptions {
     std::string scene = "hourglass";  ///< hourglass, sculpture or canvas
     std::string model;                ///< model file; empty = the scene's default (see applicationOptionsFrom)
     std::string shape;                ///< procedural shape instead of a model file
-    int resolution = 64;              ///< cells along the shape's largest extent
+    int resolution = 0;               ///< cells along the shape's largest extent; 0 = the scene's default
     std::uint64_t seed = 1;           ///< R3 seed
     std::string mode = "points";      ///< points, sprites, billboards or pseudo
     int grainsPerCell = 4;            ///< 1..32

@@ -47,13 +47,27 @@ static double hourglassRadius(double d, double h, double neck, double bulb) {
     return std::max(bulb * std::sqrt(1.0 - t * t * 0.75), neck);
 }
 
+float defaultNeckRadius(int height) { return std::max(1.5f, float(height) / 24.0f); }
+
+namespace {
+double bulbRadiusOf(const HourglassShape& shape) {
+    return shape.bulbRadius > 0 ? shape.bulbRadius : 0.27 * shape.height;
+}
+} // namespace
+
+Int3 hourglassMaskSize(const HourglassShape& shape) {
+    const int width = 2 * int(std::ceil(bulbRadiusOf(shape))) + 2; // one cell of glass all round
+    return {width, shape.height, width};
+}
+
 InsideMask makeHourglassMask(const HourglassShape& shape) {
     requireResolution(shape.height, 8);
-    const double bulb = shape.bulbRadius > 0 ? shape.bulbRadius : 0.27 * shape.height;
+    const double bulb = bulbRadiusOf(shape);
     if (shape.neckRadius < 0.5f || shape.neckRadius >= bulb)
         throw std::invalid_argument("hourglass neck radius must be at least 0.5 cells and below the bulb radius");
-    const int width = 2 * int(std::ceil(bulb)) + 2; // one cell of glass all round
-    InsideMask mask = InsideMask::empty({width, shape.height, width});
+    const Int3 size = hourglassMaskSize(shape);
+    const int width = size.x;
+    InsideMask mask = InsideMask::empty(size);
     const double centre = width / 2.0, neckY = shape.height / 2.0, half = shape.height / 2.0;
     for (int y = 0; y < shape.height; ++y) {
         const double d = std::abs(y + 0.5 - neckY);

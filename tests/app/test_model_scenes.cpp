@@ -65,3 +65,24 @@ TEST_CASE("bundled sculptures fill their model and collapse onto the floor") {
         CHECK(built.scene.counters().grainsLower == grains);
     }
 }
+
+TEST_CASE("procedural and canvas scenes too large for memory are refused before allocating") {
+    sandglass::SceneRequest request;
+    request.memoryLimit = 64ull << 20; // 64 MiB
+    request.resolution = 256;
+    for (sandcore::SceneKind kind : {sandcore::SceneKind::Hourglass, sandcore::SceneKind::Sculpture,
+                                     sandcore::SceneKind::Canvas}) {
+        request.kind = kind;
+        try {
+            sandglass::buildScene(request, {});
+            FAIL("a scene over the memory limit was built");
+        } catch (const std::invalid_argument& e) {
+            CHECK(std::string(e.what()).find("too large for memory at resolution 256") != std::string::npos);
+        }
+    }
+    request.resolution = 0; // the scene's default fits easily
+    request.kind = sandcore::SceneKind::Canvas;
+    const sandcore::Scene canvas = sandglass::buildScene(request, {});
+    CHECK(canvas.grid(sandcore::GridLevel::Lower).size() == sandcore::Int3{60, 40, 60});
+    CHECK(canvas.grid(sandcore::GridLevel::Upper).size() == sandcore::Int3{60, 10, 60});
+}

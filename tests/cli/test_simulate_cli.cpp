@@ -63,6 +63,11 @@ TEST_CASE("bad arguments give a one-line error and a non-zero exit") {
         "simulate --res 5000",                 // grid too large
         "simulate --res -4",                   // negative size
         "simulate --res 0",                    // zero size
+        "simulate --steps -5",                 // negative steps
+        "simulate --neck -1",                  // negative neck
+        "simulate --scene canvas --shape cube", // the canvas has no shape
+        "simulate --scene canvas --model models/ball.obj", // nor a model
+        "simulate --scene canvas --res 2000",  // a canvas over 2^31 cells
         "simulate --threads 0",                // no threads
         "simulate --steps 10 --until-settled", // exclusive options
         "simulate --frobnicate",               // unknown flag

@@ -18,6 +18,13 @@ struct HourglassShape {
     float bulbRadius = 0.0f;     ///< widest radius of each bulb, in cells; 0 = 0.27 * height
 };
 
+/// The neck radius the procedural hourglass gets when none is asked for: height / 24, at least
+/// 1.5 cells (wide enough that sand never jams at low resolutions).
+float defaultNeckRadius(int height);
+
+/// The size of the mask makeHourglassMask would make, without making it.
+Int3 hourglassMaskSize(const HourglassShape& shape);
+
 /// An hourglass of revolution about the vertical axis: two bulbs joined at a neck in the
 /// middle layer. Throws std::invalid_argument for a height below 8 or a neck wider than the bulbs.
 InsideMask makeHourglassMask(const HourglassShape& shape);
