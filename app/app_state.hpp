@@ -37,6 +37,7 @@ struct PaintingSettings {
     std::array<int, 3> obstacleMin{8, 0, 8};    ///< next obstacle's first cell (lower grid), inclusive
     std::array<int, 3> obstacleMax{16, 6, 16};  ///< next obstacle's last cell + 1 (lower grid), exclusive
     std::size_t undoSteps = 0;   ///< strokes that Undo can take back
+    std::size_t undoBytes = 0;   ///< memory the kept strokes' snapshots use, bytes
 };
 
 /// Requests raised by panels and keys, served once per frame.
@@ -75,6 +76,7 @@ struct FrameStatistics {
 /// The application's state, as far as the panels see it.
 struct AppState {
     SceneSettings scene;            ///< what the next rebuild builds
+    sandcore::SceneKind runningSceneKind = sandcore::SceneKind::Hourglass; ///< the scene shown now (set when a build is adopted)
     RenderSettings render;          ///< how grains are drawn
     PaintingSettings painting;      ///< canvas painting options
     bool simulationRunning = false; ///< thesis default: simulation off

@@ -90,7 +90,7 @@ struct ApplicationCallbacks {
 Application::Application(ApplicationOptions options)
     : options_(std::move(options)), state_(options_.initial), window_(options_.window),
       imgui_(window_.handle(), window_.contentScale()), renderer_(shaderDirectory()),
-      canvasInput_(shaderDirectory()) {
+      canvasInput_(shaderDirectory(), options_.undo) {
     if (options_.offscreen) {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
@@ -112,6 +112,7 @@ Application::Application(ApplicationOptions options)
     state_.painting.draftFiles = listDraftFiles(std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models");
     adoptScene(buildSceneFor(state_.scene));
     for (int i = 0; i < options_.stepsBeforeStart; ++i) scene_->step();
+    lastStepOutsideClock_ = options_.stepsBeforeStart > 0;
     renderer_.sceneChanged();
     glfwGetCursorPos(handle, &lastCursorX_, &lastCursorY_);
 }
@@ -123,6 +124,8 @@ Application::~Application() {
 
 void Application::adoptScene(sandcore::Scene scene) {
     scene_ = std::make_unique<sandcore::Scene>(std::move(scene));
+    state_.runningSceneKind = scene_->kind();
+    lastStepOutsideClock_ = false;
     renderer_.setScene(*scene_, state_.render.cellSize);
     canvasInput_.sceneReplaced();
     sandcore::Vec3 lo, hi;
@@ -180,7 +183,7 @@ void Application::renderFrame(double elapsedSeconds) {
     bindTarget();
     int width = 0, height = 0;
     targetSize(width, height);
-    renderer_.draw(*scene_, float(clock_.stepFraction()), state_.render, camera_, width, height,
+    renderer_.draw(*scene_, displayStepFraction(), state_.render, camera_, width, height,
                    window_.contentScale());
     if (pendingScene_.valid()) {
         // Progress indicator while a scene is built in the background.
@@ -241,8 +244,11 @@ void Application::serveCommands() {
     if (pendingScene_.valid() &&
         pendingScene_.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
         finishRebuild();
-    if (pending.rebuild && !pendingScene_.valid()) startRebuild();
-    pending.rebuild = false;
+    // A request raised while a build runs stays pending and starts when that build is done.
+    if (pending.rebuild && !pendingScene_.valid()) {
+        startRebuild();
+        pending.rebuild = false;
+    }
     if (pending.reset) {
         scene_->reset();
         canvasInput_.sceneReplaced();
@@ -268,6 +274,15 @@ void Application::startRebuild() {
 }
 
 void Application::finishRebuild() {
+    if (state_.pending.rebuild) {
+        // Newer settings arrived while it was built: the last request wins, this one is stale.
+        try {
+            pendingScene_.get();
+        } catch (const std::exception&) {
+            // its error no longer matters either
+        }
+        return;
+    }
     try {
         adoptScene(pendingScene_.get());
         state_.statusLine = std::string("built ") + sceneKindName(scene_->kind()) + ", " +
@@ -284,6 +299,8 @@ void Application::stepSimulation(double elapsedSeconds) {
     if (due == 0) return;
     const auto start = Clock::now();
     for (int i = 0; i < due; ++i) scene_->step();
+    // Paused, the clock's fraction stands still (often at 0): a single step would not show.
+    lastStepOutsideClock_ = !clock_.running();
     const double milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count() / due;
     FrameStatistics& stats = state_.stats;
     stats.millisecondsPerStep = stats.millisecondsPerStep == 0.0f ? float(milliseconds)
@@ -291,6 +308,10 @@ void Application::stepSimulation(double elapsedSeconds) {
     stats.stepsPerSecond = 0.95f * stats.stepsPerSecond +
                            0.05f * float(elapsedSeconds > 0.0 ? double(due) / elapsedSeconds : 0.0);
     renderer_.sceneChanged();
+}
+
+float Application::displayStepFraction() const {
+    return lastStepOutsideClock_ ? 1.0f : float(clock_.stepFraction());
 }
 
 void Application::updateStatistics(double elapsedSeconds) {

@@ -18,6 +18,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
@@ -33,6 +34,7 @@ struct ApplicationOptions {
     int frameLimit = 0;              ///< close after this many frames; 0 = run until closed
     std::filesystem::path screenshotFile; ///< with frameLimit: the last frame is saved here
     std::filesystem::path benchmarkFolder = "."; ///< where the B key writes benchmark.txt and .csv
+    UndoLimits undo;                 ///< P7: strokes and bytes the canvas keeps for undo (32, 256 MiB)
 };
 
 class Application {
@@ -51,7 +53,8 @@ public:
     void renderFrame(double elapsedSeconds);
     /// The last frame drawn, read back from the target.
     RgbImage captureFrame() const;
-    /// Runs the B1 cases on the current scene (simulation and GUI on) and returns the rows.
+    /// Runs the B1 cases on the current scene (simulation and GUI on) and returns the rows;
+    /// afterwards the scene is as it was before (each row resets it to measure the same flow).
     BenchmarkReport runBenchmark(const std::vector<BenchmarkCase>& cases, const BenchmarkTiming& timing);
 
     /// The canvas mouse path (SPEC P1-P4): the window's mouse handling calls it every frame in
@@ -69,7 +72,14 @@ public:
     void serveCommands();
     /// Runs simulation steps now, outside the clock (for scripted drawings and tests).
     void runSteps(int steps);
+    /// True while a scene is being built in the background (a rebuild request waits for it).
+    bool rebuilding() const { return pendingScene_.valid(); }
     const CanvasInput& canvasInput() const { return canvasInput_; } ///< picker and painter state
+    /// Share (0..1) of the last step's glide that frames draw now: the clock's fraction while it
+    /// runs the steps, 1 (grains at their new cells) after steps made outside it (a single step
+    /// while paused, runSteps, the steps before the first frame of `sandglass render`).
+    float displayStepFraction() const;
+    const SceneRenderer& renderer() const { return renderer_; } ///< what the last frame drew
 
     AppState& state() { return state_; }                         ///< panels' view of the application
     const sandcore::Scene& scene() const { return *scene_; }     ///< the running scene
@@ -93,6 +103,8 @@ private:
     void updateStatistics(double elapsedSeconds);
     void saveScreenshot(const std::filesystem::path& file);
     void runInteractiveBenchmark();
+    void runBenchmarkRows(const std::vector<BenchmarkCase>& cases, const BenchmarkTiming& timing,
+                          const std::function<void()>& frame, BenchmarkReport& report);
 
     ApplicationOptions options_;
     AppState state_;
@@ -105,6 +117,8 @@ private:
     std::future<sandcore::Scene> pendingScene_;
     std::chrono::steady_clock::time_point rebuildStarted_;
     sandcore::SimClock clock_;
+    // The last step did not come from the running clock, whose fraction would show it undone.
+    bool lastStepOutsideClock_ = false;
     OrbitCamera camera_;
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
     std::int64_t framesDrawn_ = 0;

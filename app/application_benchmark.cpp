@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include <cstdio>
+#include <functional>
 
 namespace sandglass {
 
@@ -20,6 +21,14 @@ BenchmarkReport Application::runBenchmark(const std::vector<BenchmarkCase>& case
 
     const RenderSettings savedRender = state_.render;
     const bool savedRunning = state_.simulationRunning, savedGui = state_.showGui;
+    // Every row resets the scene; the user's drawing or drained hourglass comes back afterwards.
+    if (pendingScene_.valid()) {
+        pendingScene_.wait();
+        finishRebuild();
+    }
+    const sandcore::SceneSnapshot savedScene = scene_->snapshot();
+    const sandcore::Scene* benchmarkedScene = scene_.get();
+    const bool savedStepOutsideClock = lastStepOutsideClock_;
     glfwSwapInterval(0); // measure drawing, not the display's refresh
     auto finishFrame = [&] {
         if (offscreen_)
@@ -35,6 +44,29 @@ BenchmarkReport Application::runBenchmark(const std::vector<BenchmarkCase>& case
         last = now;
         finishFrame();
     };
+    auto restoreUserState = [&] {
+        state_.render = savedRender;
+        state_.simulationRunning = savedRunning;
+        state_.showGui = savedGui;
+        glfwSwapInterval(options_.window.vsync ? 1 : 0);
+        if (scene_.get() != benchmarkedScene) return; // a rebuild replaced it meanwhile: keep the new one
+        scene_->restore(savedScene);
+        lastStepOutsideClock_ = savedStepOutsideClock;
+        renderer_.sceneChanged();
+    };
+    try {
+        runBenchmarkRows(cases, timing, frame, report);
+    } catch (...) {
+        restoreUserState();
+        throw;
+    }
+    restoreUserState();
+    return report;
+}
+
+void Application::runBenchmarkRows(const std::vector<BenchmarkCase>& cases, const BenchmarkTiming& timing,
+                                   const std::function<void()>& frame, BenchmarkReport& report) {
+    using Clock = std::chrono::steady_clock;
     for (const BenchmarkCase& setup : cases) {
         state_.render.mode = setup.mode;
         state_.render.grainsPerCell = setup.grainsPerCell;
@@ -64,11 +96,6 @@ BenchmarkReport Application::runBenchmark(const std::vector<BenchmarkCase>& case
                     row.framesPerSecond());
         std::fflush(stdout);
     }
-    state_.render = savedRender;
-    state_.simulationRunning = savedRunning;
-    state_.showGui = savedGui;
-    glfwSwapInterval(options_.window.vsync ? 1 : 0);
-    return report;
 }
 
 void Application::runInteractiveBenchmark() {

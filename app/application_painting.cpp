@@ -53,6 +53,7 @@ bool Application::handleCanvasPointer(const PointerSample& sample) {
     const bool changed = canvasInput_.handlePointer(*scene_, sample, canvasView(), paintSettings());
     if (changed) renderer_.sceneChanged();
     state_.painting.undoSteps = canvasInput_.painter().undoDepth();
+    state_.painting.undoBytes = canvasInput_.painter().undoBytes();
     return changed;
 }
 
@@ -74,7 +75,9 @@ bool Application::loadDraft(const std::string& path) {
 
 void Application::runSteps(int steps) {
     for (int i = 0; i < steps; ++i) scene_->step();
-    if (steps > 0) renderer_.sceneChanged();
+    if (steps <= 0) return;
+    lastStepOutsideClock_ = true;
+    renderer_.sceneChanged();
 }
 
 void Application::servePaintingCommands() {
@@ -84,11 +87,10 @@ void Application::servePaintingCommands() {
     pending.loadDraft = false;
     const bool canvas = scene_->kind() == sandcore::SceneKind::Canvas;
     if (pending.undo && canvas) {
-        const std::size_t obstaclesBefore = scene_->obstacles(sandcore::GridLevel::Lower).size();
         if (canvasInput_.undo(*scene_)) {
-            // A snapshot holds the obstacles too; the hull only needs rebuilding when they differ.
-            if (scene_->obstacles(sandcore::GridLevel::Lower).size() != obstaclesBefore)
-                renderer_.setScene(*scene_, state_.render.cellSize);
+            // A snapshot holds the obstacles too; the hull only needs rebuilding when they differ
+            // (the boxes themselves: clearing one obstacle and adding another keeps the count).
+            if (!renderer_.hullShowsObstaclesOf(*scene_)) renderer_.setScene(*scene_, state_.render.cellSize);
             renderer_.sceneChanged();
             state_.statusLine = "undone";
         } else {
@@ -116,6 +118,7 @@ void Application::servePaintingCommands() {
     }
     pending.clearObstacles = false;
     painting.undoSteps = canvasInput_.painter().undoDepth();
+    painting.undoBytes = canvasInput_.painter().undoBytes();
 }
 
 void Application::updateDraftPlacement() {

@@ -15,7 +15,8 @@ void drawPanels(AppState& state) {
         if (ImGui::CollapsingHeader("Control", ImGuiTreeNodeFlags_DefaultOpen)) drawControlSection(state);
         if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) drawDisplaySection(state);
         if (ImGui::CollapsingHeader("Scene")) drawSceneSection(state);
-        if (state.scene.request.kind == sandcore::SceneKind::Canvas &&
+        // The scene shown now decides, not the one chosen for the next rebuild.
+        if (state.runningSceneKind == sandcore::SceneKind::Canvas &&
             ImGui::CollapsingHeader("Painting", ImGuiTreeNodeFlags_DefaultOpen))
             drawPaintingSection(state);
         if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) drawStatisticsSection(state);
@@ -132,6 +133,7 @@ void drawSceneSection(AppState& state) {
             state.pending.rebuild = true;
         }
         ImGui::TextDisabled("or drop a model file on the window");
+        drawModelOptions(state);
     }
     ImGui::SliderInt("resolution", &scene.request.resolution, 16, 256);
     int seed = int(scene.seed);
@@ -140,6 +142,23 @@ void drawSceneSection(AppState& state) {
     if (ImGui::Button("Rebuild scene")) state.pending.rebuild = true;
     ImGui::SameLine();
     if (ImGui::Button("Frame camera")) state.pending.frameCamera = true;
+}
+
+void drawModelOptions(AppState& state) {
+    // S2, S3, S5: how a model file becomes cells; every change builds the scene again.
+    if (!ImGui::TreeNode("model options")) return;
+    SceneRequest& request = state.scene.request;
+    ImGui::BeginDisabled(request.modelPath.empty()); // procedural shapes are solid already
+    if (ImGui::Checkbox("robust inside test (open meshes)", &request.robust)) state.pending.rebuild = true;
+    if (ImGui::Checkbox("stretch to resolution", &request.stretch)) state.pending.rebuild = true;
+    ImGui::SliderInt("noNoise threshold", &request.noiseThreshold, -1, 3, request.noiseThreshold < 0 ? "off" : "%d");
+    // Rebuild when the slider is let go, not on every value dragged past.
+    if (ImGui::IsItemDeactivatedAfterEdit()) state.pending.rebuild = true;
+    ImGui::EndDisabled();
+    ImGui::BeginDisabled(request.kind != sandcore::SceneKind::Hourglass);
+    if (ImGui::Checkbox("carve the upper bulb to drain", &request.drainCompletely)) state.pending.rebuild = true;
+    ImGui::EndDisabled();
+    ImGui::TreePop();
 }
 
 void drawPaintingSection(AppState& state) {
@@ -203,7 +222,7 @@ void drawPaintingSection(AppState& state) {
     if (ImGui::Button("Undo stroke (Ctrl+Z)")) state.pending.undo = true;
     ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::Text("%zu kept", painting.undoSteps);
+    ImGui::Text("%zu kept (%.0f MiB)", painting.undoSteps, double(painting.undoBytes) / double(1 << 20));
 
     // SPEC G2 / R11: a box of INVALID cells in the lower grid; sand piles on it.
     if (ImGui::TreeNode("obstacles")) {

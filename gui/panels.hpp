@@ -16,6 +16,9 @@ void drawControlSection(AppState& state);
 void drawDisplaySection(AppState& state);
 /// SPEC G2: scene kind, shape or model file, resolution, seed, threads, rebuild.
 void drawSceneSection(AppState& state);
+/// SPEC S2, S3, S5 (inside the scene section): robust inside test, stretch, noNoise threshold,
+/// upper-bulb carving; each change raises a rebuild.
+void drawModelOptions(AppState& state);
 /// Thesis §3.7 "Zeichnen": draw/erase, source/target, thick/thin, draft (canvas only); brush,
 /// colour, colour from draft, draft file, undo and obstacles (SPEC P3, P5-P7, G2).
 void drawPaintingSection(AppState& state);

@@ -1,6 +1,8 @@
 #version 330 core
 // One sand grain per instance; gl_VertexID picks the sub-grain (thesis §3.8 "Scribble") and,
-// for quads, the corner. Nothing per grain is computed on the CPU beyond its position.
+// for quads, the corner. The CPU supplies per grain its position, its estimated normal and
+// whether it is inner (inner grains are left out of the instances); the sub-grain offsets,
+// sizes, colours and lighting are worked out here.
 
 layout(location = 0) in vec3 grainPosition;   // R8 display position, world units
 layout(location = 1) in vec4 grainNormal;     // packed 10:10:10:2, unit normal

@@ -43,8 +43,9 @@ std::optional<glm::dvec2> cursorOverColumn(const CanvasView& view, const CanvasS
 
 class CanvasInput {
 public:
-    /// Loads the picking shaders; needs a current GL context.
-    explicit CanvasInput(const std::filesystem::path& shaderFolder) : picker_(shaderFolder) {}
+    /// Loads the picking shaders; needs a current GL context. `undo` caps the stroke history.
+    explicit CanvasInput(const std::filesystem::path& shaderFolder, UndoLimits undo = {})
+        : picker_(shaderFolder), painter_(undo) {}
 
     /// The column of the chosen surface under the cursor, or none off the canvas. Draws the id
     /// image only when the view, window or surface changed since it was last drawn.

@@ -11,11 +11,6 @@
 
 namespace sandglass {
 
-namespace {
-GLuint newFramebuffer() { GLuint n = 0; glGenFramebuffers(1, &n); return n; }
-GLuint newRenderbuffer() { GLuint n = 0; glGenRenderbuffers(1, &n); return n; }
-} // namespace
-
 ColumnPicker::ColumnPicker(const std::filesystem::path& shaderFolder)
     : program_(loadShaderProgram(shaderFolder / "pick.vert", shaderFolder / "pick.frag")),
       emptyArray_(newVertexArray()), framebuffer_(newFramebuffer()), idTexture_(newTexture()),

@@ -1,5 +1,6 @@
 #include "paint/sand_painter.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace sandglass {
@@ -59,6 +60,14 @@ bool eraseTopGrain(sandcore::Scene& scene, CanvasColumn column) {
     return false;
 }
 
+std::size_t snapshotBytes(const sandcore::SceneSnapshot& snapshot) {
+    const auto bytesOf = [](const auto& vector) { return vector.size() * sizeof(vector[0]); };
+    const sandcore::GrainStore& grains = snapshot.grains;
+    return snapshot.upper.cells().size_bytes() + snapshot.lower.cells().size_bytes() + bytesOf(grains.level) +
+           bytesOf(grains.cell) + bytesOf(grains.cameFrom) + bytesOf(grains.movedAtStep) + bytesOf(grains.identity) +
+           bytesOf(grains.color) + bytesOf(snapshot.upperObstacles) + bytesOf(snapshot.lowerObstacles);
+}
+
 void SandPainter::paintSample(sandcore::Scene& scene, CanvasColumn column, const PaintSettings& settings,
                               const DraftImage* draft) {
     const sandcore::Int3 s = scene.grid(GridLevel::Lower).size();
@@ -77,7 +86,13 @@ void SandPainter::paintSample(sandcore::Scene& scene, CanvasColumn column, const
 void SandPainter::beginStroke(sandcore::Scene& scene, CanvasColumn column, const PaintSettings& settings,
                               const DraftImage* draft) {
     history_.push_back(scene.snapshot());
-    if (history_.size() > kUndoLimit) history_.pop_front();
+    historyBytes_ += snapshotBytes(history_.back());
+    // Oldest strokes go first; the one just begun always stays, so Undo takes it back.
+    const std::size_t maxStrokes = std::max<std::size_t>(limits_.maxStrokes, 1);
+    while (history_.size() > maxStrokes || (history_.size() > 1 && historyBytes_ > limits_.maxBytes)) {
+        historyBytes_ -= snapshotBytes(history_.front());
+        history_.pop_front();
+    }
     released_ = erased_ = 0;
     last_ = column;
     paintSample(scene, column, settings, draft);
@@ -102,6 +117,7 @@ bool SandPainter::undo(sandcore::Scene& scene) {
     if (history_.empty()) return false;
     endStroke();
     scene.restore(history_.back());
+    historyBytes_ -= snapshotBytes(history_.back());
     history_.pop_back();
     return true;
 }

@@ -38,8 +38,21 @@ struct PaintSettings {
     bool colorFromDraft = false;            ///< P6: new grains take the draft image's colour at their column
 };
 
+/// How much undo history a painter keeps (P7). Each stroke keeps a whole-scene snapshot (about
+/// 55 MB for a 256-wide canvas), so memory caps the history as well as the count.
+struct UndoLimits {
+    std::size_t maxStrokes = 32;                    ///< most strokes kept (at least 1)
+    std::size_t maxBytes = std::size_t(256) << 20;  ///< most bytes all kept snapshots use (256 MiB); the last stroke is kept even when it alone is larger
+};
+
+/// Bytes a snapshot's cells, grain records and obstacles use.
+std::size_t snapshotBytes(const sandcore::SceneSnapshot& snapshot);
+
 class SandPainter {
 public:
+    /// A painter whose undo history stays within `limits`.
+    explicit SandPainter(UndoLimits limits = {}) : limits_(limits) {}
+
     /// Starts a stroke at a column: saves the scene for undo, then paints the first sample.
     void beginStroke(sandcore::Scene& scene, CanvasColumn column, const PaintSettings& settings,
                      const DraftImage* draft = nullptr);
@@ -54,22 +67,28 @@ public:
     bool undo(sandcore::Scene& scene);
     /// Strokes that can be undone.
     std::size_t undoDepth() const { return history_.size(); }
+    /// Memory the kept snapshots use, bytes.
+    std::size_t undoBytes() const { return historyBytes_; }
+    /// The limits the history is kept within.
+    const UndoLimits& undoLimits() const { return limits_; }
     /// Forgets the undo history (the scene was rebuilt or reset).
-    void clearHistory() { history_.clear(); }
+    void clearHistory() {
+        history_.clear();
+        historyBytes_ = 0;
+    }
 
     /// Grains added and removed since the stroke began.
     std::int64_t grainsReleased() const { return released_; }
     std::int64_t grainsErased() const { return erased_; } ///< see grainsReleased
-
-    /// Most strokes kept for undo.
-    static constexpr std::size_t kUndoLimit = 32;
 
 private:
     void paintSample(sandcore::Scene& scene, CanvasColumn column, const PaintSettings& settings,
                      const DraftImage* draft);
 
     std::optional<CanvasColumn> last_;
+    UndoLimits limits_;
     std::deque<sandcore::SceneSnapshot> history_;
+    std::size_t historyBytes_ = 0; // sum of snapshotBytes over history_
     std::int64_t released_ = 0;
     std::int64_t erased_ = 0;
 };

@@ -8,11 +8,6 @@
 
 namespace sandglass {
 
-namespace {
-GLuint newFramebuffer() { GLuint n = 0; glGenFramebuffers(1, &n); return n; }
-GLuint newRenderbuffer() { GLuint n = 0; glGenRenderbuffers(1, &n); return n; }
-} // namespace
-
 OffscreenTarget::OffscreenTarget(int width, int height)
     : width_(width), height_(height), framebuffer_(newFramebuffer()), color_(newRenderbuffer()),
       depth_(newRenderbuffer()) {

@@ -50,9 +50,11 @@ using GlFramebuffer = GlHandle<deleteFramebuffer>;   ///< a framebuffer object
 using GlRenderbuffer = GlHandle<deleteRenderbuffer>; ///< a renderbuffer
 using GlProgram = GlHandle<deleteProgram>;           ///< a linked shader program
 
-/// A new buffer, vertex array or texture name.
+/// A new buffer, vertex array, texture, framebuffer or renderbuffer name.
 inline GLuint newBuffer() { GLuint n = 0; glGenBuffers(1, &n); return n; }
-inline GLuint newVertexArray() { GLuint n = 0; glGenVertexArrays(1, &n); return n; } ///< as above
-inline GLuint newTexture() { GLuint n = 0; glGenTextures(1, &n); return n; }         ///< as above
+inline GLuint newVertexArray() { GLuint n = 0; glGenVertexArrays(1, &n); return n; }   ///< as above
+inline GLuint newTexture() { GLuint n = 0; glGenTextures(1, &n); return n; }           ///< as above
+inline GLuint newFramebuffer() { GLuint n = 0; glGenFramebuffers(1, &n); return n; }   ///< as above
+inline GLuint newRenderbuffer() { GLuint n = 0; glGenRenderbuffers(1, &n); return n; } ///< as above
 
 } // namespace sandglass

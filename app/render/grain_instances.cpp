@@ -67,6 +67,7 @@ std::span<const GrainInstance> GrainInstanceBuilder::build(const sandcore::Scene
         out.identity = grains.identity[i];
         out.color = grains.color[i];
     }
+    builtCount_ = written;
     return {instances_.data(), written};
 }
 

@@ -38,6 +38,8 @@ public:
     /// grains unless settings.innerGrains. Returns the instances to draw.
     std::span<const GrainInstance> build(const sandcore::Scene& scene, float stepFraction,
                                          const RenderSettings& settings);
+    /// The instances the last build returned (empty before the first).
+    std::span<const GrainInstance> lastBuilt() const { return {instances_.data(), builtCount_}; }
     /// Inner grains counted by the last build that refreshed the cache.
     std::int64_t innerGrainCount() const { return innerCount_; }
 
@@ -49,6 +51,7 @@ private:
     std::vector<std::uint32_t> packedNormals_;
     std::vector<std::uint8_t> inner_;
     std::vector<GrainInstance> instances_;
+    std::size_t builtCount_ = 0;
     std::int64_t innerCount_ = 0;
     bool cacheValid_ = false;
     sandcore::NormalMethod cachedMethod_ = sandcore::NormalMethod::ColumnHeights;

@@ -34,7 +34,9 @@ std::optional<RenderMode> parseRenderMode(std::string_view name);
 /// Grains per cell of SPEC V2 (the thesis's mInnerCountMax).
 inline constexpr int kMaxGrainsPerCell = 32;
 
-/// Display settings; every default is the thesis's (§3.7) unless it says otherwise.
+/// Display settings. Mode, lighting, inner grains and background default to the thesis's
+/// choices (§3.7); beyond the thesis are the glass hull (on) and the normal estimate (the
+/// occupancy gradient, not the thesis's column heights, which are wrong on walls and overhangs).
 struct RenderSettings {
     RenderMode mode = RenderMode::Points; ///< thesis default: points
     int grainsPerCell = 4;                ///< sub-grains drawn per cell, 1..32 (V2)
@@ -46,7 +48,7 @@ struct RenderSettings {
     float quadSize = 0.9f;                ///< billboards: quad edge in cells at 1 grain per cell (shrinks with k)
     float jitter = 0.5f;                  ///< R8 jitter 0..1 of a grain inside its cell
     float cellSize = 1.0f;                ///< world units per cell (the thesis's mSize)
-    sandcore::NormalMethod normals = sandcore::NormalMethod::OccupancyGradient; ///< R12 estimate used by V3
+    sandcore::NormalMethod normals = sandcore::NormalMethod::OccupancyGradient; ///< R12 estimate used by V3; beyond the thesis (its method is ColumnHeights)
 };
 
 } // namespace sandglass

@@ -88,6 +88,8 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
 
 void SceneRenderer::setScene(const sandcore::Scene& scene, float cellSize) {
     const HullMesh mesh = buildHullMesh(scene, cellSize);
+    hullUpperObstacles_ = scene.obstacles(sandcore::GridLevel::Upper);
+    hullLowerObstacles_ = scene.obstacles(sandcore::GridLevel::Lower);
     glBindBuffer(GL_ARRAY_BUFFER, hullBuffer_.get());
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.triangles.size() * sizeof(HullVertex)), mesh.triangles.data(),
                  GL_STATIC_DRAW);
@@ -98,6 +100,16 @@ void SceneRenderer::setScene(const sandcore::Scene& scene, float cellSize) {
     hullVertices_ = std::int64_t(mesh.triangles.size());
     lineVertices_ = std::int64_t(mesh.lines.size());
     sceneChanged();
+}
+
+bool SceneRenderer::hullShowsObstaclesOf(const sandcore::Scene& scene) const {
+    const auto same = [](const std::vector<sandcore::CellBox>& a, const std::vector<sandcore::CellBox>& b) {
+        return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const sandcore::CellBox& x, const sandcore::CellBox& y) {
+            return x.min == y.min && x.max == y.max;
+        });
+    };
+    return same(scene.obstacles(sandcore::GridLevel::Upper), hullUpperObstacles_) &&
+           same(scene.obstacles(sandcore::GridLevel::Lower), hullLowerObstacles_);
 }
 
 void SceneRenderer::sceneChanged() {

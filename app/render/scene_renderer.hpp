@@ -13,6 +13,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
+#include <vector>
 
 namespace sandglass {
 
@@ -32,6 +34,9 @@ public:
 
     /// Takes a new scene: rebuilds the hull mesh and forgets cached grain data.
     void setScene(const sandcore::Scene& scene, float cellSize);
+    /// True when the hull was built with exactly the scene's obstacles (same boxes, same order,
+    /// both grids); after an edit that may have changed them, false means setScene is due.
+    bool hullShowsObstaclesOf(const sandcore::Scene& scene) const;
     /// The scene's grains moved (a step, reset or edit): normals and inner flags are stale.
     void sceneChanged();
 
@@ -41,6 +46,8 @@ public:
               const OrbitCamera& camera, int width, int height, float pixelScale);
 
     const RenderStats& stats() const { return stats_; } ///< what the last draw did
+    /// The grain instances in the GPU buffer now, as the last upload sent them.
+    std::span<const GrainInstance> uploadedInstances() const { return builder_.lastBuilt(); }
 
     /// P5: the draft image drawn over the canvas (uploaded once per image).
     void setDraftImage(const DraftImage& image) { draft_.setImage(image); }
@@ -62,6 +69,7 @@ private:
     DraftPlacement draftPlacement_;
     std::int64_t instanceCount_ = 0;
     std::int64_t hullVertices_ = 0, lineVertices_ = 0;
+    std::vector<sandcore::CellBox> hullUpperObstacles_, hullLowerObstacles_; // what the hull shows
     bool grainsStale_ = true;
     RenderSettings uploadedWith_;
     RenderStats stats_;

@@ -33,7 +33,7 @@ std::optional<Application> openCanvas(int resolution = 48) {
     try {
         return std::optional<Application>(std::in_place, std::move(options));
     } catch (const WindowError& error) {
-        MESSAGE("no OpenGL 3.3 context, painting not checked: " << std::string(error.what()));
+        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): painting not checked");
         return std::nullopt;
     }
 }
@@ -78,10 +78,7 @@ std::int64_t invalidCells(const sandcore::CellGrid& grid) {
 }
 
 #define REQUIRE_DISPLAY()                                                         \
-    if (!testing::displayAvailable()) {                                           \
-        MESSAGE("no X display (run under xvfb-run): painting not checked");       \
-        return;                                                                   \
-    }
+    if (!testing::requireDisplay("painting")) return
 
 } // namespace
 
@@ -267,4 +264,34 @@ TEST_CASE("painting: dropped .png and .jpg files are drafts, other files models"
     REQUIRE(drafts.size() >= 2);
     CHECK(std::filesystem::path(drafts[0]).filename() == "draft_rainbow.jpg");
     CHECK(std::filesystem::path(drafts[1]).filename() == "draft_sun.png");
+}
+
+TEST_CASE("painting: undo back to a different obstacle of the same count rebuilds the glass hull") {
+    REQUIRE_DISPLAY();
+    std::optional<Application> app = openCanvas();
+    if (!app) return;
+    PaintingSettings& painting = app->state().painting;
+    painting.obstacleMin = {4, 0, 4};
+    painting.obstacleMax = {10, 5, 10};
+    app->state().pending.addObstacle = true;
+    app->serveCommands();
+    const std::vector<sandcore::CellBox> first = app->scene().obstacles(GridLevel::Lower);
+    REQUIRE(first.size() == 1);
+    stroke(*app, {{20, 20}, {30, 20}}); // its snapshot holds the first obstacle
+
+    // Swap the obstacle for another one: the count stays 1.
+    app->state().pending.clearObstacles = true;
+    app->serveCommands();
+    painting.obstacleMin = {30, 0, 30};
+    painting.obstacleMax = {40, 8, 40};
+    app->state().pending.addObstacle = true;
+    app->serveCommands();
+    REQUIRE(app->scene().obstacles(GridLevel::Lower).size() == 1);
+    CHECK(app->renderer().hullShowsObstaclesOf(app->scene()));
+
+    app->state().pending.undo = true;
+    app->serveCommands();
+    REQUIRE(app->scene().obstacles(GridLevel::Lower).size() == 1);
+    CHECK(app->scene().obstacles(GridLevel::Lower)[0].min == first[0].min);
+    CHECK(app->renderer().hullShowsObstaclesOf(app->scene())); // the hull shows the first box again
 }

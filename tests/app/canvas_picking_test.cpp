@@ -32,7 +32,7 @@ std::optional<Application> openCanvas(int resolution) {
     try {
         return std::optional<Application>(std::in_place, std::move(options));
     } catch (const WindowError& error) {
-        MESSAGE("no OpenGL 3.3 context, picking not checked: " << std::string(error.what()));
+        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): picking not checked");
         return std::nullopt;
     }
 }
@@ -97,10 +97,7 @@ PickCounts checkView(Application& app, PaintTarget target) {
 } // namespace
 
 TEST_CASE("picking: the id at each column's projected centre is that column (256 x 256 canvas)") {
-    if (!testing::displayAvailable()) {
-        MESSAGE("no X display (run under xvfb-run): picking not checked");
-        return;
-    }
+    if (!testing::requireDisplay("picking")) return;
     std::optional<Application> app = openCanvas(256);
     if (!app) return;
     REQUIRE(app->scene().grid(sandcore::GridLevel::Upper).size().x == 256);
@@ -137,10 +134,7 @@ TEST_CASE("picking: the id at each column's projected centre is that column (256
 }
 
 TEST_CASE("picking: no cell limit, ids above 65535 come back exactly (320 x 320 canvas)") {
-    if (!testing::displayAvailable()) {
-        MESSAGE("no X display (run under xvfb-run): picking not checked");
-        return;
-    }
+    if (!testing::requireDisplay("picking")) return;
     std::optional<Application> app = openCanvas(320);
     if (!app) return;
     REQUIRE(app->scene().grid(sandcore::GridLevel::Upper).size().x == 320);
@@ -152,10 +146,7 @@ TEST_CASE("picking: no cell limit, ids above 65535 come back exactly (320 x 320 
 }
 
 TEST_CASE("picking: a new view or window draws the id image again, the same view does not") {
-    if (!testing::displayAvailable()) {
-        MESSAGE("no X display (run under xvfb-run): picking not checked");
-        return;
-    }
+    if (!testing::requireDisplay("picking")) return;
     std::optional<Application> app = openCanvas(32);
     if (!app) return;
     const std::int64_t start = app->canvasInput().picker().redraws();

@@ -36,7 +36,7 @@ bool paintCanvas(std::optional<Application>& app) {
     try {
         app.emplace(std::move(options));
     } catch (const WindowError& error) {
-        MESSAGE("no OpenGL 3.3 context, colours not checked: " << std::string(error.what()));
+        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): colours not checked");
         return false;
     }
     app->camera().setView(CameraView::Top);
@@ -60,10 +60,7 @@ bool paintCanvas(std::optional<Application>& app) {
 } // namespace
 
 TEST_CASE("render: painted colours show in every mode, with and without light") {
-    if (!testing::displayAvailable()) {
-        MESSAGE("no X display (run under xvfb-run): colours not checked");
-        return;
-    }
+    if (!testing::requireDisplay("colours")) return;
     std::optional<Application> app;
     if (!paintCanvas(app)) return;
     const CanvasView view = app->canvasView();

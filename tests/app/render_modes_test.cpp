@@ -53,7 +53,7 @@ ScreenBox grainsOnScreen(Application& app, int width, int height, std::vector<st
     const sandcore::Scene& scene = app.scene();
     const RenderSettings& render = app.state().render;
     std::vector<sandcore::Vec3> positions(scene.grains().size());
-    sandcore::writeDisplayPositions(scene, 0.0f, {render.cellSize, render.jitter}, positions);
+    sandcore::writeDisplayPositions(scene, app.displayStepFraction(), {render.cellSize, render.jitter}, positions);
     const glm::mat4 viewProjection = app.camera().projection(float(width) / float(height)) * app.camera().view();
     ScreenBox box;
     for (const sandcore::Vec3& p : positions) {
@@ -75,7 +75,7 @@ void checkMode(RenderMode mode, bool light, bool black) {
     try {
         app.emplace(smallHourglass(mode, light, black));
     } catch (const WindowError& error) {
-        MESSAGE("no OpenGL 3.3 context, drawing not checked: " << error.what());
+        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): drawing not checked");
         return;
     }
     app->renderFrame(0.0);
@@ -116,19 +116,13 @@ void checkMode(RenderMode mode, bool light, bool black) {
 } // namespace
 
 TEST_CASE("render: every mode with and without light draws sand where the grains are") {
-    if (!testing::displayAvailable()) {
-        MESSAGE("no X display (run under xvfb-run): drawing not checked");
-        return;
-    }
+    if (!testing::requireDisplay("drawing")) return;
     for (RenderMode mode : kRenderModes)
         for (bool light : {false, true}) checkMode(mode, light, false);
 }
 
 TEST_CASE("render: black background keeps the sand and turns the rest black") {
-    if (!testing::displayAvailable()) {
-        MESSAGE("no X display (run under xvfb-run): drawing not checked");
-        return;
-    }
+    if (!testing::requireDisplay("drawing")) return;
     checkMode(RenderMode::PseudoBillboards, true, true);
     checkMode(RenderMode::Points, false, true);
 }

@@ -146,6 +146,47 @@ TEST_CASE("undo restores the scene exactly as it was before the last stroke") {
     CHECK(!painter.undo(scene));  // nothing left
 }
 
+TEST_CASE("undo history is capped by memory as well as by count, and always keeps the last stroke") {
+    sandcore::Scene scene = smallCanvas();
+    PaintSettings settings;
+    const std::size_t oneSnapshot = snapshotBytes(scene.snapshot());
+    REQUIRE(oneSnapshot > 0);
+    // An empty 16-wide canvas: 16*3*16 + 16*10*16 cells of 4 bytes, no grains, no obstacles.
+    CHECK(oneSnapshot == (16 * 3 * 16 + 16 * 10 * 16) * sizeof(sandcore::CellValue));
+
+    // Room for about three snapshots (grains add a little to later ones).
+    SandPainter painter(UndoLimits{32, 3 * oneSnapshot + oneSnapshot / 2});
+    std::vector<std::uint64_t> hashes;
+    for (int stroke = 0; stroke < 6; ++stroke) {
+        hashes.push_back(scene.stateHash());
+        painter.beginStroke(scene, {stroke, 2}, settings);
+        painter.endStroke();
+        CHECK(painter.undoBytes() <= painter.undoLimits().maxBytes);
+    }
+    CHECK(painter.undoDepth() == 3);
+    CHECK(painter.undoBytes() > 2 * oneSnapshot);
+    // The newest three strokes come back, newest first; the older ones were dropped.
+    for (int stroke = 5; stroke >= 3; --stroke) {
+        REQUIRE(painter.undo(scene));
+        CHECK(scene.stateHash() == hashes[std::size_t(stroke)]);
+    }
+    CHECK_FALSE(painter.undo(scene));
+    CHECK(painter.undoBytes() == 0);
+
+    // A limit smaller than one snapshot still keeps the last stroke.
+    SandPainter tight(UndoLimits{32, 1});
+    tight.beginStroke(scene, {1, 1}, settings);
+    tight.beginStroke(scene, {2, 2}, settings);
+    CHECK(tight.undoDepth() == 1);
+
+    // The count cap still holds when memory would allow more.
+    SandPainter counted(UndoLimits{2, std::size_t(1) << 30});
+    for (int stroke = 0; stroke < 5; ++stroke) counted.beginStroke(scene, {stroke, 4}, settings);
+    CHECK(counted.undoDepth() == 2);
+    CHECK(UndoLimits{}.maxStrokes == 32);
+    CHECK(UndoLimits{}.maxBytes == std::size_t(256) << 20);
+}
+
 TEST_CASE("colour from draft gives each released grain the draft's colour at its column") {
     // A 2x2 draft: red, green / blue, white (rows from the top = from z = 0).
     const DraftImage draft(2, 2, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255});

@@ -30,10 +30,7 @@ ProcessResult runSandglass(const std::string& arguments) {
 } // namespace
 
 TEST_CASE("window: 200 frames with the simulation on, then a clean exit with every grain kept") {
-    if (!sandglass::testing::displayAvailable()) {
-        MESSAGE("no X display (run under xvfb-run): window not opened");
-        return;
-    }
+    if (!sandglass::testing::requireDisplay("window")) return;
     const ProcessResult run = runSandglass("gui --res 24 --run --frames 200 --size 320x240");
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
@@ -49,10 +46,7 @@ TEST_CASE("window: 200 frames with the simulation on, then a clean exit with eve
 }
 
 TEST_CASE("window: --screenshot writes the last frame") {
-    if (!sandglass::testing::displayAvailable()) {
-        MESSAGE("no X display (run under xvfb-run): window not opened");
-        return;
-    }
+    if (!sandglass::testing::requireDisplay("window")) return;
     const std::string file = "build/window-test-screenshot.png";
     std::remove(file.c_str());
     const ProcessResult run = runSandglass("gui --res 16 --frames 3 --size 200x150 --screenshot " + file);

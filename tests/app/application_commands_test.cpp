@@ -1,0 +1,154 @@
+// The application's own commands with a real GL context: what a frame shows after steps made
+// outside the running clock (single step, `render --steps`), rebuild requests during a build,
+// and the B benchmark leaving the user's scene as it was.
+#include "display_guard.hpp"
+
+#include "application.hpp"
+
+#include "sandcore/display_positions.hpp"
+
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <optional>
+#include <thread>
+
+using namespace sandglass;
+
+namespace {
+
+ApplicationOptions smallHourglass(int stepsBeforeStart) {
+    ApplicationOptions options;
+    options.window = {96, 96, false, false, "sandglass application test"};
+    options.offscreen = true;
+    options.initial.showGui = false;
+    options.initial.render.hull = false;
+    options.initial.render.innerGrains = true; // every grain is an instance, in grain order
+    options.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
+    options.initial.scene.request.modelPath.clear();
+    options.initial.scene.request.shape = "hourglass";
+    options.initial.scene.request.resolution = 24;
+    options.stepsBeforeStart = stepsBeforeStart;
+    return options;
+}
+
+std::optional<Application> open(ApplicationOptions options) {
+    try {
+        return std::optional<Application>(std::in_place, std::move(options));
+    } catch (const WindowError& error) {
+        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): application not checked");
+        return std::nullopt;
+    }
+}
+
+// Every grain moved by the last step is drawn exactly at its new cell's display point; returns
+// how many such grains there were (transitions between the grids keep their world cell and
+// are not among them).
+std::int64_t checkMovedGrainsDrawnAtTheirCells(Application& app) {
+    const sandcore::Scene& scene = app.scene();
+    const sandcore::GrainStore& grains = scene.grains();
+    const std::span<const GrainInstance> instances = app.renderer().uploadedInstances();
+    REQUIRE(instances.size() == std::size_t(grains.size()));
+    const RenderSettings& render = app.state().render;
+    std::int64_t moved = 0;
+    for (std::uint32_t id = 0; id < grains.size(); ++id) {
+        if (grains.movedAtStep[id] != scene.counters().stepsDone) continue;
+        ++moved;
+        const sandcore::Vec3 cell = sandcore::cellDisplayPoint(scene, grains.level[id], grains.cell[id],
+                                                               grains.identity[id], {render.cellSize, render.jitter});
+        CAPTURE(id);
+        CHECK(instances[id].x == cell.x);
+        CHECK(instances[id].y == cell.y);
+        CHECK(instances[id].z == cell.z);
+    }
+    return moved;
+}
+
+} // namespace
+
+TEST_CASE("application: `render --steps N` draws the state after N steps with grains at their cells") {
+    if (!testing::requireDisplay("the rendered step")) return;
+    // The render command's setup: steps before the first frame, simulation off, no time passing.
+    std::optional<Application> app = open(smallHourglass(30));
+    if (!app) return;
+    app->renderFrame(0.0);
+    REQUIRE(app->scene().counters().stepsDone == 30);
+    REQUIRE(app->scene().counters().movesLastStep > 0);
+    CHECK(app->displayStepFraction() == 1.0f);
+    CHECK(checkMovedGrainsDrawnAtTheirCells(*app) > 0);
+}
+
+TEST_CASE("application: a single step while paused shows the grains that moved at their new cells") {
+    if (!testing::requireDisplay("the single step")) return;
+    std::optional<Application> app = open(smallHourglass(0));
+    if (!app) return;
+    app->state().simulationRunning = true;
+    for (int frame = 0; frame < 20; ++frame) app->renderFrame(1.0 / 45.0); // sand on its way, mid-glide
+    app->state().simulationRunning = false;
+    app->renderFrame(1.0 / 45.0);
+    const std::uint64_t stepsBefore = app->scene().counters().stepsDone;
+    REQUIRE(stepsBefore > 0);
+
+    app->state().pending.singleStep = true;
+    app->renderFrame(1.0 / 45.0);
+    REQUIRE(app->scene().counters().stepsDone == stepsBefore + 1);
+    REQUIRE(app->scene().counters().movesLastStep > 0);
+    CHECK(app->displayStepFraction() == 1.0f);
+    CHECK(checkMovedGrainsDrawnAtTheirCells(*app) > 0);
+    app->renderFrame(1.0 / 45.0); // still paused: the frame stays as it is
+    CHECK(app->displayStepFraction() == 1.0f);
+
+    // Running again, the clock's steps glide as before.
+    app->state().simulationRunning = true;
+    for (int frame = 0; frame < 5; ++frame) app->renderFrame(1.0 / 45.0);
+    CHECK(app->displayStepFraction() < 1.0f);
+}
+
+TEST_CASE("application: a rebuild requested while a build runs is built next, so the last request wins") {
+    if (!testing::requireDisplay("rebuilding")) return;
+    std::optional<Application> app = open(smallHourglass(0));
+    if (!app) return;
+    SceneRequest& request = app->state().scene.request;
+    request.kind = sandcore::SceneKind::Canvas;
+    request.resolution = 160; // big enough that the second request usually finds it still building
+    app->state().pending.rebuild = true;
+    app->serveCommands();
+    CHECK(app->state().runningSceneKind == sandcore::SceneKind::Hourglass); // not adopted yet
+    const bool firstStillBuilding = app->rebuilding();
+    request.resolution = 40;
+    app->state().pending.rebuild = true;
+    app->serveCommands();
+    if (firstStillBuilding && app->rebuilding()) CHECK(app->state().pending.rebuild); // waits, not dropped
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while ((app->rebuilding() || app->state().pending.rebuild) && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        app->serveCommands();
+    }
+    REQUIRE_FALSE(app->rebuilding());
+    CHECK(app->scene().kind() == sandcore::SceneKind::Canvas);
+    CHECK(app->state().runningSceneKind == sandcore::SceneKind::Canvas);
+    CHECK(app->scene().grid(sandcore::GridLevel::Lower).size().x == 40);
+}
+
+TEST_CASE("application: the benchmark leaves the user's scene as it was (state hash)") {
+    if (!testing::requireDisplay("the benchmark")) return;
+    std::optional<Application> app = open(smallHourglass(0));
+    if (!app) return;
+    app->runSteps(60); // partly drained: not the state a reset gives
+    const std::uint64_t before = app->scene().stateHash();
+    const std::uint64_t stepsBefore = app->scene().counters().stepsDone;
+    const RenderSettings renderBefore = app->state().render;
+
+    BenchmarkTiming timing;
+    timing.warmupFrames = 1;
+    timing.minFrames = 3;
+    timing.maxFrames = 3;
+    timing.maxSeconds = 5.0;
+    const BenchmarkReport report =
+        app->runBenchmark({{RenderMode::Points, 1, false, true}, {RenderMode::PseudoBillboards, 4, true, false}}, timing);
+    REQUIRE(report.rows.size() == 2);
+    CHECK(app->scene().stateHash() == before);
+    CHECK(app->scene().counters().stepsDone == stepsBefore);
+    CHECK(app->state().render.mode == renderBefore.mode);
+    CHECK_FALSE(app->state().simulationRunning);
+}
