@@ -85,12 +85,15 @@ sandcore::Int3 proceduralMaskSize(std::string_view shape, int resolution) {
 
 } // namespace
 
+void requireNoShapeForCanvas(const SceneRequest& request) {
+    if (request.kind == SceneKind::Canvas && (!request.modelPath.empty() || !request.shape.empty()))
+        throw std::invalid_argument("the canvas takes no model or shape (they are for the hourglass and the sculpture)");
+}
+
 BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::StepSettings& step) {
     const int resolution = request.resolution != 0 ? request.resolution : defaultResolution(request.kind);
     if (resolution < 8) throw std::invalid_argument("resolution must be at least 8 cells, got " + std::to_string(resolution));
     if (request.kind == SceneKind::Canvas) {
-        if (!request.modelPath.empty() || !request.shape.empty())
-            throw std::invalid_argument("the canvas takes no model or shape (they are for the hourglass and the sculpture)");
         sandcore::CanvasSettings canvas;
         canvas.upperSize = {resolution, std::max(2, resolution / 6), resolution};
         canvas.lowerSize = {resolution, std::max(2, resolution * 2 / 3), resolution};

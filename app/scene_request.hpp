@@ -47,7 +47,11 @@ void requireKnownShape(std::string_view shape);
 /// for an unknown name or an invalid resolution.
 sandcore::InsideMask makeProceduralMask(std::string_view shape, int resolution, float neckRadius);
 
-/// Builds the requested scene; throws std::invalid_argument (or ModelError, "FILE: cause", for a
+/// The command line's check that a canvas request names no model or shape (the window simply
+/// ignores them when the user switches to the canvas); throws std::invalid_argument.
+void requireNoShapeForCanvas(const SceneRequest& request);
+
+/// Builds the requested scene (a canvas ignores modelPath and shape); throws std::invalid_argument (or ModelError, "FILE: cause", for a
 /// model) with a one-line message on bad input. Nothing is changed on failure.
 sandcore::Scene buildScene(const SceneRequest& request, const sandcore::StepSettings& step);
 

@@ -3,6 +3,9 @@
 #include <GL/glew.h>
 #include <GLFW/glfw3.h>
 
+#include <chrono>
+#include <thread>
+
 namespace sandglass {
 
 namespace {
@@ -19,7 +22,14 @@ std::string glString(GLenum name) {
 } // namespace
 
 Window::Window(const WindowOptions& options) {
-    if (glfwInit() != GLFW_TRUE)
+    // An X server refuses a small share of connections that follow each other quickly (seen with
+    // Xvfb when tests open many windows, and with two processes on one display): try a few times.
+    bool initialised = false;
+    for (int attempt = 0; attempt < 8 && !initialised; ++attempt) {
+        if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(25 * attempt));
+        initialised = glfwInit() == GLFW_TRUE;
+    }
+    if (!initialised)
         throw WindowError("cannot open a window: " + glfwProblem() + " (is DISPLAY set? try xvfb-run -a)");
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);

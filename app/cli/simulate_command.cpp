@@ -43,6 +43,7 @@ double median(std::vector<double> values) {
 int runSimulate(SimulateOptions& options) {
     using Clock = std::chrono::steady_clock;
     options.request.kind = parseSceneKind(options.scene);
+    requireNoShapeForCanvas(options.request);
     if (options.steps < 0 && !options.untilSettled) options.steps = 1000;
     if (!options.request.modelPath.empty() && options.request.kind == sandcore::SceneKind::Canvas)
         throw std::invalid_argument("--model shapes an hourglass or a sculpture; the canvas has no model");

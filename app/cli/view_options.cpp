@@ -34,6 +34,7 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
     if (!options.model.empty() && !options.shape.empty())
         throw std::invalid_argument("choose either --model or --shape");
     state.scene.request.modelPath = options.model;
+    requireNoShapeForCanvas(state.scene.request);
     if (options.model.empty() && options.shape.empty())
         state.scene.request.modelPath = defaultModelFor(state.scene.request.kind);
     state.scene.request.resolution =

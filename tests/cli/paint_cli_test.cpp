@@ -1,5 +1,6 @@
 // SPEC P5 at the command line: --draft loads a draft (a bad one is one line on stderr and the
 // canvas still opens), --paint-demo pours a drawing over it through the mouse path.
+#include "app/display_guard.hpp"
 #include "run_process.hpp"
 
 #include <doctest/doctest.h>
@@ -7,18 +8,8 @@
 #include <cstdlib>
 #include <string>
 
-namespace {
-bool displayAvailable() {
-    const char* display = std::getenv("DISPLAY");
-    return display != nullptr && *display != '\0';
-}
-} // namespace
-
 TEST_CASE("cli: --paint-demo pours sand over the draft, a bad --draft is one line and the canvas runs on") {
-    if (!displayAvailable()) {
-        MESSAGE("no X display (run under xvfb-run): gui not run");
-        return;
-    }
+    if (!sandglass::testing::requireDisplay("the painting demo")) return;
     const std::string sun = std::string(SANDGLASS_SOURCE_DIR) + "/models/draft_sun.png";
     const cli::ProcessResult demo =
         cli::runSandglass("gui --scene canvas --res 32 --size 320x240 --frames 1 --draft " + sun + " --paint-demo 1");

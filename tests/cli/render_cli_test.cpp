@@ -1,4 +1,5 @@
 // SPEC C3 and §6: bad input to render, gui and bench gives one line on stderr and a non-zero code.
+#include "app/display_guard.hpp"
 #include "run_process.hpp"
 
 #include <doctest/doctest.h>
@@ -35,11 +36,7 @@ TEST_CASE("cli: bad render, gui and bench input gives one line and a non-zero ex
 }
 
 TEST_CASE("cli: render writes a PNG and reports fps and frame_ms as JSON") {
-    const char* display = std::getenv("DISPLAY");
-    if (display == nullptr || *display == '\0') {
-        MESSAGE("no X display (run under xvfb-run): render not run");
-        return;
-    }
+    if (!sandglass::testing::requireDisplay("sandglass render")) return;
     const std::string file = "build/render-cli-test.png";
     std::remove(file.c_str());
     const std::string command = std::string(SANDGLASS_EXECUTABLE) +
