@@ -23,6 +23,7 @@ constexpr int moveDx(MoveCode m) { return m % 3 - 1; }       ///< x component of
 constexpr int moveDy(MoveCode m) { return (m / 3) % 3 - 1; } ///< y component of a packed offset
 constexpr int moveDz(MoveCode m) { return m / 9 - 1; }       ///< z component of a packed offset
 
+/// Every grain's place, last move and look, one array per field (ids index all of them).
 struct GrainStore {
     std::vector<GridLevel> level;            ///< grid holding the grain
     std::vector<std::uint32_t> cell;         ///< cell index in that grid

@@ -17,6 +17,7 @@ struct InsideMask {
     /// An all-outside mask; throws std::invalid_argument for an invalid size (see validateGridSize).
     static InsideMask empty(Int3 size);
 
+    /// Index of (x, y, z) in `inside`.
     std::size_t indexOf(int x, int y, int z) const {
         return std::size_t(x) + std::size_t(size.x) * (std::size_t(z) + std::size_t(size.z) * std::size_t(y));
     }

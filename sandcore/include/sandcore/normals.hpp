@@ -11,6 +11,7 @@
 
 namespace sandcore {
 
+/// Which estimate of R12 to use.
 enum class NormalMethod : std::uint8_t {
     ColumnHeights,      ///< thesis §3.8: one normal per column from its 8 neighbours' heights
     OccupancyGradient,  ///< normalised negative gradient of sand occupancy over the 3x3x3 neighbourhood

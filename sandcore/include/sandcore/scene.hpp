@@ -54,6 +54,7 @@ struct SceneSnapshot {
     std::vector<CellBox> lowerObstacles;   ///< obstacles of the lower grid
 };
 
+/// Two grids of sand and the step that moves it: the library's main object. Movable, not copyable.
 class Scene {
 public:
     /// A scene from two layouts (cells kEmpty or kInvalid only) of equal x and z size, and the

@@ -4,13 +4,16 @@
 
 namespace sandcore {
 
+/// How fast the simulation runs against the wall clock.
 struct ClockSettings {
     double stepsPerSecond = 30.0; ///< flow speed, steps per second of wall time (> 0)
     int maxStepsPerFrame = 4;     ///< at most this many steps per frame; a slow frame drops the rest
 };
 
+/// Turns wall time into simulation steps at a fixed rate (R9); paused at first.
 class SimClock {
 public:
+    /// A paused clock with these settings.
     explicit SimClock(ClockSettings settings = {}) : settings_(settings) {}
 
     /// Adds elapsed wall time (seconds) and returns how many steps are due now.

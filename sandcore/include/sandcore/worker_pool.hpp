@@ -12,11 +12,12 @@
 
 namespace sandcore {
 
+/// Persistent threads that share short parallel loops; the caller works too.
 class WorkerPool {
 public:
     /// A pool that runs loops on `threads` threads in all (the caller included); at least 1.
     explicit WorkerPool(int threads);
-    ~WorkerPool();
+    ~WorkerPool(); ///< stops and joins the workers
     WorkerPool(const WorkerPool&) = delete;
     WorkerPool& operator=(const WorkerPool&) = delete;
 
