@@ -111,6 +111,7 @@ Application::Application(ApplicationOptions options)
     state_.modelFiles = listModelFiles();
     state_.painting.draftFiles = listDraftFiles(std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models");
     adoptScene(buildSceneFor(state_.scene));
+    camera_.zoom(options_.cameraZoom);
     for (int i = 0; i < options_.stepsBeforeStart; ++i) scene_->step();
     lastStepOutsideClock_ = options_.stepsBeforeStart > 0;
     renderer_.sceneChanged();

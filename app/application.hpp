@@ -35,6 +35,7 @@ struct ApplicationOptions {
     std::filesystem::path screenshotFile; ///< with frameLimit: the last frame is saved here
     std::filesystem::path benchmarkFolder = "."; ///< where the B key writes benchmark.txt and .csv
     UndoLimits undo;                 ///< P7: strokes and bytes the canvas keeps for undo (32, 256 MiB)
+    float cameraZoom = 1.0f;         ///< start closer (< 1) or farther (> 1) than the framing distance
 };
 
 class Application {

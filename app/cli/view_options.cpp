@@ -24,6 +24,8 @@ void addViewOptions(CLI::App& command, ViewOptions& options) {
     command.add_option("--size", options.size, "window or image size in pixels, WxH");
     command.add_option("--steps", options.steps, "simulation steps before the first frame")
         ->check(CLI::NonNegativeNumber);
+    command.add_option("--zoom", options.zoom, "camera distance as a share of the framing distance (0.5 = twice as close)")
+        ->check(CLI::Range(0.05, 20.0));
 }
 
 ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaultWidth, int defaultHeight) {
@@ -48,6 +50,7 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
     state.render.innerGrains = !options.hideInner;
     state.render.blackBackground = options.black;
     state.render.hull = !options.noHull;
+    result.cameraZoom = options.zoom;
     result.window.width = defaultWidth;
     result.window.height = defaultHeight;
     if (!options.size.empty()) {

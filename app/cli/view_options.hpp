@@ -25,10 +25,11 @@ struct ViewOptions {
     bool noHull = false;              ///< V6: no glass
     std::string size;                 ///< "WxH" in pixels; empty = the command's default
     int steps = 0;                    ///< simulation steps before the first frame
+    float zoom = 1.0f;                ///< camera distance as a share of the distance that frames the scene
 };
 
 /// Adds --scene --model --shape --res --seed --mode --grains-per-cell --light --no-inner --black
-/// --no-hull --size --steps to a subcommand.
+/// --no-hull --size --steps --zoom to a subcommand.
 void addViewOptions(CLI::App& command, ViewOptions& options);
 
 /// Application options from the typed ones; throws std::invalid_argument with one line on a bad value.
