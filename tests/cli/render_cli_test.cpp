@@ -26,7 +26,7 @@ TEST_CASE("cli: bad render, gui and bench input gives one line and a non-zero ex
     for (const char* arguments :
          {"render --out x.png --mode voxels", "render --out x.png --grains-per-cell 40", "render --mode points",
           "render --out x.png --size 12", "render --out x.png --scene teapot", "gui --screenshot x.png",
-          "gui --res 3 --frames 1", "bench --out", "bench --render --res 2"}) {
+          "gui --res 3 --frames 1", "bench --out", "bench --render --res 2", "render --out x.png --zoom 0"}) {
         CAPTURE(arguments);
         const Result result = runWithStderr(arguments);
         CHECK(result.exitCode != 0);
