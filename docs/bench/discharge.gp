@@ -1,8 +1,9 @@
-set terminal pngcairo size 800,400
+set terminal pngcairo size 800,500
 set output 'discharge.png'
 set title 'Hourglass discharge (mean of 10 steps)'
 set xlabel 'step'
 set ylabel 'grains per step'
 set yrange [0:*]
 set grid
-plot 'discharge.dat' using 1:2 with lines title 'discharge rate'
+set key right top
+plot 'discharge.dat' index 0 using 1:2 with linespoints title 'discharge rate'

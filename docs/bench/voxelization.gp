@@ -5,5 +5,5 @@ set xlabel 'ms (2 threads)'
 set ylabel '|relative volume error|'
 set logscale xy
 set grid
-set key right top
-plot 'voxelization.dat' index 0 with linespoints title 'sphere', '' index 0 using 1:2:3 with labels offset 1,0.7 notitle, '' index 1 with linespoints title 'hourglass', '' index 2 with linespoints title 'torus'
+set key left bottom
+plot 'voxelization.dat' index 0 using 1:2 with linespoints title 'sphere', '' index 0 using 1:2:3 with labels offset 1,0.7 notitle, '' index 1 using 1:2 with linespoints title 'hourglass', '' index 1 using 1:2:3 with labels offset 1,0.7 notitle, '' index 2 using 1:2 with linespoints title 'torus', '' index 2 using 1:2:3 with labels offset 1,0.7 notitle
