@@ -1,7 +1,7 @@
 // The application's own commands with a real GL context: what a frame shows after steps made
 // outside the running clock (single step, `render --steps`), rebuild requests during a build,
 // and the B benchmark leaving the user's scene as it was.
-#include "display_guard.hpp"
+#include "app_test_support.hpp"
 
 #include "application.hpp"
 
@@ -33,12 +33,7 @@ ApplicationOptions smallHourglass(int stepsBeforeStart) {
 }
 
 std::optional<Application> open(ApplicationOptions options) {
-    try {
-        return std::optional<Application>(std::in_place, std::move(options));
-    } catch (const WindowError& error) {
-        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): application not checked");
-        return std::nullopt;
-    }
+    return testing::openApplication(std::move(options), "application");
 }
 
 // Every grain moved by the last step is drawn exactly at its new cell's display point; returns

@@ -1,7 +1,8 @@
 // SPEC P2-P7 and R11 through the mouse path: cursor positions (projected column centres) go
 // into Application::handleCanvasPointer, as the window's mouse handling sends them, and the
 // grid shows exactly what the stroke should have done.
-#include "display_guard.hpp"
+#include "app_test_support.hpp"
+#include "support/released_columns.hpp"
 
 #include "application.hpp"
 
@@ -23,19 +24,7 @@ using sandcore::GridLevel;
 namespace {
 
 std::optional<Application> openCanvas(int resolution = 48) {
-    ApplicationOptions options;
-    options.window = {640, 480, false, false, "sandglass painting test"};
-    options.offscreen = true;
-    options.initial.showGui = false;
-    options.initial.scene.request.kind = sandcore::SceneKind::Canvas;
-    options.initial.scene.request.modelPath.clear();
-    options.initial.scene.request.resolution = resolution;
-    try {
-        return std::optional<Application>(std::in_place, std::move(options));
-    } catch (const WindowError& error) {
-        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): painting not checked");
-        return std::nullopt;
-    }
+    return testing::openApplication(testing::canvasOptions(640, 480, resolution, "sandglass painting test"), "painting");
 }
 
 // Mouse samples over column centres of the surface the settings pick: down, moves, up.
@@ -54,15 +43,7 @@ void stroke(Application& app, const std::vector<CanvasColumn>& columns, int step
     app.handleCanvasPointer({last.x, last.y, false, false, false});
 }
 
-std::set<std::pair<int, int>> releasedColumns(const sandcore::Scene& scene) {
-    std::set<std::pair<int, int>> columns;
-    const auto& upper = scene.grid(GridLevel::Upper);
-    const sandcore::Int3 s = upper.size();
-    for (int z = 0; z < s.z; ++z)
-        for (int x = 0; x < s.x; ++x)
-            if (upper.at(x, s.y - 1, z) >= 0) columns.insert({x, z});
-    return columns;
-}
+using support::releasedColumns;
 
 std::set<std::pair<int, int>> joined(const std::vector<CanvasColumn>& samples) {
     std::set<std::pair<int, int>> columns{{samples.front().x, samples.front().z}};

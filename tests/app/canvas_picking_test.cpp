@@ -1,7 +1,7 @@
 // SPEC P1: the integer id picker finds exactly the column under the cursor, for a canvas past
 // the thesis's 65k-cell limit, in several views and on both surfaces, through the same lookup
 // the mouse uses; the id image is drawn once per view and reused while the view stays.
-#include "display_guard.hpp"
+#include "app_test_support.hpp"
 
 #include "application.hpp"
 
@@ -22,19 +22,7 @@ namespace {
 constexpr int kWidth = 1280, kHeight = 800;
 
 std::optional<Application> openCanvas(int resolution) {
-    ApplicationOptions options;
-    options.window = {kWidth, kHeight, false, false, "sandglass picking test"};
-    options.offscreen = true;
-    options.initial.showGui = false;
-    options.initial.scene.request.kind = sandcore::SceneKind::Canvas;
-    options.initial.scene.request.modelPath.clear();
-    options.initial.scene.request.resolution = resolution;
-    try {
-        return std::optional<Application>(std::in_place, std::move(options));
-    } catch (const WindowError& error) {
-        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): picking not checked");
-        return std::nullopt;
-    }
+    return testing::openApplication(testing::canvasOptions(kWidth, kHeight, resolution, "sandglass picking test"), "picking");
 }
 
 glm::dvec2 toPixels(const CanvasView& view, const CanvasSurface& surface, double x, double z) {

@@ -1,6 +1,6 @@
 // SPEC P6 / V1: a grain's own colour shows in every render mode, lit or not; grains without
 // one keep the pale sand colours.
-#include "display_guard.hpp"
+#include "app_test_support.hpp"
 
 #include "application.hpp"
 
@@ -13,32 +13,16 @@ using namespace sandglass;
 
 namespace {
 
-struct Pixel {
-    int r, g, b;
-};
+using testing::Pixel;
 
-Pixel at(const RgbImage& image, int x, int y) {
-    const std::size_t i = (std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3;
-    return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
-}
+Pixel at(const RgbImage& image, int x, int y) { return testing::pixelAt(image, x, y); }
 
-// Opens a small canvas and pours a disc of red sand at the left and default sand at the right of a small canvas and
+// Opens a small canvas, pours a disc of red sand at the left and default sand at the right, and
 // lets it settle; the camera looks straight down.
 bool paintCanvas(std::optional<Application>& app) {
-    ApplicationOptions options;
-    options.window = {200, 200, false, false, "sandglass colour test"};
-    options.offscreen = true;
-    options.initial.showGui = false;
+    ApplicationOptions options = testing::canvasOptions(200, 200, 24, "sandglass colour test");
     options.initial.render.hull = false;
-    options.initial.scene.request.kind = sandcore::SceneKind::Canvas;
-    options.initial.scene.request.modelPath.clear();
-    options.initial.scene.request.resolution = 24;
-    try {
-        app.emplace(std::move(options));
-    } catch (const WindowError& error) {
-        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): colours not checked");
-        return false;
-    }
+    if (!testing::openApplicationInto(app, std::move(options), "colours")) return false;
     app->camera().setView(CameraView::Top);
     PaintingSettings& painting = app->state().painting;
     painting.brushRadius = 4;

@@ -1,6 +1,6 @@
 // SPEC V1, V3, V5, C3: every render mode, with and without light, puts sand where the grains
 // are and leaves the background elsewhere.
-#include "display_guard.hpp"
+#include "app_test_support.hpp"
 
 #include "application.hpp"
 
@@ -18,14 +18,9 @@ using namespace sandglass;
 
 namespace {
 
-struct Pixel {
-    int r, g, b;
-};
+using testing::Pixel;
 
-Pixel at(const RgbImage& image, int x, int y) {
-    const std::size_t i = (std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3;
-    return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
-}
+Pixel at(const RgbImage& image, int x, int y) { return testing::pixelAt(image, x, y); }
 
 // Sand is yellow: red and green clearly above blue, lit or not; the glass is bluish, the
 // backgrounds grey.
@@ -71,13 +66,8 @@ void checkMode(RenderMode mode, bool light, bool black) {
     CAPTURE(renderModeName(mode));
     CAPTURE(light);
     CAPTURE(black);
-    std::optional<Application> app;
-    try {
-        app.emplace(smallHourglass(mode, light, black));
-    } catch (const WindowError& error) {
-        testing::cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): drawing not checked");
-        return;
-    }
+    std::optional<Application> app = testing::openApplication(smallHourglass(mode, light, black), "drawing");
+    if (!app) return;
     app->renderFrame(0.0);
     const RgbImage image = app->captureFrame();
     REQUIRE(image.width == 160);

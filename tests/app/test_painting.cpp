@@ -3,6 +3,8 @@
 
 #include "sandcore/scenes.hpp"
 
+#include "support/released_columns.hpp"
+
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -15,16 +17,7 @@ using sandcore::GridLevel;
 namespace {
 sandcore::Scene smallCanvas() { return sandcore::makeCanvasScene({{16, 3, 16}, {16, 10, 16}}); }
 
-// Columns of the top row of the upper grid that hold a grain.
-std::set<std::pair<int, int>> releasedColumns(const sandcore::Scene& scene) {
-    std::set<std::pair<int, int>> columns;
-    const auto& upper = scene.grid(GridLevel::Upper);
-    const sandcore::Int3 s = upper.size();
-    for (int z = 0; z < s.z; ++z)
-        for (int x = 0; x < s.x; ++x)
-            if (upper.at(x, s.y - 1, z) >= 0) columns.insert({x, z});
-    return columns;
-}
+using support::releasedColumns;
 } // namespace
 
 TEST_CASE("a stroke releases grains exactly over the columns of its joined line") {
