@@ -1,6 +1,7 @@
 #include "simulation_bench.hpp"
 
 #include "app/cli/hex.hpp"
+#include "app/statistics.hpp"
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
 
@@ -10,13 +11,6 @@
 namespace sandbench {
 
 namespace {
-
-double medianOf(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
 
 DrainRun drain(int resolution, bool sleeping, int threads) {
     using Clock = std::chrono::steady_clock;
@@ -45,7 +39,7 @@ DrainRun drain(int resolution, bool sleeping, int threads) {
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     run.steps = std::int64_t(milliseconds.size());
-    run.medianMs = medianOf(milliseconds);
+    run.medianMs = sandglass::medianOf(milliseconds);
     run.stepsPerSecond = seconds > 0 ? double(run.steps) / seconds : 0.0;
     run.conserved = scene.grid(sandcore::GridLevel::Upper).countGrains() +
                         scene.grid(sandcore::GridLevel::Lower).countGrains() ==

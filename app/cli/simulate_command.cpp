@@ -3,6 +3,7 @@
 #include "cli/commands.hpp"
 #include "cli/hex.hpp"
 #include "scene_request.hpp"
+#include "statistics.hpp"
 
 #include "sandcore/scenes.hpp"
 
@@ -32,13 +33,6 @@ struct SimulateOptions {
     std::int64_t pour = 0;
     bool json = false;
 };
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
 
 int runSimulate(SimulateOptions& options) {
     using Clock = std::chrono::steady_clock;
@@ -91,7 +85,7 @@ int runSimulate(SimulateOptions& options) {
         out["threads"] = options.threads;
         out["settled"] = scene.settled();
         out["sleeping"] = !options.fullSweep;
-        out["median_ms_per_step"] = median(stepMilliseconds);
+        out["median_ms_per_step"] = medianOf(stepMilliseconds);
         out["grains_upper"] = scene.counters().grainsUpper;
         out["grains_lower"] = scene.counters().grainsLower;
         std::cout << out.dump() << "\n";
@@ -103,7 +97,7 @@ int runSimulate(SimulateOptions& options) {
     std::printf("%lld steps, %lld moves, %s\n", (long long)done, (long long)moves,
                 scene.settled() ? "settled" : "still moving");
     std::printf("%.3f s, %.1f steps/s, median %.3f ms per step, %d thread(s), %s\n", seconds, stepsPerSecond,
-                median(stepMilliseconds), options.threads, options.fullSweep ? "full sweep" : "sleeping grains skipped");
+                medianOf(stepMilliseconds), options.threads, options.fullSweep ? "full sweep" : "sleeping grains skipped");
     std::printf("state hash %s\n", hash.c_str());
     return 0;
 }
