@@ -79,7 +79,8 @@ bool writeLinePlot(const std::filesystem::path& folder, const LinePlot& plot) {
     writeText(folder / (plot.name + ".dat"), data);
     std::string script = "set terminal pngcairo size 800,500\nset output '" + plot.name + ".png'\n";
     script += "set title '" + plot.title + "'\nset xlabel '" + plot.xLabel + "'\nset ylabel '" + plot.yLabel + "'\n";
-    script += std::string(plot.logScale ? "set logscale xy\n" : "set yrange [0:*]\n") + "set grid\nset key " +
+    script += std::string(plot.logScale ? "set logscale xy\nset format x '%g'\nset format y '%g'\n" : "set yrange [0:*]\n") +
+              "set grid\nset key " +
               plot.keyPosition + "\n" + commands + "\n";
     return runGnuplot(folder / (plot.name + ".gp"), script);
 }
