@@ -82,6 +82,7 @@ struct AppState {
     bool simulationRunning = false; ///< thesis default: simulation off
     double stepsPerSecond = 30.0;   ///< flow speed (R9)
     bool showGui = true;            ///< Space hides the panels
+    float panelCoverage = 0.0f;     ///< share of the window's width the panel covers from the left edge
     std::string glRenderer;         ///< GL_RENDERER, for the statistics panel
     std::string glVersion;          ///< GL_VERSION
     std::string statusLine;         ///< the last message (error or confirmation) for the user

@@ -178,6 +178,7 @@ void Application::renderFrame(double elapsedSeconds) {
     imgui_.newFrame();
     handleMouse();
     if (state_.showGui) drawPanels(state_);
+    camera_.setLensShift(state_.showGui ? state_.panelCoverage : 0.0f);
     serveCommands();
     stepSimulation(elapsedSeconds);
     updateDraftPlacement();

@@ -59,7 +59,11 @@ glm::mat4 OrbitCamera::view() const { return glm::lookAt(position(), target_, up
 glm::mat4 OrbitCamera::projection(float aspect) const {
     const float nearPlane = std::max(distance_ - 2.0f * radius_, 0.01f * radius_);
     const float farPlane = distance_ + 2.0f * radius_;
-    return glm::perspective(fovY_, std::max(aspect, 1e-3f), nearPlane, farPlane);
+    glm::mat4 projection = glm::perspective(fovY_, std::max(aspect, 1e-3f), nearPlane, farPlane);
+    // A shift of the whole image in normalised device coordinates (2 = the target's width):
+    // x_ndc += share, the same for every depth, so nothing turns or scales.
+    projection[2][0] -= lensShift_; // clip x += share * w, and w = -z_eye for a perspective projection
+    return projection;
 }
 
 } // namespace sandglass

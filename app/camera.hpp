@@ -31,7 +31,11 @@ public:
     glm::vec3 right() const;                       ///< unit screen-right in world space
     glm::vec3 up() const;                          ///< unit screen-up in world space
     glm::mat4 view() const;                        ///< world to eye
-    glm::mat4 projection(float aspect) const;      ///< eye to clip for width/height = aspect
+    glm::mat4 projection(float aspect) const;      ///< eye to clip for width/height = aspect, lens shift included
+    /// Moves the image right by `share` of the target's width (0..1) without turning the camera,
+    /// so the scene centres in the part a panel on the left leaves free.
+    void setLensShift(float share) { lensShift_ = share; }
+    float lensShift() const { return lensShift_; } ///< share of the target's width
     float verticalFieldOfView() const { return fovY_; } ///< radians
 
 private:
@@ -40,6 +44,7 @@ private:
     float yaw_ = 0.6f, pitch_ = 0.35f, distance_ = 10.0f, homeDistance_ = 10.0f;
     float radius_ = 1.0f;
     float fovY_ = 0.6981f; // 40 degrees
+    float lensShift_ = 0.0f;
 };
 
 } // namespace sandglass

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace sandglass {
@@ -11,7 +12,13 @@ void drawPanels(AppState& state) {
     ImGui::SetNextWindowPos(ImVec2(10.0f * scale, 10.0f * scale), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(330.0f * scale, 0.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.88f);
-    if (ImGui::Begin("sandglass", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    const bool open = ImGui::Begin("sandglass", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    // The application centres the scene in the rest of the window.
+    const float displayWidth = ImGui::GetIO().DisplaySize.x;
+    state.panelCoverage = open && displayWidth > 0.0f
+                              ? std::clamp((ImGui::GetWindowPos().x + ImGui::GetWindowSize().x) / displayWidth, 0.0f, 0.6f)
+                              : 0.0f;
+    if (open) {
         if (ImGui::CollapsingHeader("Control", ImGuiTreeNodeFlags_DefaultOpen)) drawControlSection(state);
         if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) drawDisplaySection(state);
         if (ImGui::CollapsingHeader("Scene")) drawSceneSection(state);

@@ -158,3 +158,22 @@ TEST_CASE("picking: cursor coordinates scale to framebuffer pixels on HiDPI scre
     CHECK(x == 799);
     CHECK(y == 599);
 }
+
+TEST_CASE("picking: stays exact when the image is shifted beside the panel (lens shift)") {
+    if (!testing::requireDisplay("picking")) return;
+    std::optional<Application> app = openCanvas(64);
+    if (!app) return;
+    app->camera().setView(CameraView::Top);
+    const CanvasView plain = app->canvasView();
+    const CanvasSurface surface = canvasSurface(app->scene(), PaintTarget::Top, plain.cellSize);
+    const glm::dvec2 before = toPixels(plain, surface, 32.0, 32.0);
+    app->camera().setLensShift(0.3f);
+    const CanvasView shifted = app->canvasView();
+    const glm::dvec2 after = toPixels(shifted, surface, 32.0, 32.0);
+    // The canvas centre moves right by 0.3 of half the width, and not up or down.
+    CHECK(after.x - before.x == doctest::Approx(0.15 * plain.framebufferWidth).epsilon(0.01));
+    CHECK(after.y == doctest::Approx(before.y).epsilon(0.001));
+    const PickCounts counts = checkView(*app, PaintTarget::Top);
+    CHECK(counts.wrong == 0);
+    CHECK(counts.resolvable > 1000);
+}
