@@ -2,35 +2,25 @@
 
 namespace sandglass {
 
-const char* renderModeName(RenderMode mode) {
-    switch (mode) {
-    case RenderMode::Points: return "points";
-    case RenderMode::Sprites: return "sprites";
-    case RenderMode::Billboards: return "billboards";
-    case RenderMode::PseudoBillboards: return "pseudo";
-    }
-    return "points";
-}
+namespace {
+// Every name of a mode, in the order of RenderMode.
+struct ModeNames {
+    const char* name;      // command line
+    const char* shortName; // thesis §4.3 table
+    const char* label;     // panel
+};
+constexpr ModeNames kModeNames[] = {
+    {"points", "P", "Points"},
+    {"sprites", "S", "Sprites"},
+    {"billboards", "BB", "Billboards"},
+    {"pseudo", "PBB", "Pseudo-billboards"},
+};
+const ModeNames& namesOf(RenderMode mode) { return kModeNames[static_cast<int>(mode)]; }
+} // namespace
 
-const char* renderModeShortName(RenderMode mode) {
-    switch (mode) {
-    case RenderMode::Points: return "P";
-    case RenderMode::Sprites: return "S";
-    case RenderMode::Billboards: return "BB";
-    case RenderMode::PseudoBillboards: return "PBB";
-    }
-    return "P";
-}
-
-const char* renderModeLabel(RenderMode mode) {
-    switch (mode) {
-    case RenderMode::Points: return "Points";
-    case RenderMode::Sprites: return "Sprites";
-    case RenderMode::Billboards: return "Billboards";
-    case RenderMode::PseudoBillboards: return "Pseudo-billboards";
-    }
-    return "Points";
-}
+const char* renderModeName(RenderMode mode) { return namesOf(mode).name; }
+const char* renderModeShortName(RenderMode mode) { return namesOf(mode).shortName; }
+const char* renderModeLabel(RenderMode mode) { return namesOf(mode).label; }
 
 std::optional<RenderMode> parseRenderMode(std::string_view name) {
     for (RenderMode mode : kRenderModes)
