@@ -1,9 +1,9 @@
 // The application's own commands with a real GL context: what a frame shows after steps made
 // outside the running clock (single step, `render --steps`), rebuild requests during a build,
 // and the B benchmark leaving the user's scene as it was.
-#include "app_test_support.hpp"
+#include "support/app_test_support.hpp"
 
-#include "application.hpp"
+#include "app/application.hpp"
 
 #include "sandcore/display_positions.hpp"
 

@@ -1,10 +1,10 @@
 // SPEC P2-P7 and R11 through the mouse path: cursor positions (projected column centres) go
 // into Application::handleCanvasPointer, as the window's mouse handling sends them, and the
 // grid shows exactly what the stroke should have done.
-#include "app_test_support.hpp"
+#include "support/app_test_support.hpp"
 #include "support/released_columns.hpp"
 
-#include "application.hpp"
+#include "app/application.hpp"
 
 #include "sandcore/cell_grid.hpp"
 

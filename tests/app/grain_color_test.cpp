@@ -1,8 +1,8 @@
 // SPEC P6 / V1: a grain's own colour shows in every render mode, lit or not; grains without
 // one keep the pale sand colours.
-#include "app_test_support.hpp"
+#include "support/app_test_support.hpp"
 
-#include "application.hpp"
+#include "app/application.hpp"
 
 #include <doctest/doctest.h>
 

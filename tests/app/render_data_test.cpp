@@ -1,10 +1,10 @@
 // The data the GPU draws from: Scribble patterns (V2), packed normals, the glass hull (V6) and
 // the benchmark's table form (B1). No GL needed.
-#include "frame_benchmark.hpp"
-#include "render/grain_instances.hpp"
-#include "render/hull_mesh.hpp"
-#include "render/sand_patterns.hpp"
-#include "scene_request.hpp"
+#include "app/frame_benchmark.hpp"
+#include "view/render/grain_instances.hpp"
+#include "view/render/hull_mesh.hpp"
+#include "view/render/sand_patterns.hpp"
+#include "scene/scene_request.hpp"
 
 #include <doctest/doctest.h>
 

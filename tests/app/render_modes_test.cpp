@@ -1,8 +1,8 @@
 // SPEC V1, V3, V5, C3: every render mode, with and without light, puts sand where the grains
 // are and leaves the background elsewhere.
-#include "app_test_support.hpp"
+#include "support/app_test_support.hpp"
 
-#include "application.hpp"
+#include "app/application.hpp"
 
 #include "sandcore/display_positions.hpp"
 

@@ -1,5 +1,5 @@
 // SPEC G1: the window opens, runs 200 frames with the simulation on and closes cleanly.
-#include "display_guard.hpp"
+#include "support/display_guard.hpp"
 
 #include <doctest/doctest.h>
 

@@ -1,7 +1,7 @@
 // SPEC P5 at the command line: --draft loads a draft (a bad one is one line on stderr and the
 // canvas still opens), --paint-demo pours a drawing over it through the mouse path.
-#include "app/display_guard.hpp"
-#include "run_process.hpp"
+#include "support/display_guard.hpp"
+#include "support/run_process.hpp"
 
 #include <doctest/doctest.h>
 

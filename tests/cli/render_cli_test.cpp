@@ -1,6 +1,6 @@
 // SPEC C3 and §6: bad input to render, gui and bench gives one line on stderr and a non-zero code.
-#include "app/display_guard.hpp"
-#include "run_process.hpp"
+#include "support/display_guard.hpp"
+#include "support/run_process.hpp"
 
 #include <doctest/doctest.h>
 

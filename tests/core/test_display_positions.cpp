@@ -1,5 +1,5 @@
 // R8: smooth display positions without drift, and jitter.
-#include "scene_fixtures.hpp"
+#include "support/scene_fixtures.hpp"
 
 #include "sandcore/display_positions.hpp"
 #include "sandcore/scenes.hpp"

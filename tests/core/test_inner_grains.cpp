@@ -1,5 +1,5 @@
 // R13: inner grains.
-#include "scene_fixtures.hpp"
+#include "support/scene_fixtures.hpp"
 
 #include "sandcore/inner_grains.hpp"
 

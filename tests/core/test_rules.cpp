@@ -1,5 +1,5 @@
 // R2/R3/R4 on small hand-built grids with exact expected contents.
-#include "scene_fixtures.hpp"
+#include "support/scene_fixtures.hpp"
 
 #include "sandcore/scenes.hpp"
 

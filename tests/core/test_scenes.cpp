@@ -1,5 +1,5 @@
 // R10 scenes, R11 obstacles, R14 counters and editing.
-#include "scene_fixtures.hpp"
+#include "support/scene_fixtures.hpp"
 
 #include "sandcore/hourglass_split.hpp"
 #include "sandcore/procedural_shapes.hpp"

@@ -1,0 +1,64 @@
+#pragma once
+// SPEC B1, thesis §4.3 "Zeitmessungen": frames per second of every render mode with light off
+// and on, inner grains drawn or skipped, 1 and 20 grains per cell, simulation and GUI on,
+// written as the thesis's table (benchmark.txt) and as CSV (benchmark.csv).
+
+#include "view/render/render_settings.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace sandglass {
+
+/// One row's display configuration.
+struct BenchmarkCase {
+    RenderMode mode = RenderMode::Points; ///< render mode
+    int grainsPerCell = 1;                ///< sub-grains per cell (the thesis's PpZ)
+    bool lighting = false;                ///< light on
+    bool innerGrains = true;              ///< inner grains drawn
+};
+
+/// The thesis's rows for one scene: inner grains drawn, then skipped; in each, every mode
+/// for (1 grain, no light), (20 grains, no light), (20 grains, light), then the remaining mixes.
+std::vector<BenchmarkCase> thesisBenchmarkCases();
+
+/// One measured row.
+struct BenchmarkRow {
+    BenchmarkCase setup;            ///< what was drawn
+    bool simulation = true;         ///< simulation running (the thesis's Sim)
+    bool gui = true;                ///< panels drawn (the thesis's Gui)
+    std::int64_t filledCells = 0;   ///< grains in the scene (the thesis's gZ)
+    int frames = 0;                 ///< frames timed
+    double seconds = 0.0;           ///< wall time of those frames
+    double framesPerSecond() const { return seconds > 0.0 ? double(frames) / seconds : 0.0; } ///< FPS
+};
+
+/// The rows of one scene, with what they ran on.
+struct BenchmarkReport {
+    std::string scene;        ///< e.g. "hourglass, resolution 38"
+    std::string glRenderer;   ///< GL_RENDERER
+    std::string glVersion;    ///< GL_VERSION
+    int width = 0, height = 0; ///< framebuffer, pixels
+    std::vector<BenchmarkRow> rows; ///< in thesisBenchmarkCases order
+};
+
+/// How long each row runs: at least minFrames, then until maxFrames or maxSeconds.
+struct BenchmarkTiming {
+    int minFrames = 3;         ///< always timed, however slow
+    int maxFrames = 120;       ///< stop after this many frames
+    double maxSeconds = 2.0;   ///< or after this much wall time (after minFrames)
+    int warmupFrames = 2;      ///< untimed frames after switching configuration
+};
+
+/// The thesis's table form, grouped by inner grains drawn / skipped.
+void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& reports, const std::string& command);
+/// One line per row: scene,gl_renderer,gl_version,width,height,sim,gui,mode,grains_per_cell,filled_cells,light,inner,frames,seconds,fps.
+void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& reports);
+/// Writes folder/benchmark.txt and folder/benchmark.csv (creating the folder); throws std::runtime_error.
+void writeBenchmarkFiles(const std::filesystem::path& folder, const std::vector<BenchmarkReport>& reports,
+                         const std::string& command);
+
+} // namespace sandglass

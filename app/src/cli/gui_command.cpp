@@ -1,0 +1,76 @@
+// SPEC §6: `sandglass gui` (and `sandglass` alone) opens the window on a scene.
+#include "app/cli/commands.hpp"
+#include "app/cli/view_options.hpp"
+#include "app/paint_demo.hpp"
+
+#include <cstdio>
+#include <memory>
+
+namespace sandglass {
+
+namespace {
+
+struct GuiOptions {
+    ViewOptions view;
+    bool run = false;
+    int frames = 0;
+    std::string screenshot;
+    std::string benchmarkFolder = ".";
+    std::string draft;
+    int paintDemoPasses = 0;
+};
+
+int runGui(const GuiOptions& options) {
+    ApplicationOptions settings = applicationOptionsFrom(options.view, 1280, 800);
+    settings.initial.simulationRunning = options.run;
+    settings.frameLimit = options.frames;
+    settings.screenshotFile = options.screenshot;
+    settings.benchmarkFolder = options.benchmarkFolder;
+    Application application(std::move(settings));
+    // A bad draft is reported and the canvas opens without one (SPEC P5, §8).
+    if (!options.draft.empty() && !application.loadDraft(options.draft))
+        std::fprintf(stderr, "sandglass: %s\n", application.state().statusLine.c_str());
+    if (options.paintDemoPasses > 0)
+        std::printf("paint demo: %lld grains poured\n", (long long)paintDraftDemo(application, options.paintDemoPasses));
+    const std::int64_t grainsAtStart = application.scene().grainCount();
+    const int exitCode = application.run();
+    if (options.frames > 0)
+        std::printf("frames %lld, steps %llu, grains %lld (at start %lld)\n", (long long)application.framesDrawn(),
+                    (unsigned long long)application.scene().counters().stepsDone,
+                    (long long)application.scene().grainCount(), (long long)grainsAtStart);
+    return exitCode;
+}
+
+} // namespace
+
+void addGuiCommand(CLI::App& app, int& exitCode) {
+    auto options = std::make_shared<GuiOptions>();
+    CLI::App* cmd = app.add_subcommand("gui", "Open the window on a scene (the default without a subcommand)");
+    addViewOptions(*cmd, options->view);
+    cmd->add_flag("--run", options->run, "start with the simulation on (the thesis starts with it off)");
+    cmd->add_option("--frames", options->frames, "close after this many frames (for tests and screenshots)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--screenshot", options->screenshot, "with --frames: save the last frame as PNG");
+    cmd->add_option("--benchmark-dir", options->benchmarkFolder, "where the B key writes benchmark.txt and .csv")
+        ->capture_default_str();
+    cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image (P5)");
+    cmd->add_option("--paint-demo", options->paintDemoPasses,
+                    "canvas with --draft: pour this many layers of sand over the draft, colour from draft")
+        ->check(CLI::Range(1, 50));
+    cmd->callback([options, &exitCode] {
+        if (options->paintDemoPasses > 0 && (options->draft.empty() || options->view.scene != "canvas"))
+            throw std::invalid_argument("--paint-demo needs --scene canvas and --draft FILE");
+        if (!options->screenshot.empty() && options->frames == 0)
+            throw std::invalid_argument("--screenshot needs --frames N (the key P saves screenshots interactively)");
+        exitCode = runGui(*options);
+    });
+}
+
+int runDefaultWindow() {
+    // The product's first impression: the default hourglass, already draining.
+    GuiOptions options;
+    options.run = true;
+    return runGui(options);
+}
+
+} // namespace sandglass

@@ -1,0 +1,80 @@
+#include "app/frame_benchmark.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <ostream>
+#include <stdexcept>
+
+namespace sandglass {
+
+std::vector<BenchmarkCase> thesisBenchmarkCases() {
+    std::vector<BenchmarkCase> cases;
+    for (bool inner : {true, false})
+        for (auto [perCell, light] : {std::pair{1, false}, std::pair{20, false}, std::pair{20, true}, std::pair{1, true}})
+            for (RenderMode mode : kRenderModes) cases.push_back({mode, perCell, light, inner});
+    return cases;
+}
+
+namespace {
+const char* onOff(bool value) { return value ? "on" : "off"; }
+
+void writeRow(std::ostream& out, const BenchmarkRow& row) {
+    char fps[32];
+    std::snprintf(fps, sizeof fps, "%.1f", row.framesPerSecond());
+    out << onOff(row.simulation) << '\t' << onOff(row.gui) << '\t' << renderModeShortName(row.setup.mode) << '\t'
+        << row.setup.grainsPerCell << '\t' << row.filledCells << '\t' << onOff(row.setup.lighting) << '\t'
+        << (row.setup.innerGrains ? "yes" : "no") << '\t' << fps << '\n';
+}
+} // namespace
+
+void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& reports, const std::string& command) {
+    out << "sandglass frame-rate benchmark (SPEC B1, the table form of thesis section 4.3)\n";
+    if (!command.empty()) out << "command: " << command << "\n";
+    for (const BenchmarkReport& report : reports) {
+        out << "\nScene: " << report.scene << "\n";
+        out << "GPU (GL_RENDERER): " << report.glRenderer << "\n";
+        out << "Driver (GL_VERSION): " << report.glVersion << "\n";
+        out << "Framebuffer: " << report.width << "x" << report.height << " pixels\n";
+        for (bool inner : {true, false}) {
+            out << (inner ? "\nWith inner grains:\n\n" : "\nWithout inner grains:\n\n");
+            out << "Sim\tGui\tMode\tPpC\tfilled\tLight\tinner\tFPS\n";
+            for (const BenchmarkRow& row : report.rows)
+                if (row.setup.innerGrains == inner) writeRow(out, row);
+        }
+    }
+    out << "\nColumns: Sim = simulation running, Gui = panels drawn, Mode = P (points), S (sprites),\n"
+           "BB (billboards), PBB (pseudo-billboards), PpC = grains drawn per cell, filled = filled cells,\n"
+           "Light = lighting from estimated normals, inner = inner grains drawn, FPS = frames per second.\n";
+}
+
+void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& reports) {
+    out << "scene,gl_renderer,gl_version,width,height,sim,gui,mode,grains_per_cell,filled_cells,light,inner,frames,"
+           "seconds,fps\n";
+    auto quoted = [](const std::string& text) {
+        std::string result = "\"";
+        for (char c : text) result += c == '"' ? std::string("\"\"") : std::string(1, c);
+        return result + "\"";
+    };
+    for (const BenchmarkReport& report : reports)
+        for (const BenchmarkRow& row : report.rows) {
+            char numbers[96];
+            std::snprintf(numbers, sizeof numbers, "%d,%.4f,%.2f", row.frames, row.seconds, row.framesPerSecond());
+            out << quoted(report.scene) << ',' << quoted(report.glRenderer) << ',' << quoted(report.glVersion) << ','
+                << report.width << ',' << report.height << ',' << onOff(row.simulation) << ',' << onOff(row.gui) << ','
+                << renderModeName(row.setup.mode) << ',' << row.setup.grainsPerCell << ',' << row.filledCells << ','
+                << onOff(row.setup.lighting) << ',' << (row.setup.innerGrains ? "yes" : "no") << ',' << numbers << '\n';
+        }
+}
+
+void writeBenchmarkFiles(const std::filesystem::path& folder, const std::vector<BenchmarkReport>& reports,
+                         const std::string& command) {
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) throw std::runtime_error("cannot create " + folder.string() + ": " + error.message());
+    std::ofstream text(folder / "benchmark.txt"), csv(folder / "benchmark.csv");
+    if (!text || !csv) throw std::runtime_error("cannot write benchmark files in " + folder.string());
+    writeBenchmarkText(text, reports, command);
+    writeBenchmarkCsv(csv, reports);
+}
+
+} // namespace sandglass

@@ -1,0 +1,28 @@
+#pragma once
+// The ImGui panels (SPEC G1, G2): every control of thesis §3.7 with its default, plus scene,
+// model, resolution, sizes, flow speed, jitter, seed and statistics. They read and change the
+// application state and raise commands; they own no state and never touch the grids.
+
+#include "view/app_state.hpp"
+
+namespace sandglass {
+
+/// Builds the panels for this frame (between ImGui::NewFrame and ImGui::Render).
+void drawPanels(AppState& state);
+
+/// Thesis §3.7 "Kontrolle": simulation on/off, reset, single step, exit.
+void drawControlSection(AppState& state);
+/// Thesis §3.7 "Darstellung": grains per cell, background, mode, lighting, inner grains; sizes, jitter, hull.
+void drawDisplaySection(AppState& state);
+/// SPEC G2: scene kind, shape or model file, resolution, seed, threads, rebuild.
+void drawSceneSection(AppState& state);
+/// SPEC S2, S3, S5 (inside the scene section): robust inside test, stretch, noNoise threshold,
+/// upper-bulb carving; each change raises a rebuild.
+void drawModelOptions(AppState& state);
+/// Thesis §3.7 "Zeichnen": draw/erase, source/target, thick/thin, draft (canvas only); brush,
+/// colour, colour from draft, draft file, undo and obstacles (SPEC P3, P5-P7, G2).
+void drawPaintingSection(AppState& state);
+/// SPEC G2 and V7: grains, moving grains, steps/s, ms per step, ms per frame, frame-time plot.
+void drawStatisticsSection(AppState& state);
+
+} // namespace sandglass

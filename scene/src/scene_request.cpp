@@ -1,0 +1,153 @@
+#include "scene/scene_request.hpp"
+
+#include "scene/mesh_loader.hpp"
+
+#include "sandcore/mask_cleanup.hpp"
+#include "sandcore/procedural_shapes.hpp"
+#include "sandcore/scenes.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+namespace sandglass {
+
+using sandcore::SceneKind;
+
+SceneKind parseSceneKind(std::string_view name) {
+    if (name == "hourglass") return SceneKind::Hourglass;
+    if (name == "sculpture") return SceneKind::Sculpture;
+    if (name == "canvas") return SceneKind::Canvas;
+    throw std::invalid_argument("unknown scene '" + std::string(name) + "' (hourglass, sculpture or canvas)");
+}
+
+const char* sceneKindName(SceneKind kind) {
+    switch (kind) {
+    case SceneKind::Hourglass: return "hourglass";
+    case SceneKind::Sculpture: return "sculpture";
+    case SceneKind::Canvas: return "canvas";
+    }
+    return "hourglass";
+}
+
+void requireKnownShape(std::string_view shape) {
+    if (shape != "sphere" && shape != "cube" && shape != "hourglass")
+        throw std::invalid_argument("unknown shape '" + std::string(shape) + "' (sphere, cube or hourglass)");
+}
+
+sandcore::InsideMask makeProceduralMask(std::string_view shape, int resolution, float neckRadius) {
+    requireKnownShape(shape);
+    if (shape == "sphere") return sandcore::makeSphereMask(resolution);
+    if (shape == "cube") return sandcore::makeCubeMask(resolution);
+    if (shape == "hourglass") {
+        sandcore::HourglassShape hourglass;
+        hourglass.height = resolution;
+        hourglass.neckRadius = neckRadius > 0.0f ? neckRadius : sandcore::defaultNeckRadius(resolution);
+        return sandcore::makeHourglassMask(hourglass);
+    }
+    throw std::invalid_argument("unknown shape '" + std::string(shape) + "' (sphere, cube or hourglass)");
+}
+
+std::string defaultModelPath() { return std::string(SANDGLASS_SOURCE_DIR) + "/models/hourglass.obj"; }
+
+std::string defaultModelFor(SceneKind kind) {
+    switch (kind) {
+    case SceneKind::Hourglass: return defaultModelPath();
+    case SceneKind::Sculpture: return std::string(SANDGLASS_SOURCE_DIR) + "/models/snowman.obj";
+    case SceneKind::Canvas: return {};
+    }
+    return {};
+}
+
+int defaultResolution(SceneKind kind) { return kind == SceneKind::Canvas ? 60 : 64; }
+
+namespace {
+
+std::string gibibytes(std::uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(1ull << 30));
+    return text;
+}
+
+// S1 for scenes without a model file: refuse before allocating what memory cannot hold.
+void requireMemory(const std::string& what, int resolution, std::uint64_t needed, std::uint64_t memoryLimit) {
+    const std::uint64_t limit = memoryLimit != 0 ? memoryLimit : availableMemoryBytes();
+    if (limit != 0 && needed > limit)
+        throw std::invalid_argument(what + " too large for memory at resolution " + std::to_string(resolution) +
+                                    ": it needs about " + gibibytes(needed) + ", " + gibibytes(limit) +
+                                    " available; choose a lower resolution");
+}
+
+sandcore::Int3 proceduralMaskSize(std::string_view shape, int resolution) {
+    if (shape == "hourglass") return sandcore::hourglassMaskSize({resolution, 1.0f, 0.0f});
+    return {resolution, resolution, resolution};
+}
+
+} // namespace
+
+void requireNoShapeForCanvas(const SceneRequest& request) {
+    if (request.kind == SceneKind::Canvas && (!request.modelPath.empty() || !request.shape.empty()))
+        throw std::invalid_argument("the canvas takes no model or shape (they are for the hourglass and the sculpture)");
+}
+
+BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::StepSettings& step) {
+    const int resolution = request.resolution != 0 ? request.resolution : defaultResolution(request.kind);
+    if (resolution < 8) throw std::invalid_argument("resolution must be at least 8 cells, got " + std::to_string(resolution));
+    if (request.kind == SceneKind::Canvas) {
+        sandcore::CanvasSettings canvas;
+        canvas.upperSize = {resolution, std::max(2, resolution / 6), resolution};
+        canvas.lowerSize = {resolution, std::max(2, resolution * 2 / 3), resolution};
+        const auto cells = std::uint64_t(resolution) * std::uint64_t(resolution) *
+                           std::uint64_t(canvas.upperSize.y + canvas.lowerSize.y);
+        sandcore::validateGridSize(canvas.lowerSize);
+        // Layout and live grid (4 bytes each) per cell, and room for the sand a user pours.
+        requireMemory("the canvas is", resolution, cells * 12, request.memoryLimit);
+        return {sandcore::makeCanvasScene(canvas, step), std::nullopt, 0};
+    }
+    const bool hourglass = request.kind == SceneKind::Hourglass;
+    sandcore::HourglassSettings settings;
+    settings.fillFraction = request.fillFraction;
+    settings.drainCompletely = request.drainCompletely;
+    if (request.modelPath.empty()) {
+        const std::string shape = !request.shape.empty() ? request.shape : hourglass ? "hourglass" : "sphere";
+        requireKnownShape(shape);
+        const sandcore::Int3 size = proceduralMaskSize(shape, resolution);
+        sandcore::validateGridSize(size);
+        requireMemory("the " + shape + " is", resolution,
+                      estimateModelBytes(hourglass ? ModelUse::Hourglass : ModelUse::Sculpture, size), request.memoryLimit);
+        const sandcore::InsideMask mask = makeProceduralMask(shape, resolution, request.neckRadius);
+        if (!hourglass) return {sandcore::makeSculptureScene(mask, step), std::nullopt, 0};
+        return {sandcore::makeHourglassScene(mask, settings, step), std::nullopt, 0};
+    }
+    if (request.noiseThreshold > 5)
+        throw std::invalid_argument("noise threshold must lie in -1..5, got " + std::to_string(request.noiseThreshold));
+    sandcore::VoxelizeSettings voxelize;
+    voxelize.resolution = resolution;
+    voxelize.stretch = request.stretch;
+    voxelize.robust = request.robust;
+    voxelize.threads = std::max(1, step.threads);
+    ModelVoxelization model = voxelizeModelFile(request.modelPath, voxelize,
+                                                hourglass ? ModelUse::Hourglass : ModelUse::Sculpture,
+                                                request.memoryLimit);
+    sandcore::InsideMask mask = model.voxels.mask;
+    // thesis §3.4 noNoise: single cells and spikes left by discretisation; the hourglass split then
+    // carves the upper bulb with noSharpEdges (makeHourglassScene).
+    const std::int64_t removed = request.noiseThreshold >= 0 ? sandcore::removeNoise(mask, request.noiseThreshold) : 0;
+    if (mask.countInside() == 0)
+        throw ModelError(request.modelPath, "no cell lies inside the model at resolution " +
+                                                std::to_string(resolution) +
+                                                (model.voxels.closedness.closed ? "" : " (the mesh is open; try --robust)"));
+    try {
+        sandcore::Scene scene = hourglass ? sandcore::makeHourglassScene(mask, settings, step)
+                                          : sandcore::makeSculptureScene(mask, step);
+        return {std::move(scene), std::move(model), removed};
+    } catch (const std::invalid_argument& e) {
+        throw ModelError(request.modelPath, e.what());
+    }
+}
+
+sandcore::Scene buildScene(const SceneRequest& request, const sandcore::StepSettings& step) {
+    return std::move(buildSceneWithReport(request, step).scene);
+}
+
+} // namespace sandglass

@@ -1,0 +1,61 @@
+#pragma once
+// What the window tests share: opening an offscreen Application (or saying why not), canvas
+// options, and reading pixels of a captured frame.
+
+#include "support/display_guard.hpp"
+
+#include "app/application.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace sandglass::testing {
+
+/// An Application with these options, or nothing when no OpenGL 3.3 context can be made
+/// (reported through cannotDraw: a failure in CI); `what` names what then goes unchecked.
+inline std::optional<Application> openApplication(ApplicationOptions options, std::string_view what) {
+    try {
+        return std::optional<Application>(std::in_place, std::move(options));
+    } catch (const WindowError& error) {
+        cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): " + std::string(what) + " not checked");
+        return std::nullopt;
+    }
+}
+
+/// As openApplication, into an existing optional (an Application cannot be moved); false when
+/// no context could be made.
+inline bool openApplicationInto(std::optional<Application>& app, ApplicationOptions options, std::string_view what) {
+    try {
+        app.emplace(std::move(options));
+        return true;
+    } catch (const WindowError& error) {
+        cannotDraw("no OpenGL 3.3 context (" + std::string(error.what()) + "): " + std::string(what) + " not checked");
+        return false;
+    }
+}
+
+/// A hidden, offscreen window of width x height pixels on an empty canvas, panels off.
+inline ApplicationOptions canvasOptions(int width, int height, int resolution, const char* title) {
+    ApplicationOptions options;
+    options.window = {width, height, false, false, title};
+    options.offscreen = true;
+    options.initial.showGui = false;
+    options.initial.scene.request.kind = sandcore::SceneKind::Canvas;
+    options.initial.scene.request.modelPath.clear();
+    options.initial.scene.request.resolution = resolution;
+    return options;
+}
+
+/// One pixel of a captured frame, 0..255 per channel.
+struct Pixel {
+    int r, g, b;
+};
+
+/// The pixel at (x, y) of a frame, y from the top row.
+inline Pixel pixelAt(const RgbImage& image, int x, int y) {
+    const std::size_t i = (std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3;
+    return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
+}
+
+} // namespace sandglass::testing

@@ -1,0 +1,94 @@
+#pragma once
+// Everything the panels show and change (SPEC G1, G2). The panels read and write this struct
+// and raise command flags; the application carries the commands out after the UI is built.
+// Nothing here points into the simulation's grids.
+
+#include "view/render/render_settings.hpp"
+#include "scene/scene_request.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sandglass {
+
+/// Which scene to build and how its steps run.
+struct SceneSettings {
+    SceneRequest request;        ///< scene kind, model file or procedural shape, resolution, fill
+    std::uint64_t seed = 1;      ///< R3 seed of the slip randomness
+    int threads = 1;             ///< R6 worker threads (the result does not depend on it)
+};
+
+/// Thesis §3.7 "Zeichnen" (canvas) controls, each with the thesis's default, plus SPEC P3, P6,
+/// P7 and G2 obstacle placement.
+struct PaintingSettings {
+    bool erase = false;         ///< draw (default) or erase
+    bool pickAtTarget = false;  ///< the mouse marks the source (default) or the target of falling sand
+    bool thinLines = false;     ///< thick (default) or thin lines
+    bool showDraft = false;     ///< draft image shown; default none
+    int brushRadius = 0;        ///< cells around the picked column that also get sand; 0 = one column
+    bool defaultSandColor = true;                        ///< new grains in the pale sand colours
+    std::array<float, 3> sandColor{0.80f, 0.36f, 0.22f}; ///< RGB 0..1 of new grains when not default
+    bool colorFromDraft = false; ///< P6: new grains take the draft's colour at their column
+    std::string draftPath;       ///< the draft file the next loadDraft command reads
+    std::string loadedDraft;     ///< the draft in use; empty = none
+    std::vector<std::string> draftFiles; ///< models/draft_* files, for the draft list
+    std::array<int, 3> obstacleMin{8, 0, 8};    ///< next obstacle's first cell (lower grid), inclusive
+    std::array<int, 3> obstacleMax{16, 6, 16};  ///< next obstacle's last cell + 1 (lower grid), exclusive
+    std::size_t undoSteps = 0;   ///< strokes that Undo can take back
+    std::size_t undoBytes = 0;   ///< memory the kept strokes' snapshots use, bytes
+};
+
+/// Requests raised by panels and keys, served once per frame.
+struct PendingCommands {
+    bool reset = false;        ///< refill the scene (R10 reset)
+    bool rebuild = false;      ///< build a new scene from SceneSettings
+    bool singleStep = false;   ///< one step while paused
+    bool screenshot = false;   ///< save this frame as PNG
+    bool benchmark = false;    ///< run the B1 frame-rate benchmark
+    bool quit = false;         ///< close the window
+    bool frameCamera = false;  ///< reset the camera to frame the scene
+    bool undo = false;            ///< P7: take back the last stroke (Ctrl+Z)
+    bool loadDraft = false;       ///< P5: load PaintingSettings::draftPath as the draft
+    bool addObstacle = false;     ///< R11: add the box PaintingSettings::obstacleMin/Max to the lower grid
+    bool clearObstacles = false;  ///< R11: remove every obstacle of the canvas
+};
+
+/// Numbers for the statistics panel, refreshed every frame.
+struct FrameStatistics {
+    static constexpr int kHistory = 180;          ///< frames kept for the plot
+    std::array<float, kHistory> frameMilliseconds{}; ///< ring buffer of frame times, ms
+    int historyNext = 0;                          ///< next slot to write
+    float framesPerSecond = 0.0f;                 ///< smoothed over about half a second
+    float millisecondsPerFrame = 0.0f;            ///< smoothed frame time, ms
+    float millisecondsPerStep = 0.0f;             ///< smoothed wall time of one simulation step, ms
+    float stepsPerSecond = 0.0f;                  ///< steps actually run per second of wall time
+    std::int64_t grains = 0;                      ///< grains in the scene
+    std::int64_t grainsUpper = 0;                 ///< filled cells of the upper grid
+    std::int64_t grainsLower = 0;                 ///< filled cells of the lower grid
+    std::int64_t movingGrains = 0;                ///< grains moved by the last step
+    std::int64_t innerGrains = 0;                 ///< grains hidden by their neighbours (R13)
+    std::int64_t subGrainsDrawn = 0;              ///< points or quads drawn in the last frame
+    std::uint64_t stepsDone = 0;                  ///< steps since the last reset
+};
+
+/// The application's state, as far as the panels see it.
+struct AppState {
+    SceneSettings scene;            ///< what the next rebuild builds
+    sandcore::SceneKind runningSceneKind = sandcore::SceneKind::Hourglass; ///< the scene shown now (set when a build is adopted)
+    RenderSettings render;          ///< how grains are drawn
+    PaintingSettings painting;      ///< canvas painting options
+    bool simulationRunning = false; ///< thesis default: simulation off
+    double stepsPerSecond = 30.0;   ///< flow speed (R9)
+    bool showGui = true;            ///< Space hides the panels
+    float panelCoverage = 0.0f;     ///< share of the window's width the panel covers from the left edge
+    std::string glRenderer;         ///< GL_RENDERER, for the statistics panel
+    std::string glVersion;          ///< GL_VERSION
+    std::string statusLine;         ///< the last message (error or confirmation) for the user
+    std::vector<std::string> modelFiles; ///< files found in models/, for the model list
+    FrameStatistics stats;          ///< numbers shown in the statistics panel
+    PendingCommands pending;        ///< requests to serve after the UI is built
+};
+
+} // namespace sandglass

@@ -1,0 +1,78 @@
+#pragma once
+// Draws a scene's sand and hull with OpenGL 3.3 (SPEC V1-V6). All per-grain work runs in the
+// vertex shader: the grains go up in one buffer update per frame (none when nothing moved) and
+// are drawn with one instanced call, k sub-grains per instance.
+
+#include "view/camera.hpp"
+#include "view/render/draft_overlay.hpp"
+#include "view/render/gl_objects.hpp"
+#include "view/render/grain_instances.hpp"
+#include "view/render/render_settings.hpp"
+
+#include "sandcore/scene.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+namespace sandglass {
+
+/// What the last frame drew.
+struct RenderStats {
+    std::int64_t grainsDrawn = 0;   ///< grain instances (inner grains skipped when hidden)
+    std::int64_t subGrainsDrawn = 0; ///< grainsDrawn * grains per cell
+    std::int64_t innerGrains = 0;   ///< grains hidden by their 6 neighbours (R13)
+    bool uploaded = false;          ///< the grain buffer was updated this frame
+};
+
+class SceneRenderer {
+public:
+    /// Loads the shaders from a folder and makes the pattern textures; needs a current GL 3.3
+    /// context. Throws std::runtime_error with one line on a shader problem.
+    explicit SceneRenderer(const std::filesystem::path& shaderFolder);
+
+    /// Takes a new scene: rebuilds the hull mesh and forgets cached grain data.
+    void setScene(const sandcore::Scene& scene, float cellSize);
+    /// True when the hull was built with exactly the scene's obstacles (same boxes, same order,
+    /// both grids); after an edit that may have changed them, false means setScene is due.
+    bool hullShowsObstaclesOf(const sandcore::Scene& scene) const;
+    /// The scene's grains moved (a step, reset or edit): normals and inner flags are stale.
+    void sceneChanged();
+
+    /// Clears the bound framebuffer (width x height pixels) and draws the scene at stepFraction
+    /// of the current step. pixelScale multiplies point sizes (HiDPI content scale).
+    void draw(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
+              const OrbitCamera& camera, int width, int height, float pixelScale);
+
+    const RenderStats& stats() const { return stats_; } ///< what the last draw did
+    /// The grain instances in the GPU buffer now, as the last upload sent them.
+    std::span<const GrainInstance> uploadedInstances() const { return builder_.lastBuilt(); }
+
+    /// P5: the draft image drawn over the canvas (uploaded once per image).
+    void setDraftImage(const DraftImage& image) { draft_.setImage(image); }
+    /// P5: where the draft lies and how opaque; drawn by every later draw() while visible.
+    void setDraftPlacement(const DraftPlacement& placement) { draftPlacement_ = placement; }
+
+private:
+    void uploadGrains(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings);
+    void drawGrains(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection,
+                    float pixelScale);
+    void drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection);
+
+    GlProgram grainProgram_, hullProgram_;
+    GlVertexArray grainArray_, hullArray_, lineArray_;
+    GlBuffer grainBuffer_, hullBuffer_, lineBuffer_;
+    GlTexture patternOffsets_, patternColors_;
+    GrainInstanceBuilder builder_;
+    DraftOverlay draft_;
+    DraftPlacement draftPlacement_;
+    std::int64_t instanceCount_ = 0;
+    std::int64_t hullVertices_ = 0, lineVertices_ = 0;
+    std::vector<sandcore::CellBox> hullUpperObstacles_, hullLowerObstacles_; // what the hull shows
+    bool grainsStale_ = true;
+    RenderSettings uploadedWith_;
+    RenderStats stats_;
+};
+
+} // namespace sandglass

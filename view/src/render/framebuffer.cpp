@@ -1,0 +1,49 @@
+#include "view/render/framebuffer.hpp"
+
+#include <stb_image_write.h>
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace sandglass {
+
+OffscreenTarget::OffscreenTarget(int width, int height)
+    : width_(width), height_(height), framebuffer_(newFramebuffer()), color_(newRenderbuffer()),
+      depth_(newRenderbuffer()) {
+    glBindRenderbuffer(GL_RENDERBUFFER, color_.get());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.get());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("cannot make a " + std::to_string(width) + "x" + std::to_string(height) +
+                                 " offscreen framebuffer (status " + std::to_string(status) + ")");
+}
+
+void OffscreenTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get()); }
+
+RgbImage readPixels(int width, int height) {
+    RgbImage image{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 3)};
+    std::vector<std::uint8_t> bottomUp(image.pixels.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottomUp.data());
+    const std::size_t row = std::size_t(width) * 3;
+    // GL's first row is the bottom one; PNG's is the top one.
+    for (int y = 0; y < height; ++y)
+        std::memcpy(image.pixels.data() + std::size_t(y) * row, bottomUp.data() + std::size_t(height - 1 - y) * row,
+                    row);
+    return image;
+}
+
+void writePng(const std::filesystem::path& file, const RgbImage& image) {
+    if (image.width <= 0 || image.height <= 0) throw std::runtime_error("no image to write to " + file.string());
+    const int ok = stbi_write_png(file.c_str(), image.width, image.height, 3, image.pixels.data(), image.width * 3);
+    if (ok == 0) throw std::runtime_error("cannot write " + file.string());
+}
+
+} // namespace sandglass

@@ -1,0 +1,31 @@
+#include "view/render/render_settings.hpp"
+
+namespace sandglass {
+
+namespace {
+// Every name of a mode, in the order of RenderMode.
+struct ModeNames {
+    const char* name;      // command line
+    const char* shortName; // thesis §4.3 table
+    const char* label;     // panel
+};
+constexpr ModeNames kModeNames[] = {
+    {"points", "P", "Points"},
+    {"sprites", "S", "Sprites"},
+    {"billboards", "BB", "Billboards"},
+    {"pseudo", "PBB", "Pseudo-billboards"},
+};
+const ModeNames& namesOf(RenderMode mode) { return kModeNames[static_cast<int>(mode)]; }
+} // namespace
+
+const char* renderModeName(RenderMode mode) { return namesOf(mode).name; }
+const char* renderModeShortName(RenderMode mode) { return namesOf(mode).shortName; }
+const char* renderModeLabel(RenderMode mode) { return namesOf(mode).label; }
+
+std::optional<RenderMode> parseRenderMode(std::string_view name) {
+    for (RenderMode mode : kRenderModes)
+        if (name == renderModeName(mode)) return mode;
+    return std::nullopt;
+}
+
+} // namespace sandglass

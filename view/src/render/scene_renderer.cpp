@@ -1,0 +1,225 @@
+#include "view/render/scene_renderer.hpp"
+
+#include "view/render/hull_mesh.hpp"
+#include "view/render/sand_patterns.hpp"
+#include "view/render/shader_program.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+namespace sandglass {
+
+namespace {
+
+GLint uniform(const GlProgram& program, const char* name) { return glGetUniformLocation(program.get(), name); }
+
+void hullAttributes(GLuint vertexArray, GLuint buffer) {
+    glBindVertexArray(vertexArray);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(HullVertex), reinterpret_cast<void*>(0));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(HullVertex),
+                          reinterpret_cast<void*>(offsetof(HullVertex, nx)));
+}
+
+// Display settings whose change invalidates the uploaded grains even when nothing moved.
+bool sameGrainInputs(const RenderSettings& a, const RenderSettings& b) {
+    return a.innerGrains == b.innerGrains && a.lighting == b.lighting && a.normals == b.normals &&
+           a.jitter == b.jitter && a.cellSize == b.cellSize;
+}
+
+} // namespace
+
+SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
+    : grainProgram_(loadShaderProgram(shaderFolder / "grain.vert", shaderFolder / "grain.frag")),
+      hullProgram_(loadShaderProgram(shaderFolder / "hull.vert", shaderFolder / "hull.frag")),
+      grainArray_(newVertexArray()), hullArray_(newVertexArray()), lineArray_(newVertexArray()),
+      grainBuffer_(newBuffer()), hullBuffer_(newBuffer()), lineBuffer_(newBuffer()),
+      patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
+    // Per-instance attributes; the vertex shader needs no per-vertex data (it uses gl_VertexID).
+    glBindVertexArray(grainArray_.get());
+    glBindBuffer(GL_ARRAY_BUFFER, grainBuffer_.get());
+    const auto stride = GLsizei(sizeof(GrainInstance));
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(GrainInstance, x)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_INT_2_10_10_10_REV, GL_TRUE, stride,
+                          reinterpret_cast<void*>(offsetof(GrainInstance, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribIPointer(2, 1, GL_UNSIGNED_INT, stride, reinterpret_cast<void*>(offsetof(GrainInstance, identity)));
+    glEnableVertexAttribArray(3);
+    glVertexAttribIPointer(3, 1, GL_UNSIGNED_INT, stride, reinterpret_cast<void*>(offsetof(GrainInstance, color)));
+    for (GLuint location = 0; location < 4; ++location) glVertexAttribDivisor(location, 1);
+    hullAttributes(hullArray_.get(), hullBuffer_.get());
+    hullAttributes(lineArray_.get(), lineBuffer_.get());
+    glBindVertexArray(0);
+
+    // The Scribble patterns as two small textures: 32 sub-grains wide, one row per pattern.
+    const std::vector<SandPattern> patterns = makeSandPatterns();
+    std::vector<float> offsets;
+    std::vector<std::uint32_t> colors;
+    for (const SandPattern& pattern : patterns)
+        for (std::size_t i = 0; i < pattern.offsets.size(); ++i) {
+            offsets.insert(offsets.end(), {pattern.offsets[i][0], pattern.offsets[i][1], pattern.offsets[i][2], 0.0f});
+            colors.push_back(pattern.colors[i]);
+        }
+    const auto rows = GLsizei(patterns.size());
+    glBindTexture(GL_TEXTURE_2D, patternOffsets_.get());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kMaxGrainsPerCell, rows, 0, GL_RGBA, GL_FLOAT, offsets.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, patternColors_.get());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kMaxGrainsPerCell, rows, 0, GL_RGBA, GL_UNSIGNED_BYTE, colors.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+
+    glUseProgram(grainProgram_.get());
+    glUniform1i(uniform(grainProgram_, "patternOffsets"), 0);
+    glUniform1i(uniform(grainProgram_, "patternColors"), 1);
+    glUniform1i(uniform(grainProgram_, "patternCount"), GLint(patterns.size()));
+    glUseProgram(0);
+}
+
+void SceneRenderer::setScene(const sandcore::Scene& scene, float cellSize) {
+    const HullMesh mesh = buildHullMesh(scene, cellSize);
+    hullUpperObstacles_ = scene.obstacles(sandcore::GridLevel::Upper);
+    hullLowerObstacles_ = scene.obstacles(sandcore::GridLevel::Lower);
+    glBindBuffer(GL_ARRAY_BUFFER, hullBuffer_.get());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.triangles.size() * sizeof(HullVertex)), mesh.triangles.data(),
+                 GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, lineBuffer_.get());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.lines.size() * sizeof(HullVertex)), mesh.lines.data(),
+                 GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    hullVertices_ = std::int64_t(mesh.triangles.size());
+    lineVertices_ = std::int64_t(mesh.lines.size());
+    sceneChanged();
+}
+
+bool SceneRenderer::hullShowsObstaclesOf(const sandcore::Scene& scene) const {
+    const auto same = [](const std::vector<sandcore::CellBox>& a, const std::vector<sandcore::CellBox>& b) {
+        return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const sandcore::CellBox& x, const sandcore::CellBox& y) {
+            return x.min == y.min && x.max == y.max;
+        });
+    };
+    return same(scene.obstacles(sandcore::GridLevel::Upper), hullUpperObstacles_) &&
+           same(scene.obstacles(sandcore::GridLevel::Lower), hullLowerObstacles_);
+}
+
+void SceneRenderer::sceneChanged() {
+    builder_.sceneChanged();
+    grainsStale_ = true;
+}
+
+void SceneRenderer::uploadGrains(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings) {
+    // Grains glide while the last step moved any; otherwise the uploaded positions still hold.
+    const bool gliding = scene.counters().movesLastStep > 0;
+    stats_.uploaded = false;
+    if (!gliding && !grainsStale_ && sameGrainInputs(settings, uploadedWith_)) return;
+    const std::span<const GrainInstance> instances = builder_.build(scene, stepFraction, settings);
+    glBindBuffer(GL_ARRAY_BUFFER, grainBuffer_.get());
+    // Orphan the old storage so the driver need not wait for the previous frame's draw.
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size_bytes()), nullptr, GL_STREAM_DRAW);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(instances.size_bytes()), instances.data());
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    instanceCount_ = std::int64_t(instances.size());
+    uploadedWith_ = settings;
+    grainsStale_ = false;
+    stats_.uploaded = true;
+    stats_.innerGrains = builder_.innerGrainCount();
+}
+
+void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
+                         const OrbitCamera& camera, int width, int height, float pixelScale) {
+    glViewport(0, 0, width, height);
+    const float background = settings.blackBackground ? 0.0f : 1.0f;
+    glClearColor(background, background, background, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (width <= 0 || height <= 0) return;
+
+    uploadGrains(scene, stepFraction, settings);
+    const glm::mat4 viewProjection = camera.projection(float(width) / float(height)) * camera.view();
+    drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale);
+    draft_.draw(draftPlacement_, glm::value_ptr(viewProjection));
+    if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera& camera,
+                               const float* viewProjection, float pixelScale) {
+    const int perCell = std::clamp(settings.grainsPerCell, 1, kMaxGrainsPerCell);
+    stats_.grainsDrawn = instanceCount_;
+    stats_.subGrainsDrawn = instanceCount_ * perCell;
+    if (instanceCount_ == 0) return;
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glUseProgram(grainProgram_.get());
+    const int mode = int(settings.mode);
+    glUniformMatrix4fv(uniform(grainProgram_, "viewProjection"), 1, GL_FALSE, viewProjection);
+    glUniform1i(uniform(grainProgram_, "mode"), mode);
+    glUniform1f(uniform(grainProgram_, "cellSize"), settings.cellSize);
+    glUniform1f(uniform(grainProgram_, "pointSize"), std::max(1.0f, settings.pointSize * pixelScale));
+    // Sub-grains share the cell's volume, so a quad's edge shrinks with the cube root of k.
+    glUniform1f(uniform(grainProgram_, "quadHalfSize"),
+                0.5f * settings.quadSize * settings.cellSize / std::cbrt(float(perCell)));
+    const glm::vec3 eye = camera.position(), up = camera.up(), right = camera.right();
+    glUniform3fv(uniform(grainProgram_, "cameraPosition"), 1, glm::value_ptr(eye));
+    glUniform3fv(uniform(grainProgram_, "cameraUp"), 1, glm::value_ptr(up));
+    // Thesis §3.8 pseudo-billboards: one orientation per frame from the camera's rotation.
+    glUniform3fv(uniform(grainProgram_, "pseudoRight"), 1, glm::value_ptr(right));
+    glUniform3fv(uniform(grainProgram_, "pseudoUp"), 1, glm::value_ptr(up));
+    glUniform1i(uniform(grainProgram_, "lighting"), settings.lighting ? 1 : 0);
+    // Thesis §3.8: a white point light a little below the camera, so every view is lit.
+    const glm::vec3 light = eye - up * (0.15f * camera.distance());
+    glUniform3fv(uniform(grainProgram_, "lightPosition"), 1, glm::value_ptr(light));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, patternOffsets_.get());
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, patternColors_.get());
+    glActiveTexture(GL_TEXTURE0);
+    glBindVertexArray(grainArray_.get());
+    const bool quads = settings.mode == RenderMode::Billboards || settings.mode == RenderMode::PseudoBillboards;
+    if (quads)
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * perCell, GLsizei(instanceCount_));
+    else
+        glDrawArraysInstanced(GL_POINTS, 0, perCell, GLsizei(instanceCount_));
+}
+
+void SceneRenderer::drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE); // glass never hides sand behind it
+    glUseProgram(hullProgram_.get());
+    glUniformMatrix4fv(uniform(hullProgram_, "viewProjection"), 1, GL_FALSE, viewProjection);
+    const glm::vec3 eye = camera.position();
+    glUniform3fv(uniform(hullProgram_, "cameraPosition"), 1, glm::value_ptr(eye));
+    const glm::vec3 glass = settings.blackBackground ? glm::vec3(0.70f, 0.82f, 0.95f) : glm::vec3(0.35f, 0.50f, 0.65f);
+    glUniform3fv(uniform(hullProgram_, "glassColor"), 1, glm::value_ptr(glass));
+    if (hullVertices_ > 0) {
+        glUniform1f(uniform(hullProgram_, "baseAlpha"), 0.025f);
+        glUniform1f(uniform(hullProgram_, "rimAlpha"), 0.10f);
+        glBindVertexArray(hullArray_.get());
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(hullVertices_));
+    }
+    if (lineVertices_ > 0) {
+        glUniform1f(uniform(hullProgram_, "baseAlpha"), 0.45f);
+        glUniform1f(uniform(hullProgram_, "rimAlpha"), 0.0f);
+        glBindVertexArray(lineArray_.get());
+        glDrawArrays(GL_LINES, 0, GLsizei(lineVertices_));
+    }
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+} // namespace sandglass
