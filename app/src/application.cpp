@@ -1,7 +1,10 @@
 #include "app/application.hpp"
 
+#include "app/frame_benchmark_runner.hpp"
 #include "gui/panels.hpp"
 #include "view/render/shader_program.hpp"
+
+#include "scene/draft_image.hpp"
 
 #include "sandcore/display_positions.hpp"
 
@@ -10,6 +13,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <system_error>
 
@@ -18,14 +22,6 @@ namespace sandglass {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Scenes are built off the main thread so the window stays responsive (SPEC G2).
-sandcore::Scene buildSceneFor(const SceneSettings& settings) {
-    sandcore::StepSettings step;
-    step.seed = settings.seed;
-    step.threads = std::max(1, settings.threads);
-    return buildScene(settings.request, step);
-}
 
 std::vector<std::string> listModelFiles() {
     std::vector<std::string> files;
@@ -38,6 +34,12 @@ std::vector<std::string> listModelFiles() {
     }
     std::sort(files.begin(), files.end());
     return files;
+}
+
+// The settings a window starts from, with the defaults applied and checked once.
+SceneSettings checkedSceneSettings(SceneSettings settings) {
+    applySceneDefaults(settings);
+    return settings;
 }
 
 } // namespace
@@ -73,24 +75,24 @@ struct ApplicationCallbacks {
     static void enter(GLFWwindow* window, int entered) { ImGui_ImplGlfw_CursorEnterCallback(window, entered); }
     static void drop(GLFWwindow* window, int count, const char** paths) {
         if (count < 1) return;
-        Application& app = of(window);
-        // P5: an image dropped on the canvas is a draft; every other file is a model.
-        if (app.scene_->kind() == sandcore::SceneKind::Canvas && isDraftImageFile(paths[0])) {
-            app.state_.painting.draftPath = paths[0];
-            app.state_.pending.loadDraft = true;
+        AppState& state = of(window).state_;
+        // An image dropped on the canvas is a draft; every other file is a model.
+        if (of(window).scene().kind() == sandcore::SceneKind::Canvas && isDraftImageFile(paths[0])) {
+            state.painting.draftPath = paths[0];
+            state.commands.push(Command::LoadDraft);
             return;
         }
-        app.state_.scene.request.modelPath = paths[0];
-        if (app.state_.scene.request.kind == sandcore::SceneKind::Canvas)
-            app.state_.scene.request.kind = sandcore::SceneKind::Hourglass;
-        app.state_.pending.rebuild = true;
+        state.scene.request.modelPath = paths[0];
+        state.scene.request.shape.clear();
+        if (state.scene.request.kind == sandcore::SceneKind::Canvas) state.scene.request.kind = sandcore::SceneKind::Hourglass;
+        state.commands.push(Command::Rebuild);
     }
 };
 
 Application::Application(ApplicationOptions options)
     : options_(std::move(options)), state_(options_.initial), window_(options_.window),
       imgui_(window_.handle(), window_.contentScale()), renderer_(shaderDirectory()),
-      canvasInput_(shaderDirectory(), options_.undo) {
+      host_(checkedSceneSettings(options_.initial.scene)), canvas_(shaderDirectory(), options_.undo) {
     if (options_.offscreen) {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
@@ -110,27 +112,19 @@ Application::Application(ApplicationOptions options)
     state_.glVersion = window_.glVersion();
     state_.modelFiles = listModelFiles();
     state_.painting.draftFiles = listDraftFiles(std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models");
-    adoptScene(buildSceneFor(state_.scene));
+    state_.scene = host_.loaded();
+    state_.loaded = host_.loaded();
+    frameCamera();
     camera_.zoom(options_.cameraZoom);
-    for (int i = 0; i < options_.stepsBeforeStart; ++i) scene_->step();
-    lastStepOutsideClock_ = options_.stepsBeforeStart > 0;
-    renderer_.sceneChanged();
+    host_.runSteps(options_.stepsBeforeStart);
     glfwGetCursorPos(handle, &lastCursorX_, &lastCursorY_);
 }
 
-Application::~Application() {
-    if (pendingScene_.valid()) pendingScene_.wait();
-    glfwSetWindowUserPointer(window_.handle(), nullptr);
-}
+Application::~Application() { glfwSetWindowUserPointer(window_.handle(), nullptr); }
 
-void Application::adoptScene(sandcore::Scene scene) {
-    scene_ = std::make_unique<sandcore::Scene>(std::move(scene));
-    state_.runningSceneKind = scene_->kind();
-    lastStepOutsideClock_ = false;
-    renderer_.setScene(*scene_, state_.render.cellSize);
-    canvasInput_.sceneReplaced();
+void Application::frameCamera() {
     sandcore::Vec3 lo, hi;
-    sandcore::sceneBounds(*scene_, {state_.render.cellSize, state_.render.jitter}, lo, hi);
+    sandcore::sceneBounds(host_.scene(), {state_.render.cellSize, state_.render.jitter}, lo, hi);
     camera_.frame(lo, hi);
 }
 
@@ -152,26 +146,35 @@ void Application::bindTarget() const {
 
 int Application::run() {
     auto last = Clock::now();
-    while (!window_.shouldClose() && !state_.pending.quit) {
+    while (!window_.shouldClose()) {
         glfwPollEvents();
         const auto now = Clock::now();
         renderFrame(std::chrono::duration<double>(now - last).count());
         last = now;
         const bool lastFrame = options_.frameLimit > 0 && framesDrawn_ >= options_.frameLimit;
         if (lastFrame && !options_.screenshotFile.empty()) saveScreenshot(options_.screenshotFile);
-        if (state_.pending.screenshot) {
-            state_.pending.screenshot = false;
-            saveScreenshot("sandglass-" + std::to_string(++screenshotsTaken_) + ".png");
+        // Commands that need a whole frame drawn first, or that end the loop.
+        bool quit = false, benchmark = false;
+        for (Command command : state_.commands.take()) {
+            if (command == Command::Screenshot) saveScreenshot("sandglass-" + std::to_string(++screenshotsTaken_) + ".png");
+            quit = quit || command == Command::Quit;
+            benchmark = benchmark || command == Command::Benchmark;
         }
-        window_.swapBuffers();
-        if (state_.pending.benchmark) {
-            state_.pending.benchmark = false;
+        finishFrame();
+        if (benchmark) {
             runInteractiveBenchmark();
             last = Clock::now();
         }
-        if (lastFrame) break;
+        if (lastFrame || quit) break;
     }
     return 0;
+}
+
+void Application::finishFrame() {
+    if (offscreen_)
+        glFinish(); // nothing is shown, so wait for the drawing itself
+    else
+        window_.swapBuffers();
 }
 
 void Application::renderFrame(double elapsedSeconds) {
@@ -180,24 +183,52 @@ void Application::renderFrame(double elapsedSeconds) {
     if (state_.showGui) drawPanels(state_);
     camera_.setLensShift(state_.showGui ? state_.panelCoverage : 0.0f);
     serveCommands();
-    stepSimulation(elapsedSeconds);
-    updateDraftPlacement();
-    bindTarget();
-    int width = 0, height = 0;
-    targetSize(width, height);
-    renderer_.draw(*scene_, displayStepFraction(), state_.render, camera_, width, height,
-                   window_.contentScale());
-    if (pendingScene_.valid()) {
-        // Progress indicator while a scene is built in the background.
+    host_.setRunning(state_.simulationRunning);
+    host_.setStepsPerSecond(state_.stepsPerSecond);
+    host_.advance(elapsedSeconds);
+    renderer_.setDraftPlacement(canvas_.draftPlacement(host_.scene(), state_.painting, state_.render.cellSize));
+    drawHost(host_, state_.render);
+    if (host_.building()) {
+        // Progress while a scene is built in the background.
         ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, 20.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
         ImGui::Begin("##building", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
-        const double seconds = std::chrono::duration<double>(Clock::now() - rebuildStarted_).count();
+        const double seconds = host_.buildSeconds();
         ImGui::Text("building scene %c  %.1f s", "|/-\\"[int(seconds * 8.0) % 4], seconds);
         ImGui::End();
     }
-    imgui_.render(state_.showGui || pendingScene_.valid());
+    imgui_.render(state_.showGui || host_.building());
     updateStatistics(elapsedSeconds);
     ++framesDrawn_;
+}
+
+void Application::renderHostFrame(SceneHost& host, const RenderSettings& render, bool panels, double elapsedSeconds) {
+    imgui_.newFrame();
+    if (panels) drawPanels(state_); // what they queue waits for the application's own frames
+    host.setRunning(true);
+    host.setStepsPerSecond(state_.stepsPerSecond);
+    host.advance(elapsedSeconds);
+    renderer_.setDraftPlacement({});
+    drawHost(host, render);
+    imgui_.render(panels);
+    ++framesDrawn_;
+}
+
+void Application::drawHost(SceneHost& host, const RenderSettings& render) {
+    // The renderer hears only of real changes: a new layout rebuilds the hull, new grains re-upload.
+    if (&host != drawnHost_ || host.layoutRevision() != drawnLayout_) {
+        renderer_.setScene(host.scene(), render.cellSize);
+        drawnLayout_ = host.layoutRevision();
+        drawnContent_ = 0;
+    }
+    if (&host != drawnHost_ || host.contentRevision() != drawnContent_) {
+        renderer_.sceneChanged();
+        drawnContent_ = host.contentRevision();
+    }
+    drawnHost_ = &host;
+    bindTarget();
+    int width = 0, height = 0;
+    targetSize(width, height);
+    renderer_.draw(host.scene(), host.displayStepFraction(), render, camera_, width, height, window_.contentScale());
 }
 
 void Application::handleMouse() {
@@ -217,7 +248,7 @@ void Application::handleMouse() {
     for (const auto& [glfwButton, button] : buttons)
         if (glfwGetMouseButton(handle, glfwButton) == GLFW_PRESS)
             applyMouseDrag(capture, button, alt, dx, dy, float(height), camera_);
-    if (scene_->kind() == sandcore::SceneKind::Canvas)
+    if (scene().kind() == sandcore::SceneKind::Canvas)
         handleCanvasPointer({x, y, glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS, alt, capture.mouse});
 }
 
@@ -225,95 +256,123 @@ void Application::handleKey(KeyCommand command) {
     switch (command) {
     case KeyCommand::ToggleGui: state_.showGui = !state_.showGui; break;
     case KeyCommand::PrintFilledCells:
-        std::printf("filled cells: %lld (upper %lld, lower %lld)\n", (long long)scene_->grainCount(),
-                    (long long)scene_->counters().grainsUpper, (long long)scene_->counters().grainsLower);
+        std::printf("filled cells: %lld (upper %lld, lower %lld)\n", (long long)scene().grainCount(),
+                    (long long)scene().counters().grainsUpper, (long long)scene().counters().grainsLower);
         break;
     case KeyCommand::PrintFrameRate:
         std::printf("%.1f frames per second, %.2f ms per frame\n", state_.stats.framesPerSecond,
                     state_.stats.millisecondsPerFrame);
         break;
-    case KeyCommand::RunBenchmark: state_.pending.benchmark = true; break;
-    case KeyCommand::Quit: state_.pending.quit = true; break;
-    case KeyCommand::Screenshot: state_.pending.screenshot = true; break;
-    case KeyCommand::Undo: state_.pending.undo = true; break;
+    case KeyCommand::RunBenchmark: state_.commands.push(Command::Benchmark); break;
+    case KeyCommand::Quit: state_.commands.push(Command::Quit); break;
+    case KeyCommand::Screenshot: state_.commands.push(Command::Screenshot); break;
+    case KeyCommand::Undo: state_.commands.push(Command::Undo); break;
     default: break;
     }
     std::fflush(stdout);
 }
 
-void Application::serveCommands() {
-    PendingCommands& pending = state_.pending;
-    if (pendingScene_.valid() &&
-        pendingScene_.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
-        finishRebuild();
-    // A request raised while a build runs stays pending and starts when that build is done.
-    if (pending.rebuild && !pendingScene_.valid()) {
-        startRebuild();
-        pending.rebuild = false;
-    }
-    if (pending.reset) {
-        scene_->reset();
-        canvasInput_.sceneReplaced();
-        renderer_.sceneChanged();
-        state_.statusLine = "reset";
-    }
-    pending.reset = false;
-    if (pending.singleStep) clock_.requestSingleStep();
-    pending.singleStep = false;
-    if (pending.frameCamera) {
-        sandcore::Vec3 lo, hi;
-        sandcore::sceneBounds(*scene_, {state_.render.cellSize, state_.render.jitter}, lo, hi);
-        camera_.frame(lo, hi);
-    }
-    pending.frameCamera = false;
-    servePaintingCommands();
-}
-
-void Application::startRebuild() {
-    rebuildStarted_ = Clock::now();
-    state_.statusLine.clear();
-    pendingScene_ = std::async(std::launch::async, buildSceneFor, state_.scene);
-}
-
-void Application::finishRebuild() {
-    if (state_.pending.rebuild) {
-        // Newer settings arrived while it was built: the last request wins, this one is stale.
-        try {
-            pendingScene_.get();
-        } catch (const std::exception&) {
-            // its error no longer matters either
-        }
+void Application::adoptBuild(const BuildOutcome& outcome) {
+    state_.statusLine = outcome.message;
+    if (!outcome.adopted) {
+        // The running scene stays, and the panel shows it again rather than the choice that failed.
+        state_.scene = state_.loaded;
         return;
     }
-    try {
-        adoptScene(pendingScene_.get());
-        state_.statusLine = std::string("built ") + sceneKindName(scene_->kind()) + ", " +
-                            std::to_string(scene_->grainCount()) + " grains";
-    } catch (const std::exception& error) {
-        state_.statusLine = error.what(); // the running scene stays as it was
+    state_.loaded = host_.loaded();
+    canvas_.sceneReplaced();
+    frameCamera();
+}
+
+void Application::serveCommands() {
+    if (const auto outcome = host_.pollBuild()) adoptBuild(*outcome);
+    // Screenshots, the benchmark and quitting wait for the frame; run() takes them.
+    std::vector<Command> later;
+    for (Command command : state_.commands.take()) {
+        if (command == Command::Screenshot || command == Command::Benchmark || command == Command::Quit)
+            later.push_back(command);
+        else
+            serve(command);
+    }
+    for (Command command : later) state_.commands.push(command);
+    state_.building = host_.building();
+    canvas_.publishUndoState(state_.painting);
+}
+
+void Application::serve(Command command) {
+    switch (command) {
+    case Command::Rebuild:
+        try {
+            SceneSettings settings = state_.scene;
+            // The panel keeps the last model chosen when the user switches to the canvas; it has none.
+            if (settings.request.kind == sandcore::SceneKind::Canvas) {
+                settings.request.modelPath.clear();
+                settings.request.shape.clear();
+            }
+            applySceneDefaults(settings);
+            state_.statusLine.clear();
+            host_.requestBuild(settings);
+        } catch (const std::exception& error) {
+            state_.statusLine = error.what();
+            state_.scene = state_.loaded;
+        }
+        break;
+    case Command::ApplyStepSettings: host_.applyStepSettings(state_.scene.step); break;
+    case Command::Reset:
+        host_.reset();
+        canvas_.sceneReplaced();
+        state_.statusLine = "reset";
+        break;
+    case Command::SingleStep: host_.requestSingleStep(); break;
+    case Command::FrameCamera: frameCamera(); break;
+    case Command::Undo: state_.statusLine = canvas_.undo(host_) ? "undone" : "nothing to undo"; break;
+    case Command::LoadDraft: loadDraft(state_.painting.draftPath); break;
+    case Command::AddObstacle:
+        state_.statusLine = canvas_.addObstacle(host_, state_.painting.obstacleMin, state_.painting.obstacleMax);
+        break;
+    case Command::ClearObstacles:
+        canvas_.clearObstacles(host_);
+        state_.statusLine = "obstacles removed";
+        break;
+    case Command::Screenshot:
+    case Command::Benchmark:
+    case Command::Quit: break; // served by run() after the frame
     }
 }
 
-void Application::stepSimulation(double elapsedSeconds) {
-    clock_.setRunning(state_.simulationRunning);
-    clock_.setStepsPerSecond(state_.stepsPerSecond);
-    const int due = clock_.advance(elapsedSeconds);
-    if (due == 0) return;
-    const auto start = Clock::now();
-    for (int i = 0; i < due; ++i) scene_->step();
-    // Paused, the clock's fraction stands still (often at 0): a single step would not show.
-    lastStepOutsideClock_ = !clock_.running();
-    const double milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count() / due;
-    FrameStatistics& stats = state_.stats;
-    stats.millisecondsPerStep = stats.millisecondsPerStep == 0.0f ? float(milliseconds)
-                                                                  : 0.9f * stats.millisecondsPerStep + 0.1f * float(milliseconds);
-    stats.stepsPerSecond = 0.95f * stats.stepsPerSecond +
-                           0.05f * float(elapsedSeconds > 0.0 ? double(due) / elapsedSeconds : 0.0);
-    renderer_.sceneChanged();
+bool Application::loadDraft(const std::string& path) {
+    try {
+        renderer_.setDraftImage(canvas_.loadDraft(path));
+        state_.painting.loadedDraft = path;
+        state_.painting.draftPath = path;
+        state_.painting.showDraft = true;
+        state_.statusLine = "draft " + path;
+        return true;
+    } catch (const std::exception& error) {
+        state_.statusLine = error.what(); // the previous draft, if any, stays in use
+        return false;
+    }
 }
 
-float Application::displayStepFraction() const {
-    return lastStepOutsideClock_ ? 1.0f : float(clock_.stepFraction());
+CanvasView Application::canvasView() const {
+    CanvasView view;
+    targetSize(view.framebufferWidth, view.framebufferHeight);
+    glfwGetWindowSize(window_.handle(), &view.windowWidth, &view.windowHeight);
+    const float aspect = view.framebufferHeight > 0 ? float(view.framebufferWidth) / float(view.framebufferHeight) : 1.0f;
+    view.view = camera_.view();
+    view.projection = camera_.projection(aspect);
+    view.cellSize = state_.render.cellSize;
+    return view;
+}
+
+std::optional<CanvasColumn> Application::columnUnderCursor(double cursorX, double cursorY) {
+    return canvas_.columnUnderCursor(host_, cursorX, cursorY, canvasView(), state_.painting);
+}
+
+bool Application::handleCanvasPointer(const PointerSample& sample) {
+    const bool changed = canvas_.handlePointer(host_, sample, canvasView(), state_.painting);
+    canvas_.publishUndoState(state_.painting);
+    return changed;
 }
 
 void Application::updateStatistics(double elapsedSeconds) {
@@ -326,9 +385,10 @@ void Application::updateStatistics(double elapsedSeconds) {
             stats.millisecondsPerFrame == 0.0f ? milliseconds : 0.9f * stats.millisecondsPerFrame + 0.1f * milliseconds;
         stats.framesPerSecond = 1000.0f / stats.millisecondsPerFrame;
     }
-    if (!clock_.running()) stats.stepsPerSecond *= 0.95f;
-    const sandcore::SceneCounters& counters = scene_->counters();
-    stats.grains = scene_->grainCount();
+    stats.stepsPerSecond = float(host_.stepsPerSecond());
+    stats.millisecondsPerStep = float(host_.millisecondsPerStep());
+    const sandcore::SceneCounters& counters = scene().counters();
+    stats.grains = scene().grainCount();
     stats.grainsUpper = counters.grainsUpper;
     stats.grainsLower = counters.grainsLower;
     stats.movingGrains = counters.movesLastStep;
@@ -354,6 +414,19 @@ void Application::saveScreenshot(const std::filesystem::path& file) {
         std::fprintf(stderr, "sandglass: %s\n", error.what());
     }
     std::fflush(stdout);
+}
+
+void Application::runInteractiveBenchmark() {
+    state_.statusLine = "benchmark running...";
+    try {
+        const BenchmarkReport report = runFrameBenchmark(*this, thesisBenchmarkCases(), BenchmarkTiming{});
+        writeBenchmarkFiles(options_.benchmarkFolder, {report}, "key B in the window");
+        state_.statusLine = "benchmark written to " + (options_.benchmarkFolder / "benchmark.txt").string();
+        std::printf("%s\n", state_.statusLine.c_str());
+    } catch (const std::exception& error) {
+        state_.statusLine = error.what();
+        std::fprintf(stderr, "sandglass: %s\n", error.what());
+    }
 }
 
 } // namespace sandglass

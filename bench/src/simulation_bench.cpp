@@ -12,13 +12,13 @@ namespace sandbench {
 
 namespace {
 
-DrainRun drain(int resolution, bool sleeping, int threads) {
+DrainRun drain(int resolution, bool sleeping, int threads, std::uint64_t seed) {
     using Clock = std::chrono::steady_clock;
     sandcore::HourglassShape shape;
     shape.height = resolution;
     shape.neckRadius = sandcore::defaultNeckRadius(resolution); // as `sandglass simulate` does
     sandcore::StepSettings step;
-    step.seed = 1;
+    step.seed = seed;
     step.threads = threads;
     step.sleeping = sleeping;
     sandcore::Scene scene = sandcore::makeHourglassScene(sandcore::makeHourglassMask(shape), {}, step);
@@ -50,11 +50,11 @@ DrainRun drain(int resolution, bool sleeping, int threads) {
 
 } // namespace
 
-std::vector<DrainRun> measureDrains(const std::vector<int>& resolutions) {
+std::vector<DrainRun> measureDrains(const std::vector<int>& resolutions, const sandcore::StepSettings& step) {
     std::vector<DrainRun> runs;
     for (int resolution : resolutions)
         for (bool sleeping : {true, false})
-            for (int threads : {1, 2}) runs.push_back(drain(resolution, sleeping, threads));
+            for (int threads : {1, step.threads}) runs.push_back(drain(resolution, sleeping, threads, step.seed));
     return runs;
 }
 

@@ -60,12 +60,12 @@ struct Section {
 Section voxelizationSection(const ReportOptions& options, std::ostream& log) {
     const std::vector<int> resolutions = options.quick ? std::vector<int>{16, 32, 64}
                                                        : std::vector<int>{16, 32, 64, 128, 256};
-    const int threads = 2, repeat = options.quick ? 1 : 3;
+    const int threads = options.step.threads, repeat = options.quick ? 1 : 3;
     log << "voxelization: sphere, hourglass and torus at " << resolutions.size() << " resolutions\n";
     const std::vector<VoxelRun> runs = measureVoxelization(resolutions, threads, repeat);
     const Table table = voxelTable(runs);
     writeCsv(table, options.outDir / "voxelization.csv");
-    LinePlot plot{"voxelization", "Voxelization: time against volume error (labels: resolution)", "ms (2 threads)",
+    LinePlot plot{"voxelization", "Voxelization: time against volume error (labels: resolution)", "ms (" + std::to_string(threads) + " threads)",
                   "|relative volume error|", true, "left bottom", {}};
     for (const char* mesh : {"sphere", "hourglass", "torus"}) {
         PlotSeries series{mesh, {}, {}};
@@ -90,7 +90,7 @@ Section voxelizationSection(const ReportOptions& options, std::ostream& log) {
     section.passed = plotted;
     section.markdown =
         "## Voxelization: time against volume error\n\n"
-        "Each mesh is scaled so its largest extent spans `res` cells and voxelized with 2 threads (best of " +
+        "Each mesh is scaled so its largest extent spans `res` cells and voxelized with " + std::to_string(threads) + " threads (best of " +
         std::to_string(repeat) + "). The error is the voxel volume (inside cells) against the mesh's exact volume "
         "(sum of signed tetrahedra) and, for the sphere (icosphere of 20480 triangles) and the torus (ring radius 1, "
         "tube 0.4), against the exact solid, which also contains the tessellation's own error.\n\n" +
@@ -105,13 +105,14 @@ Section simulationSection(const ReportOptions& options, std::ostream& log) {
     const std::vector<int> resolutions = options.quick ? std::vector<int>{24, 32, 48}
                                                        : std::vector<int>{32, 48, 64, 96, 128, 160};
     log << "simulation: draining hourglasses at " << resolutions.size() << " resolutions\n";
-    const std::vector<DrainRun> runs = measureDrains(resolutions);
+    const std::vector<DrainRun> runs = measureDrains(resolutions, options.step);
     const Table table = drainTable(runs);
     writeCsv(table, options.outDir / "simulation.csv");
 
     LinePlot plot{"simulation", "Hourglass drain: median ms per step", "resolution (cells)", "ms per step", true,
                   "left top", {}};
-    const std::pair<bool, int> kinds[] = {{true, 1}, {true, 2}, {false, 1}, {false, 2}};
+    const int threads = options.step.threads;
+    const std::pair<bool, int> kinds[] = {{true, 1}, {true, threads}, {false, 1}, {false, threads}};
     for (const auto& [sleeping, threads] : kinds) {
         PlotSeries series{std::string(sleeping ? "sleeping" : "full sweep") + ", " + std::to_string(threads) +
                               (threads == 1 ? " thread" : " threads"),
@@ -127,8 +128,9 @@ Section simulationSection(const ReportOptions& options, std::ostream& log) {
     if (!plotted) log << "sandglass: gnuplot could not draw simulation.png\n";
     section.markdown = "## Simulation: ms per step against resolution\n\n"
                        "The procedural hourglass (neck radius resolution/24) drained until a step moves nothing, "
-                       "seed 1, with sleeping grains skipped (R5) and with a full sweep of every cell, on 1 and 2 "
-                       "threads. Every run of one resolution must end in the same state (same hash, same number of "
+                       "seed " + std::to_string(options.step.seed) +
+                       ", with sleeping grains skipped and with a full sweep of every cell, on 1 and " +
+                       std::to_string(threads) + " threads. Every run of one resolution must end in the same state (same hash, same number of "
                        "steps) and keep every grain.\n\n" +
                        toMarkdown(table) + "\nChecks: " +
                        (section.passed ? "all runs conserve their grains and agree on the final state."

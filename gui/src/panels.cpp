@@ -23,7 +23,7 @@ void drawPanels(AppState& state) {
         if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) drawDisplaySection(state);
         if (ImGui::CollapsingHeader("Scene")) drawSceneSection(state);
         // The scene shown now decides, not the one chosen for the next rebuild.
-        if (state.runningSceneKind == sandcore::SceneKind::Canvas &&
+        if (state.loaded.request.kind == sandcore::SceneKind::Canvas &&
             ImGui::CollapsingHeader("Painting", ImGuiTreeNodeFlags_DefaultOpen))
             drawPaintingSection(state);
         if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) drawStatisticsSection(state);
@@ -44,17 +44,17 @@ void drawControlSection(AppState& state) {
     if (ImGui::Button(running ? "Simulation: on " : "Simulation: off")) state.simulationRunning = !running;
     ImGui::PopStyleColor();
     ImGui::SameLine();
-    if (ImGui::Button("Step")) state.pending.singleStep = true;
+    if (ImGui::Button("Step")) state.commands.push(Command::SingleStep);
     ImGui::SameLine();
-    if (ImGui::Button("Reset")) state.pending.reset = true;
+    if (ImGui::Button("Reset")) state.commands.push(Command::Reset);
     ImGui::SameLine();
-    if (ImGui::Button("Exit")) state.pending.quit = true;
+    if (ImGui::Button("Exit")) state.commands.push(Command::Quit);
     float speed = float(state.stepsPerSecond);
     if (ImGui::SliderFloat("flow (steps/s)", &speed, 1.0f, 240.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
         state.stepsPerSecond = speed;
-    if (ImGui::Button("Screenshot (P)")) state.pending.screenshot = true;
+    if (ImGui::Button("Screenshot (P)")) state.commands.push(Command::Screenshot);
     ImGui::SameLine();
-    if (ImGui::Button("Benchmark (B)")) state.pending.benchmark = true;
+    if (ImGui::Button("Benchmark (B)")) state.commands.push(Command::Benchmark);
 }
 
 void drawDisplaySection(AppState& state) {
@@ -98,28 +98,34 @@ void drawDisplaySection(AppState& state) {
 
 void drawSceneSection(AppState& state) {
     SceneSettings& scene = state.scene;
+    // What runs now, whatever the controls below are set to.
+    const SceneRequest& loaded = state.loaded.request;
+    const std::string source = !loaded.modelPath.empty() ? std::filesystem::path(loaded.modelPath).filename().string()
+                               : !loaded.shape.empty()   ? loaded.shape + " (procedural)"
+                                                         : "procedural";
+    ImGui::Text("loaded: %s %s, resolution %d", sceneKindName(loaded.kind),
+                loaded.kind == sandcore::SceneKind::Canvas ? "" : source.c_str(), loaded.resolution);
     int kind = int(scene.request.kind);
     const char* kinds[] = {"hourglass", "sculpture", "canvas"};
     if (ImGui::Combo("scene", &kind, kinds, 3)) {
         scene.request.kind = sandcore::SceneKind(kind);
         scene.request.shape.clear(); // each scene has its own default model
         scene.request.modelPath = defaultModelFor(scene.request.kind);
-        state.pending.rebuild = true;
+        state.commands.push(Command::Rebuild);
     }
     if (scene.request.kind != sandcore::SceneKind::Canvas) {
         const char* shapes[] = {"hourglass", "sphere", "cube"};
         const bool hourglass = scene.request.kind == sandcore::SceneKind::Hourglass;
         const std::string current =
             !scene.request.shape.empty() ? scene.request.shape : hourglass ? "hourglass" : "sphere";
-        const std::string shown = scene.request.modelPath.empty()
-                                      ? current
-                                      : std::filesystem::path(scene.request.modelPath).filename().string();
-        if (ImGui::BeginCombo("procedural shape", shown.c_str())) {
+        // A model file and a procedural shape exclude each other; the combo says which is chosen.
+        const std::string shown = scene.request.modelPath.empty() ? current : "(a model file, below)";
+        if (ImGui::BeginCombo("shape", shown.c_str())) {
             for (const char* shape : shapes)
                 if (ImGui::Selectable(shape, scene.request.modelPath.empty() && current == shape)) {
                     scene.request.shape = shape;
                     scene.request.modelPath.clear();
-                    state.pending.rebuild = true;
+                    state.commands.push(Command::Rebuild);
                 }
             ImGui::EndCombo();
         }
@@ -128,7 +134,7 @@ void drawSceneSection(AppState& state) {
                 if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(),
                                       scene.request.modelPath == file)) {
                     scene.request.modelPath = file;
-                    state.pending.rebuild = true;
+                    state.commands.push(Command::Rebuild);
                 }
             if (state.modelFiles.empty()) ImGui::TextDisabled("(no model files)");
             ImGui::EndListBox();
@@ -137,18 +143,21 @@ void drawSceneSection(AppState& state) {
         scene.request.modelPath.copy(path, sizeof path - 1);
         if (ImGui::InputText("model path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
             scene.request.modelPath = path;
-            state.pending.rebuild = true;
+            state.commands.push(Command::Rebuild);
         }
         ImGui::TextDisabled("or drop a model file on the window");
         drawModelOptions(state);
     }
-    ImGui::SliderInt("resolution", &scene.request.resolution, 16, 256);
-    int seed = int(scene.seed);
-    if (ImGui::InputInt("seed", &seed) && seed >= 0) scene.seed = std::uint64_t(seed);
-    ImGui::SliderInt("threads", &scene.threads, 1, 16);
-    if (ImGui::Button("Rebuild scene")) state.pending.rebuild = true;
+    // The slider spans the useful resolutions; the command line takes the whole range.
+    ImGui::SliderInt("resolution", &scene.request.resolution, kResolutionRange.min, 512);
+    if (ImGui::IsItemDeactivatedAfterEdit()) state.commands.push(Command::Rebuild);
+    // Seed and threads apply to the next step; the scene is not rebuilt.
+    if (ImGui::InputScalar("seed", ImGuiDataType_U64, &scene.step.seed)) state.commands.push(Command::ApplyStepSettings);
+    if (ImGui::SliderInt("threads", &scene.step.threads, kThreadsRange.min, 16))
+        state.commands.push(Command::ApplyStepSettings);
+    if (ImGui::Button("Rebuild scene")) state.commands.push(Command::Rebuild);
     ImGui::SameLine();
-    if (ImGui::Button("Frame camera")) state.pending.frameCamera = true;
+    if (ImGui::Button("Frame camera")) state.commands.push(Command::FrameCamera);
 }
 
 void drawModelOptions(AppState& state) {
@@ -156,14 +165,14 @@ void drawModelOptions(AppState& state) {
     if (!ImGui::TreeNode("model options")) return;
     SceneRequest& request = state.scene.request;
     ImGui::BeginDisabled(request.modelPath.empty()); // procedural shapes are solid already
-    if (ImGui::Checkbox("robust inside test (open meshes)", &request.robust)) state.pending.rebuild = true;
-    if (ImGui::Checkbox("stretch to resolution", &request.stretch)) state.pending.rebuild = true;
+    if (ImGui::Checkbox("robust inside test (open meshes)", &request.robust)) state.commands.push(Command::Rebuild);
+    if (ImGui::Checkbox("stretch to resolution", &request.stretch)) state.commands.push(Command::Rebuild);
     ImGui::SliderInt("noNoise threshold", &request.noiseThreshold, -1, 3, request.noiseThreshold < 0 ? "off" : "%d");
     // Rebuild when the slider is let go, not on every value dragged past.
-    if (ImGui::IsItemDeactivatedAfterEdit()) state.pending.rebuild = true;
+    if (ImGui::IsItemDeactivatedAfterEdit()) state.commands.push(Command::Rebuild);
     ImGui::EndDisabled();
     ImGui::BeginDisabled(request.kind != sandcore::SceneKind::Hourglass);
-    if (ImGui::Checkbox("carve the upper bulb to drain", &request.drainCompletely)) state.pending.rebuild = true;
+    if (ImGui::Checkbox("carve the upper bulb to drain", &request.drainCompletely)) state.commands.push(Command::Rebuild);
     ImGui::EndDisabled();
     ImGui::TreePop();
 }
@@ -210,7 +219,7 @@ void drawPaintingSection(AppState& state) {
                 if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(),
                                       painting.loadedDraft == file)) {
                     painting.draftPath = file;
-                    state.pending.loadDraft = true;
+                    state.commands.push(Command::LoadDraft);
                 }
             ImGui::EndCombo();
         }
@@ -218,7 +227,7 @@ void drawPaintingSection(AppState& state) {
         painting.draftPath.copy(path, sizeof path - 1);
         if (ImGui::InputText("draft path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
             painting.draftPath = path;
-            state.pending.loadDraft = true;
+            state.commands.push(Command::LoadDraft);
         }
         ImGui::TextDisabled("or drop a PNG or JPEG on the window");
         ImGui::TreePop();
@@ -226,7 +235,7 @@ void drawPaintingSection(AppState& state) {
 
     // P7
     ImGui::BeginDisabled(painting.undoSteps == 0);
-    if (ImGui::Button("Undo stroke (Ctrl+Z)")) state.pending.undo = true;
+    if (ImGui::Button("Undo stroke (Ctrl+Z)")) state.commands.push(Command::Undo);
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::Text("%zu kept (%.0f MiB)", painting.undoSteps, double(painting.undoBytes) / double(1 << 20));
@@ -236,9 +245,9 @@ void drawPaintingSection(AppState& state) {
         ImGui::TextDisabled("box in lower-grid cells, max exclusive");
         ImGui::InputInt3("min x y z", painting.obstacleMin.data());
         ImGui::InputInt3("max x y z", painting.obstacleMax.data());
-        if (ImGui::Button("Add obstacle")) state.pending.addObstacle = true;
+        if (ImGui::Button("Add obstacle")) state.commands.push(Command::AddObstacle);
         ImGui::SameLine();
-        if (ImGui::Button("Clear obstacles")) state.pending.clearObstacles = true;
+        if (ImGui::Button("Clear obstacles")) state.commands.push(Command::ClearObstacles);
         ImGui::TreePop();
     }
 }

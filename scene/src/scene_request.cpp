@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+#include <type_traits>
 
 namespace sandglass {
 
@@ -85,14 +86,47 @@ sandcore::Int3 proceduralMaskSize(std::string_view shape, int resolution) {
 
 } // namespace
 
-void requireNoShapeForCanvas(const SceneRequest& request) {
+namespace {
+
+template <class T> std::string valueText(T value) {
+    if constexpr (std::is_floating_point_v<T>) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", double(value));
+        return text;
+    } else {
+        return std::to_string(value);
+    }
+}
+
+template <class T> void requireInRange(const SettingRange<T>& range, T value) {
+    // Written so that NaN fails too.
+    if (!(value >= range.min && value <= range.max))
+        throw std::invalid_argument(std::string(range.option) + " must lie in " + valueText(range.min) + ".." +
+                                    valueText(range.max) + ", got " + valueText(value));
+}
+
+} // namespace
+
+void applySceneDefaults(SceneSettings& settings) {
+    SceneRequest& request = settings.request;
+    if (request.resolution == 0) request.resolution = defaultResolution(request.kind);
+    requireInRange(kResolutionRange, request.resolution);
+    requireInRange(kThreadsRange, settings.step.threads);
+    requireInRange(kNeckRadiusRange, double(request.neckRadius));
+    requireInRange(kFillRange, double(request.fillFraction));
+    requireInRange(kNoiseRange, request.noiseThreshold);
+    if (!request.modelPath.empty() && !request.shape.empty()) throw std::invalid_argument("choose either --model or --shape");
+    if (!request.shape.empty()) requireKnownShape(request.shape);
     if (request.kind == SceneKind::Canvas && (!request.modelPath.empty() || !request.shape.empty()))
         throw std::invalid_argument("the canvas takes no model or shape (they are for the hourglass and the sculpture)");
 }
 
-BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::StepSettings& step) {
-    const int resolution = request.resolution != 0 ? request.resolution : defaultResolution(request.kind);
-    if (resolution < 8) throw std::invalid_argument("resolution must be at least 8 cells, got " + std::to_string(resolution));
+BuiltScene buildSceneWithReport(const SceneSettings& requested) {
+    SceneSettings checked = requested;
+    applySceneDefaults(checked);
+    const SceneRequest& request = checked.request;
+    const sandcore::StepSettings& step = checked.step;
+    const int resolution = request.resolution;
     if (request.kind == SceneKind::Canvas) {
         sandcore::CanvasSettings canvas;
         canvas.upperSize = {resolution, std::max(2, resolution / 6), resolution};
@@ -119,8 +153,6 @@ BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::Ste
         if (!hourglass) return {sandcore::makeSculptureScene(mask, step), std::nullopt, 0};
         return {sandcore::makeHourglassScene(mask, settings, step), std::nullopt, 0};
     }
-    if (request.noiseThreshold > 5)
-        throw std::invalid_argument("noise threshold must lie in -1..5, got " + std::to_string(request.noiseThreshold));
     sandcore::VoxelizeSettings voxelize;
     voxelize.resolution = resolution;
     voxelize.stretch = request.stretch;
@@ -146,8 +178,6 @@ BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::Ste
     }
 }
 
-sandcore::Scene buildScene(const SceneRequest& request, const sandcore::StepSettings& step) {
-    return std::move(buildSceneWithReport(request, step).scene);
-}
+sandcore::Scene buildScene(const SceneSettings& settings) { return std::move(buildSceneWithReport(settings).scene); }
 
 } // namespace sandglass

@@ -4,6 +4,7 @@
 #include "support/app_test_support.hpp"
 
 #include "app/application.hpp"
+#include "app/frame_benchmark_runner.hpp"
 
 #include "sandcore/display_positions.hpp"
 
@@ -84,7 +85,7 @@ TEST_CASE("application: a single step while paused shows the grains that moved a
     const std::uint64_t stepsBefore = app->scene().counters().stepsDone;
     REQUIRE(stepsBefore > 0);
 
-    app->state().pending.singleStep = true;
+    app->state().commands.push(Command::SingleStep);
     app->renderFrame(1.0 / 45.0);
     REQUIRE(app->scene().counters().stepsDone == stepsBefore + 1);
     REQUIRE(app->scene().counters().movesLastStep > 0);
@@ -106,22 +107,22 @@ TEST_CASE("application: a rebuild requested while a build runs is built next, so
     SceneRequest& request = app->state().scene.request;
     request.kind = sandcore::SceneKind::Canvas;
     request.resolution = 160; // big enough that the second request usually finds it still building
-    app->state().pending.rebuild = true;
+    app->state().commands.push(Command::Rebuild);
     app->serveCommands();
-    CHECK(app->state().runningSceneKind == sandcore::SceneKind::Hourglass); // not adopted yet
-    const bool firstStillBuilding = app->rebuilding();
+    CHECK(app->state().loaded.request.kind == sandcore::SceneKind::Hourglass); // not adopted yet
+    const bool firstStillBuilding = app->host().building();
     request.resolution = 40;
-    app->state().pending.rebuild = true;
+    app->state().commands.push(Command::Rebuild);
     app->serveCommands();
-    if (firstStillBuilding && app->rebuilding()) CHECK(app->state().pending.rebuild); // waits, not dropped
+    if (firstStillBuilding && app->host().building()) CHECK(app->host().buildWaiting()); // waits, not dropped
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while ((app->rebuilding() || app->state().pending.rebuild) && std::chrono::steady_clock::now() < deadline) {
+    while (app->host().building() && std::chrono::steady_clock::now() < deadline) {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
         app->serveCommands();
     }
-    REQUIRE_FALSE(app->rebuilding());
+    REQUIRE_FALSE(app->host().building());
     CHECK(app->scene().kind() == sandcore::SceneKind::Canvas);
-    CHECK(app->state().runningSceneKind == sandcore::SceneKind::Canvas);
+    CHECK(app->state().loaded.request.kind == sandcore::SceneKind::Canvas);
     CHECK(app->scene().grid(sandcore::GridLevel::Lower).size().x == 40);
 }
 
@@ -139,11 +140,26 @@ TEST_CASE("application: the benchmark leaves the user's scene as it was (state h
     timing.minFrames = 3;
     timing.maxFrames = 3;
     timing.maxSeconds = 5.0;
-    const BenchmarkReport report =
-        app->runBenchmark({{RenderMode::Points, 1, false, true}, {RenderMode::PseudoBillboards, 4, true, false}}, timing);
+    const BenchmarkReport report = runFrameBenchmark(*app, {{RenderMode::Points, 1, false, true}, {RenderMode::PseudoBillboards, 4, true, false}}, timing);
     REQUIRE(report.rows.size() == 2);
     CHECK(app->scene().stateHash() == before);
     CHECK(app->scene().counters().stepsDone == stepsBefore);
     CHECK(app->state().render.mode == renderBefore.mode);
     CHECK_FALSE(app->state().simulationRunning);
+}
+
+TEST_CASE("application: seed and threads from the panel apply to the next step without a rebuild") {
+    if (!testing::requireDisplay("step settings")) return;
+    std::optional<Application> app = open(smallHourglass(0));
+    if (!app) return;
+    app->runSteps(10);
+    const std::uint64_t stepsBefore = app->scene().counters().stepsDone;
+    app->state().scene.step.threads = 2;
+    app->state().scene.step.seed = 5;
+    app->state().commands.push(Command::ApplyStepSettings);
+    app->serveCommands();
+    CHECK_FALSE(app->host().building());
+    CHECK(app->scene().settings().threads == 2);
+    CHECK(app->scene().settings().seed == 5);
+    CHECK(app->scene().counters().stepsDone == stepsBefore); // the same scene runs on
 }

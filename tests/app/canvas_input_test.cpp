@@ -71,12 +71,12 @@ TEST_CASE("painting: a mouse stroke releases grains exactly over its joined colu
         if (!app) return;
         app->state().painting.pickAtTarget = atTarget;
         const std::vector<CanvasColumn> samples{{4, 6}, {30, 17}, {22, 40}, {22, 40}, {9, 33}};
-        const std::int64_t redraws = app->canvasInput().picker().redraws();
+        const std::int64_t redraws = app->canvas().input().picker().redraws();
         stroke(*app, samples);
         const auto expected = joined(samples);
         CHECK(releasedColumns(app->scene()) == expected);
         CHECK(app->scene().grainCount() == std::int64_t(expected.size()));
-        CHECK(app->canvasInput().picker().redraws() == redraws + 1); // drawn on button down only
+        CHECK(app->canvas().input().picker().redraws() == redraws + 1); // drawn on button down only
         CHECK(app->state().painting.undoSteps == 1);
     }
 }
@@ -136,7 +136,7 @@ TEST_CASE("painting: the eraser takes top grains and never an obstacle cell") {
     PaintingSettings& painting = app->state().painting;
     painting.obstacleMin = {10, 0, 10};
     painting.obstacleMax = {20, 5, 20};
-    app->state().pending.addObstacle = true;
+    app->state().commands.push(Command::AddObstacle);
     app->serveCommands();
     const std::int64_t obstacleCells = invalidCells(app->scene().grid(GridLevel::Lower));
     REQUIRE(obstacleCells == 10 * 5 * 10);
@@ -163,7 +163,7 @@ TEST_CASE("painting: the eraser takes top grains and never an obstacle cell") {
     CHECK(app->scene().grainCount() == 0);
     CHECK(invalidCells(app->scene().grid(GridLevel::Lower)) == obstacleCells);
 
-    app->state().pending.clearObstacles = true;
+    app->state().commands.push(Command::ClearObstacles);
     app->serveCommands();
     CHECK(invalidCells(app->scene().grid(GridLevel::Lower)) == 0);
 }
@@ -182,14 +182,14 @@ TEST_CASE("painting: undo restores the grid exactly (state hash), stroke by stro
     CHECK(app->scene().stateHash() != afterFirst);
     CHECK(app->state().painting.undoSteps == 2);
 
-    app->state().pending.undo = true;
+    app->state().commands.push(Command::Undo);
     app->serveCommands();
     CHECK(app->scene().stateHash() == afterFirst);
-    app->state().pending.undo = true;
+    app->state().commands.push(Command::Undo);
     app->serveCommands();
     CHECK(app->scene().stateHash() == empty);
     CHECK(app->state().painting.undoSteps == 0);
-    app->state().pending.undo = true;
+    app->state().commands.push(Command::Undo);
     app->serveCommands();
     CHECK(app->state().statusLine == "nothing to undo");
     CHECK(keyCommand({}, GLFW_KEY_Z, GLFW_MOD_CONTROL) == KeyCommand::Undo);
@@ -207,13 +207,13 @@ TEST_CASE("painting: a bad draft image gives a one-line error and the canvas kee
     CHECK_FALSE(app->loadDraft(broken.string()));
     CHECK(app->state().statusLine.find(broken.string() + ": not a readable PNG or JPEG image") == 0);
     CHECK(app->state().statusLine.find('\n') == std::string::npos);
-    CHECK(app->canvasInput().draft() == nullptr);
+    CHECK(app->canvas().input().draft() == nullptr);
 
     const std::string sun = std::string(SANDGLASS_SOURCE_DIR) + "/models/draft_sun.png";
     REQUIRE(app->loadDraft(sun));
     CHECK_FALSE(app->loadDraft(broken.string())); // the sun stays the draft
-    REQUIRE(app->canvasInput().draft() != nullptr);
-    CHECK(app->canvasInput().draft()->path() == sun);
+    REQUIRE(app->canvas().input().draft() != nullptr);
+    CHECK(app->canvas().input().draft()->path() == sun);
     CHECK(app->state().painting.loadedDraft == sun);
     std::filesystem::remove(broken);
 
@@ -230,7 +230,7 @@ TEST_CASE("painting: a bad draft image gives a one-line error and the canvas kee
             const sandcore::CellValue id = upper.at(x, s.y - 1, z);
             if (id < 0) continue;
             CHECK(grains.color[std::size_t(id)] ==
-                  app->canvasInput().draft()->colorAt((x + 0.5) / s.x, (z + 0.5) / s.z));
+                  app->canvas().input().draft()->colorAt((x + 0.5) / s.x, (z + 0.5) / s.z));
             ++checked;
         }
     CHECK(checked == std::int64_t(grains.size()));
@@ -254,25 +254,27 @@ TEST_CASE("painting: undo back to a different obstacle of the same count rebuild
     PaintingSettings& painting = app->state().painting;
     painting.obstacleMin = {4, 0, 4};
     painting.obstacleMax = {10, 5, 10};
-    app->state().pending.addObstacle = true;
+    app->state().commands.push(Command::AddObstacle);
     app->serveCommands();
     const std::vector<sandcore::CellBox> first = app->scene().obstacles(GridLevel::Lower);
     REQUIRE(first.size() == 1);
     stroke(*app, {{20, 20}, {30, 20}}); // its snapshot holds the first obstacle
 
     // Swap the obstacle for another one: the count stays 1.
-    app->state().pending.clearObstacles = true;
+    app->state().commands.push(Command::ClearObstacles);
     app->serveCommands();
     painting.obstacleMin = {30, 0, 30};
     painting.obstacleMax = {40, 8, 40};
-    app->state().pending.addObstacle = true;
+    app->state().commands.push(Command::AddObstacle);
     app->serveCommands();
     REQUIRE(app->scene().obstacles(GridLevel::Lower).size() == 1);
+    app->renderFrame(0.0); // the next frame draws the new layout
     CHECK(app->renderer().hullShowsObstaclesOf(app->scene()));
 
-    app->state().pending.undo = true;
+    app->state().commands.push(Command::Undo);
     app->serveCommands();
     REQUIRE(app->scene().obstacles(GridLevel::Lower).size() == 1);
     CHECK(app->scene().obstacles(GridLevel::Lower)[0].min == first[0].min);
+    app->renderFrame(0.0);
     CHECK(app->renderer().hullShowsObstaclesOf(app->scene())); // the hull shows the first box again
 }

@@ -109,7 +109,7 @@ TEST_CASE("picking: the id at each column's projected centre is that column (256
             app->camera().setView(v.view);
             app->camera().rotate(v.yaw, v.pitch);
             app->camera().zoom(v.zoom);
-            const std::int64_t redrawsBefore = app->canvasInput().picker().redraws();
+            const std::int64_t redrawsBefore = app->canvas().input().picker().redraws();
             const PickCounts counts = checkView(*app, target);
             MESSAGE(v.name << " target " << int(target) << ": " << counts.onScreen << " on screen, "
                            << counts.resolvable << " resolvable");
@@ -117,7 +117,7 @@ TEST_CASE("picking: the id at each column's projected centre is that column (256
             // Exactness is checked on many cells, not a few: most on-screen cells are resolvable.
             CHECK(counts.resolvable > 5000);
             // Thousands of lookups, one drawing and read-back of the id image.
-            CHECK(app->canvasInput().picker().redraws() == redrawsBefore + 1);
+            CHECK(app->canvas().input().picker().redraws() == redrawsBefore + 1);
         }
 }
 
@@ -137,16 +137,16 @@ TEST_CASE("picking: a new view or window draws the id image again, the same view
     if (!testing::requireDisplay("picking")) return;
     std::optional<Application> app = openCanvas(32);
     if (!app) return;
-    const std::int64_t start = app->canvasInput().picker().redraws();
+    const std::int64_t start = app->canvas().input().picker().redraws();
     app->columnUnderCursor(kWidth / 2.0, kHeight / 2.0);
     app->columnUnderCursor(kWidth / 2.0 + 5.0, kHeight / 2.0);
-    CHECK(app->canvasInput().picker().redraws() == start + 1);
+    CHECK(app->canvas().input().picker().redraws() == start + 1);
     app->camera().rotate(0.1f, 0.0f);
     app->columnUnderCursor(kWidth / 2.0, kHeight / 2.0);
-    CHECK(app->canvasInput().picker().redraws() == start + 2);
+    CHECK(app->canvas().input().picker().redraws() == start + 2);
     app->state().painting.pickAtTarget = true; // the other surface is another image
     app->columnUnderCursor(kWidth / 2.0, kHeight / 2.0);
-    CHECK(app->canvasInput().picker().redraws() == start + 3);
+    CHECK(app->canvas().input().picker().redraws() == start + 3);
 }
 
 TEST_CASE("picking: cursor coordinates scale to framebuffer pixels on HiDPI screens") {

@@ -107,14 +107,14 @@ TEST_CASE("a bad model leaves the running scene untouched") {
     SceneRequest request;
     request.modelPath = defaultModelPath();
     request.resolution = 32;
-    sandcore::Scene running = buildScene(request, step);
+    sandcore::Scene running = buildScene({request, step});
     for (int i = 0; i < 20; ++i) running.step();
     const std::uint64_t hash = running.stateHash();
     const std::int64_t grains = running.grainCount();
 
     request.modelPath = dir.write("points.obj", "v 0 0 0\nv 1 0 0\np 1 2\n");
     try {
-        running = buildScene(request, step); // the assignment never happens
+        running = buildScene({request, step}); // the assignment never happens
         FAIL("no error for a points-only model");
     } catch (const ModelError& e) {
         CHECK(std::string(e.what()) == request.modelPath + ": contains no triangles (only points or lines, or nothing)");

@@ -27,7 +27,7 @@ TEST_CASE("every bundled hourglass drains completely") {
             SceneRequest request;
             request.modelPath = bundled(name);
             request.resolution = resolution;
-            BuiltScene built = buildSceneWithReport(request, {});
+            BuiltScene built = buildSceneWithReport({request, {}});
             INFO(name << " at " << resolution);
             REQUIRE(built.model.has_value());
             CHECK(built.model->voxels.closedness.closed);
@@ -43,7 +43,7 @@ TEST_CASE("the shelf hourglass keeps sand on its shelf without noSharpEdges") {
     request.modelPath = bundled("shelf_hourglass.obj");
     request.resolution = 40;
     request.drainCompletely = false;
-    sandcore::Scene scene = buildScene(request, {});
+    sandcore::Scene scene = buildScene({request, {}});
     CHECK(grainsLeftAfterDrain(scene) > 0);
 }
 
@@ -53,7 +53,7 @@ TEST_CASE("bundled sculptures fill their model and collapse onto the floor") {
         request.kind = sandcore::SceneKind::Sculpture;
         request.modelPath = bundled(name);
         request.resolution = 24;
-        BuiltScene built = buildSceneWithReport(request, {});
+        BuiltScene built = buildSceneWithReport({request, {}});
         INFO(name);
         REQUIRE(built.model.has_value());
         CHECK(built.model->voxels.closedness.closed);
@@ -74,7 +74,7 @@ TEST_CASE("procedural and canvas scenes too large for memory are refused before 
                                      sandcore::SceneKind::Canvas}) {
         request.kind = kind;
         try {
-            sandglass::buildScene(request, {});
+            sandglass::buildScene({request, {}});
             FAIL("a scene over the memory limit was built");
         } catch (const std::invalid_argument& e) {
             CHECK(std::string(e.what()).find("too large for memory at resolution 256") != std::string::npos);
@@ -82,7 +82,7 @@ TEST_CASE("procedural and canvas scenes too large for memory are refused before 
     }
     request.resolution = 0; // the scene's default fits easily
     request.kind = sandcore::SceneKind::Canvas;
-    const sandcore::Scene canvas = sandglass::buildScene(request, {});
+    const sandcore::Scene canvas = sandglass::buildScene({request, {}});
     CHECK(canvas.grid(sandcore::GridLevel::Lower).size() == sandcore::Int3{60, 40, 60});
     CHECK(canvas.grid(sandcore::GridLevel::Upper).size() == sandcore::Int3{60, 10, 60});
 }

@@ -1,26 +1,20 @@
 #pragma once
-// The window application (SPEC G1-G4): the ImGui main loop of poll -> new frame -> panels ->
-// commands -> simulation steps by the SimClock -> scene -> panels drawn -> swap. The same
-// object renders hidden frames for `sandglass render` and runs the B1 benchmark.
+// The window application: the window loop over a scene host, a canvas controller, the
+// renderer and the panels.
 
+#include "app/imgui_layer.hpp"
 #include "view/app_state.hpp"
 #include "view/camera.hpp"
-#include "app/frame_benchmark.hpp"
-#include "app/imgui_layer.hpp"
 #include "view/input_routing.hpp"
-#include "view/paint/canvas_input.hpp"
+#include "view/paint/canvas_controller.hpp"
 #include "view/render/framebuffer.hpp"
 #include "view/render/scene_renderer.hpp"
 #include "view/window.hpp"
 
-#include "sandcore/scene.hpp"
-#include "sandcore/sim_clock.hpp"
+#include "scene/scene_host.hpp"
 
-#include <chrono>
+#include <cstdint>
 #include <filesystem>
-#include <functional>
-#include <future>
-#include <memory>
 #include <optional>
 
 namespace sandglass {
@@ -38,6 +32,10 @@ struct ApplicationOptions {
     float cameraZoom = 1.0f;         ///< start closer (< 1) or farther (> 1) than the framing distance
 };
 
+/// The window loop: poll -> new frame -> panels -> commands -> steps by the clock -> scene ->
+/// panels drawn -> swap. The scene lives in a SceneHost, the canvas work in a CanvasController;
+/// the loop routes input to them and draws. The same object renders hidden frames for
+/// `sandglass render` and the frames the frame-rate benchmark measures.
 class Application {
 public:
     /// Opens the window and builds the scene; throws WindowError (no display / GL context),
@@ -49,63 +47,59 @@ public:
 
     /// The main loop until the window closes, Esc, Exit or the frame limit; returns the exit code.
     int run();
-    /// One whole frame into the current target, with `elapsedSeconds` of wall time fed to the
-    /// clock; does not swap.
+    /// One whole frame of the running scene into the current target, with `elapsedSeconds` of
+    /// wall time fed to the clock; does not swap.
     void renderFrame(double elapsedSeconds);
+    /// One frame of another host (the frame benchmark's own scene) drawn with these settings,
+    /// panels included when `panels`; the application's own scene and settings stay untouched.
+    void renderHostFrame(SceneHost& host, const RenderSettings& render, bool panels, double elapsedSeconds);
+    /// Shows the frame drawn (or, offscreen, waits until it is drawn).
+    void finishFrame();
     /// The last frame drawn, read back from the target.
     RgbImage captureFrame() const;
-    /// Runs the B1 cases on the current scene (simulation and GUI on) and returns the rows;
-    /// afterwards the scene is as it was before (each row resets it to measure the same flow).
-    BenchmarkReport runBenchmark(const std::vector<BenchmarkCase>& cases, const BenchmarkTiming& timing);
+    /// Framebuffer size of the current target, pixels.
+    void targetSize(int& width, int& height) const;
 
-    /// The canvas mouse path (SPEC P1-P4): the window's mouse handling calls it every frame in
-    /// the canvas scene, tests call it with scripted samples. Returns true when grains changed.
+    /// The canvas mouse path: the window's mouse handling calls it every frame in the canvas
+    /// scene, tests call it with scripted samples. Returns true when grains changed.
     bool handleCanvasPointer(const PointerSample& sample);
-    /// P1: the canvas column under a cursor position (window coordinates) on the surface the
+    /// The canvas column under a cursor position (window coordinates) on the surface the
     /// painting settings pick (source or target); the same lookup a stroke makes.
     std::optional<CanvasColumn> columnUnderCursor(double cursorX, double cursorY);
     /// The view the canvas is picked in: the camera and the current window and target sizes.
     CanvasView canvasView() const;
-    /// P5: loads a PNG or JPEG as the draft and shows it; on a bad file the status line gets the
+    /// Loads a PNG or JPEG as the draft and shows it; on a bad file the status line gets the
     /// one-line reason and the previous draft stays. Returns true when it loaded.
     bool loadDraft(const std::string& path);
-    /// Serves the commands the panels and keys raised (rebuild, reset, undo, draft, obstacles...).
+    /// Serves the commands the panels and keys queued (rebuild, reset, undo, draft, obstacles...).
     void serveCommands();
     /// Runs simulation steps now, outside the clock (for scripted drawings and tests).
-    void runSteps(int steps);
-    /// True while a scene is being built in the background (a rebuild request waits for it).
-    bool rebuilding() const { return pendingScene_.valid(); }
-    const CanvasInput& canvasInput() const { return canvasInput_; } ///< picker and painter state
-    /// Share (0..1) of the last step's glide that frames draw now: the clock's fraction while it
-    /// runs the steps, 1 (grains at their new cells) after steps made outside it (a single step
-    /// while paused, runSteps, the steps before the first frame of `sandglass render`).
-    float displayStepFraction() const;
-    const SceneRenderer& renderer() const { return renderer_; } ///< what the last frame drew
+    void runSteps(int steps) { host_.runSteps(steps); }
+    /// Share (0..1) of the last step's glide that frames draw now.
+    float displayStepFraction() const { return host_.displayStepFraction(); }
 
-    AppState& state() { return state_; }                         ///< panels' view of the application
-    const sandcore::Scene& scene() const { return *scene_; }     ///< the running scene
-    OrbitCamera& camera() { return camera_; }                    ///< the view
-    std::int64_t framesDrawn() const { return framesDrawn_; }    ///< frames since start
-    const Window& window() const { return window_; }             ///< the window and its context
+    AppState& state() { return state_; }                          ///< the panels' view of the application
+    SceneHost& host() { return host_; }                           ///< the running scene, its builds and clock
+    const sandcore::Scene& scene() const { return host_.scene(); } ///< the running scene
+    const CanvasController& canvas() const { return canvas_; }    ///< strokes, draft and undo
+    const SceneRenderer& renderer() const { return renderer_; }   ///< what the last frame drew
+    OrbitCamera& camera() { return camera_; }                     ///< the view
+    std::int64_t framesDrawn() const { return framesDrawn_; }     ///< frames since start
+    const Window& window() const { return window_; }              ///< the window and its context
+    const ApplicationOptions& options() const { return options_; } ///< how it was started
 
 private:
     friend struct ApplicationCallbacks;
-    void targetSize(int& width, int& height) const;
     void bindTarget() const;
     void handleMouse();
     void handleKey(KeyCommand command);
-    void servePaintingCommands();
-    PaintSettings paintSettings() const;
-    void updateDraftPlacement();
-    void startRebuild();
-    void finishRebuild();
-    void adoptScene(sandcore::Scene scene);
-    void stepSimulation(double elapsedSeconds);
+    void serve(Command command);
+    void adoptBuild(const BuildOutcome& outcome);
+    void frameCamera();
+    void drawHost(SceneHost& host, const RenderSettings& render);
     void updateStatistics(double elapsedSeconds);
     void saveScreenshot(const std::filesystem::path& file);
     void runInteractiveBenchmark();
-    void runBenchmarkRows(const std::vector<BenchmarkCase>& cases, const BenchmarkTiming& timing,
-                          const std::function<void()>& frame, BenchmarkReport& report);
 
     ApplicationOptions options_;
     AppState state_;
@@ -113,14 +107,12 @@ private:
     ImGuiLayer imgui_;
     std::optional<OffscreenTarget> offscreen_;
     SceneRenderer renderer_;
-    CanvasInput canvasInput_;
-    std::unique_ptr<sandcore::Scene> scene_;
-    std::future<sandcore::Scene> pendingScene_;
-    std::chrono::steady_clock::time_point rebuildStarted_;
-    sandcore::SimClock clock_;
-    // The last step did not come from the running clock, whose fraction would show it undone.
-    bool lastStepOutsideClock_ = false;
+    SceneHost host_;
+    CanvasController canvas_;
     OrbitCamera camera_;
+    // Which host's grains and layout the renderer holds, so it is told only of real changes.
+    const SceneHost* drawnHost_ = nullptr;
+    std::uint64_t drawnContent_ = 0, drawnLayout_ = 0;
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
     std::int64_t framesDrawn_ = 0;
     int screenshotsTaken_ = 0;

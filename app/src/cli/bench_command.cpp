@@ -2,7 +2,9 @@
 // and PNG plots); with --render, the frame-rate benchmark B1 (thesis §4.3) on the thesis's
 // benchmark scene (about 3,500 filled cells) and a large one, written as benchmark.txt + .csv.
 #include "app/cli/commands.hpp"
+#include "app/cli/checked_options.hpp"
 #include "app/cli/view_options.hpp"
+#include "app/frame_benchmark_runner.hpp"
 
 #include "bench/speed_error_report.hpp"
 
@@ -21,13 +23,15 @@ struct BenchOptions {
     std::vector<int> resolutions{37, 248};
     std::string size = "1024x768";
     BenchmarkTiming timing;
+    sandcore::StepSettings step{1, 2, true};
 };
 
 int runRenderBenchmark(const BenchOptions& options, const std::string& commandLine) {
     std::vector<BenchmarkReport> reports;
     for (int resolution : options.resolutions) {
         ViewOptions view;
-        view.resolution = resolution;
+        view.scene.settings.request.resolution = resolution;
+        view.scene.settings.step = options.step;
         view.size = options.size;
         ApplicationOptions settings = applicationOptionsFrom(view, 1024, 768);
         settings.window.visible = false;
@@ -38,7 +42,7 @@ int runRenderBenchmark(const BenchOptions& options, const std::string& commandLi
                   << " filled cells" << std::endl;
         std::vector<BenchmarkCase> cases = thesisBenchmarkCases();
         if (options.quick) cases.resize(4); // inner drawn, 1 grain per cell, no light: one row per mode
-        reports.push_back(application.runBenchmark(cases, options.timing));
+        reports.push_back(runFrameBenchmark(application, cases, options.timing));
     }
     writeBenchmarkFiles(options.out, reports, commandLine);
     std::cout << "wrote " << (std::filesystem::path(options.out) / "benchmark.txt").string() << " and benchmark.csv"
@@ -50,7 +54,10 @@ int runSpeedErrorReport(const BenchOptions& options) {
     sandbench::ReportOptions report;
     report.quick = options.quick;
     report.outDir = options.out;
+    report.step = options.step;
     report.commandLine = std::string("sandglass bench") + (options.quick ? " --quick" : "") + " --out " + options.out;
+    if (options.step.threads != 2) report.commandLine += " --threads " + std::to_string(options.step.threads);
+    if (options.step.seed != 1) report.commandLine += " --seed " + std::to_string(options.step.seed);
     const bool passed = sandbench::writeSpeedErrorReport(report, std::cerr);
     std::cout << "report written to " << (report.outDir / "README.md").string() << "\n";
     if (!passed) std::cerr << "sandglass: some checks of the report failed (see the report)\n";
@@ -62,20 +69,23 @@ int runSpeedErrorReport(const BenchOptions& options) {
 void addBenchCommand(CLI::App& app, int& exitCode) {
     auto options = std::make_shared<BenchOptions>();
     CLI::App* cmd = app.add_subcommand(
-        "bench", "Benchmarks: the speed-against-error report (B2), or with --render the frame-rate benchmark (B1)");
-    cmd->add_flag("--render", options->render, "frame-rate benchmark B1: every mode, light, inner grains, 1 and 20 "
+        "bench", "Benchmarks: the speed-against-error report, or with --render the frame rates of every render mode");
+    cmd->add_flag("--render", options->render, "frame-rate benchmark: every mode, light, inner grains, 1 and 20 "
                                                "grains per cell; writes benchmark.txt and benchmark.csv");
     cmd->add_flag("--quick", options->quick,
-                  "B2: small resolutions, under a minute (CI smoke test); B1: one row per mode only");
+                  "small resolutions, under a minute; with --render: one row per mode only");
     cmd->add_option("--out", options->out, "folder for the result files")->capture_default_str();
-    cmd->add_option("--res", options->resolutions,
-                    "B1: hourglass resolutions to measure (37: 3,460 cells, 248: 995,072)")
-        ->capture_default_str()
-        ->check(CLI::Range(8, 1024));
-    cmd->add_option("--size", options->size, "B1: framebuffer size, WxH pixels")->capture_default_str();
-    cmd->add_option("--max-frames", options->timing.maxFrames, "B1: frames per row at most")->capture_default_str();
-    cmd->add_option("--seconds", options->timing.maxSeconds, "B1: seconds per row at most (after 3 frames)")
-        ->capture_default_str();
+    addNumberListOption(*cmd, "--res", options->resolutions, kResolutionRange.min, 1024,
+                        "with --render: hourglass resolutions to measure (default 37 248: about 3,500 and 1,000,000 grains)");
+    cmd->add_option("--size", options->size, "with --render: framebuffer size, WxH pixels")->capture_default_str();
+    addNumberOption(*cmd, "--max-frames", options->timing.maxFrames, 1, 1'000'000,
+                    "with --render: frames per row at most (default 120)");
+    addNumberOption(*cmd, "--seconds", options->timing.maxSeconds, 0.01, 3600.0,
+                    "with --render: seconds per row at most, after 3 frames (default 2)");
+    addNumberOption(*cmd, "--seed", options->step.seed, std::uint64_t{0}, ~std::uint64_t{0},
+                    "seed of every simulated scene (default 1)");
+    addNumberOption(*cmd, "--threads", options->step.threads, kThreadsRange.min, kThreadsRange.max,
+                    "threads compared with one thread in the report; threads of the scene with --render (default 2)");
     cmd->callback([options, &exitCode] {
         if (!options->render) {
             exitCode = runSpeedErrorReport(*options);
@@ -83,7 +93,8 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
         }
         std::ostringstream line;
         line << "sandglass bench --render" << (options->quick ? " --quick" : "");
-        line << " --out " << options->out << " --size " << options->size << " --res";
+        line << " --out " << options->out << " --size " << options->size << " --threads " << options->step.threads
+             << " --res";
         for (int r : options->resolutions) line << ' ' << r;
         exitCode = runRenderBenchmark(*options, line.str());
     });

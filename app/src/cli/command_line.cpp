@@ -1,22 +1,39 @@
 #include "app/cli/command_line.hpp"
 
 #include "app/cli/commands.hpp"
+#include "app/version.hpp"
 
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 
 namespace sandglass {
 
+namespace {
+
+// One code for a wrong command line, one for work that failed; documented in every --help.
+constexpr int kExitFailed = 1;
+constexpr int kExitUsage = 2;
+constexpr const char* kExitCodes =
+    "Exit codes: 0 success; 1 the work failed (a file that cannot be read or written, a broken model, "
+    "too little memory); 2 the command line is wrong (an unknown option, a value out of range).";
+
+} // namespace
+
 int runCommandLine(int argc, char** argv) {
-    CLI::App app{"sandglass: real-time 3D sand simulation (hourglass, sculpture, canvas)", "sandglass"};
-    app.set_version_flag("--version", SANDGLASS_VERSION);
+    CLI::App app{"sandglass: real-time 3D sand (hourglass, sculpture, canvas). Without a subcommand it opens "
+                 "the window on the default hourglass.",
+                 "sandglass"};
+    app.set_version_flag("--version", versionText());
     app.require_subcommand(0, 1);
+    app.footer(kExitCodes);
     int exitCode = 0;
     addSimulateCommand(app, exitCode);
     addVoxelizeCommand(app, exitCode);
     addGuiCommand(app, exitCode);
     addRenderCommand(app, exitCode);
     addBenchCommand(app, exitCode);
+    for (CLI::App* command : app.get_subcommands({})) command->footer(kExitCodes);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -28,17 +45,20 @@ int runCommandLine(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // One line, not CLI11's two-line message: scripts and tests read the first line.
         std::cerr << "sandglass: " << e.what() << " (see --help)\n";
-        return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
+        return kExitUsage;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "sandglass: " << e.what() << "\n";
+        return kExitUsage;
     } catch (const std::exception& e) {
         std::cerr << "sandglass: " << e.what() << "\n";
-        return 1;
+        return kExitFailed;
     }
     if (app.get_subcommands().empty()) {
         try {
             return runDefaultWindow();
         } catch (const std::exception& e) {
             std::cerr << "sandglass: " << e.what() << "\n";
-            return 1;
+            return kExitFailed;
         }
     }
     return exitCode;

@@ -1,5 +1,6 @@
 // SPEC §6: `sandglass gui` (and `sandglass` alone) opens the window on a scene.
 #include "app/cli/commands.hpp"
+#include "app/cli/checked_options.hpp"
 #include "app/cli/view_options.hpp"
 #include "app/paint_demo.hpp"
 
@@ -48,17 +49,15 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
     CLI::App* cmd = app.add_subcommand("gui", "Open the window on a scene (the default without a subcommand)");
     addViewOptions(*cmd, options->view);
     cmd->add_flag("--run", options->run, "start with the simulation on (the thesis starts with it off)");
-    cmd->add_option("--frames", options->frames, "close after this many frames (for tests and screenshots)")
-        ->check(CLI::NonNegativeNumber);
+    addNumberOption(*cmd, "--frames", options->frames, 0, 100'000'000, "close after this many frames (for tests and screenshots)");
     cmd->add_option("--screenshot", options->screenshot, "with --frames: save the last frame as PNG");
     cmd->add_option("--benchmark-dir", options->benchmarkFolder, "where the B key writes benchmark.txt and .csv")
         ->capture_default_str();
     cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image (P5)");
-    cmd->add_option("--paint-demo", options->paintDemoPasses,
-                    "canvas with --draft: pour this many layers of sand over the draft, colour from draft")
-        ->check(CLI::Range(1, 50));
+    addNumberOption(*cmd, "--paint-demo", options->paintDemoPasses, 1, 50,
+                    "canvas with --draft: pour this many layers of sand over the draft, colour from draft");
     cmd->callback([options, &exitCode] {
-        if (options->paintDemoPasses > 0 && (options->draft.empty() || options->view.scene != "canvas"))
+        if (options->paintDemoPasses > 0 && (options->draft.empty() || options->view.scene.scene != "canvas"))
             throw std::invalid_argument("--paint-demo needs --scene canvas and --draft FILE");
         if (!options->screenshot.empty() && options->frames == 0)
             throw std::invalid_argument("--screenshot needs --frames N (the key P saves screenshots interactively)");

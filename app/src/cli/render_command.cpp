@@ -1,6 +1,7 @@
 // SPEC C3: `sandglass render` simulates N steps, draws one frame in a hidden window and writes
 // it as PNG; --json reports the frame rate of a few more frames of the same view.
 #include "app/cli/commands.hpp"
+#include "app/cli/checked_options.hpp"
 #include "app/cli/view_options.hpp"
 
 #include <nlohmann/json.hpp>
@@ -50,7 +51,7 @@ int runRender(const RenderOptions& options) {
         out["fps"] = framesPerSecond;
         out["frame_ms"] = frameMilliseconds;
         out["out"] = options.out;
-        out["scene"] = options.view.scene;
+        out["scene"] = options.view.scene.scene;
         out["mode"] = renderModeName(render.mode);
         out["grains_per_cell"] = render.grainsPerCell;
         out["light"] = render.lighting;
@@ -74,9 +75,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     CLI::App* cmd = app.add_subcommand("render", "Simulate N steps, draw one frame offscreen and write a PNG");
     addViewOptions(*cmd, options->view);
     cmd->add_option("--out", options->out, "PNG file to write")->required();
-    cmd->add_option("--timed-frames", options->timedFrames, "frames drawn again to measure fps and frame_ms")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 100000));
+    addNumberOption(*cmd, "--timed-frames", options->timedFrames, 0, 100000,
+                    "frames drawn again to measure fps and frame_ms (default 10)");
     cmd->add_flag("--json", options->json, "print one JSON object (fps, frame_ms, ...)");
     cmd->callback([options, &exitCode] { exitCode = runRender(*options); });
 }

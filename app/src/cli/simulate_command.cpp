@@ -1,6 +1,8 @@
 // SPEC C1: `sandglass simulate` runs a scene headless and reports grains, moves, the state hash
 // and the speed, as text or one JSON object.
+#include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
+#include "app/cli/scene_options.hpp"
 #include "scene/hex.hpp"
 #include "scene/scene_request.hpp"
 #include "scene/statistics.hpp"
@@ -21,59 +23,66 @@ namespace sandglass {
 
 namespace {
 
+// 10^12 steps: days of running at the fastest rates; beyond that a typo, not a request.
+constexpr std::int64_t kMaxSteps = 1'000'000'000'000;
+
 struct SimulateOptions {
-    std::string scene = "hourglass";
-    SceneRequest request;
+    SceneOptions scene;
     std::int64_t steps = -1;
     bool untilSettled = false;
     std::int64_t maxSteps = 10'000'000;
-    std::uint64_t seed = 1;
-    int threads = 1;
     bool fullSweep = false;
     std::int64_t pour = 0;
     bool json = false;
 };
 
-int runSimulate(SimulateOptions& options) {
+int runSimulate(const SimulateOptions& options) {
     using Clock = std::chrono::steady_clock;
-    options.request.kind = parseSceneKind(options.scene);
-    requireNoShapeForCanvas(options.request);
-    if (options.steps < 0 && !options.untilSettled) options.steps = 1000;
-    if (!options.request.modelPath.empty() && options.request.kind == sandcore::SceneKind::Canvas)
-        throw std::invalid_argument("--model shapes an hourglass or a sculpture; the canvas has no model");
-    if (options.pour > 0 && options.request.kind != sandcore::SceneKind::Canvas)
+    SceneSettings settings = sceneSettingsFrom(options.scene);
+    settings.step.sleeping = !options.fullSweep;
+    const bool canvas = settings.request.kind == sandcore::SceneKind::Canvas;
+    if (options.pour > 0 && !canvas)
         throw std::invalid_argument("--pour releases sand on the canvas; use it with --scene canvas");
-
-    sandcore::StepSettings step;
-    step.seed = options.seed;
-    step.threads = options.threads;
-    step.sleeping = !options.fullSweep;
-    sandcore::Scene scene = buildScene(options.request, step);
+    sandcore::Scene scene = buildScene(settings);
 
     const std::int64_t grainsInitial = scene.grainCount();
-    const std::int64_t stepLimit = options.untilSettled ? options.maxSteps : options.steps;
+    if (options.pour > 0) {
+        std::int64_t room = 0;
+        for (sandcore::GridLevel level : {sandcore::GridLevel::Upper, sandcore::GridLevel::Lower})
+            for (sandcore::CellValue cell : scene.grid(level).cells()) room += cell == sandcore::kEmpty;
+        // The grids share one row, so their empty cells overcount by up to that row.
+        room -= std::int64_t(scene.grid(sandcore::GridLevel::Lower).layerSize());
+        if (options.pour > room)
+            throw std::invalid_argument("--pour " + std::to_string(options.pour) + ": the canvas holds at most " +
+                                        std::to_string(std::max<std::int64_t>(room, 0)) + " grains at --res " +
+                                        std::to_string(settings.request.resolution));
+    }
+    const std::int64_t steps = options.steps >= 0 ? options.steps : 1000;
+    const std::int64_t stepLimit = options.untilSettled ? options.maxSteps : steps;
     const std::uint32_t pourAt = sandcore::pourCell(scene);
-    std::vector<double> stepMilliseconds;
-    stepMilliseconds.reserve(std::size_t(std::min<std::int64_t>(stepLimit, 1'000'000)));
-    std::int64_t moves = 0, visited = 0, done = 0;
+    StreamingMedian stepMilliseconds;
+    std::int64_t moves = 0, visited = 0, done = 0, poured = 0;
     const auto start = Clock::now();
     while (done < stepLimit) {
-        if (done < options.pour) scene.addGrain(sandcore::GridLevel::Upper, pourAt);
+        // A pour waits while its cell is still taken, so every grain asked for is released.
+        if (poured < options.pour && scene.addGrain(sandcore::GridLevel::Upper, pourAt) >= 0) ++poured;
         const auto before = Clock::now();
         scene.step();
-        stepMilliseconds.push_back(std::chrono::duration<double, std::milli>(Clock::now() - before).count());
+        stepMilliseconds.add(std::chrono::duration<double, std::milli>(Clock::now() - before).count());
         moves += scene.counters().movesLastStep;
         visited += scene.counters().visitedLastStep;
         ++done;
-        if (options.untilSettled && done >= options.pour && scene.settled()) break;
+        if (options.untilSettled && poured >= options.pour && scene.settled()) break;
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     const double stepsPerSecond = seconds > 0 ? double(done) / seconds : 0.0;
     const std::string hash = toHex16(scene.stateHash());
+    const std::string sceneName = sceneKindName(settings.request.kind);
+    const int threads = settings.step.threads;
 
     if (options.json) {
         nlohmann::ordered_json out;
-        out["scene"] = options.scene;
+        out["scene"] = sceneName;
         out["grains_initial"] = grainsInitial;
         out["grains"] = scene.grainCount();
         out["steps"] = done;
@@ -82,22 +91,25 @@ int runSimulate(SimulateOptions& options) {
         out["hash"] = hash;
         out["seconds"] = seconds;
         out["steps_per_second"] = stepsPerSecond;
-        out["threads"] = options.threads;
+        out["threads"] = threads;
         out["settled"] = scene.settled();
         out["sleeping"] = !options.fullSweep;
-        out["median_ms_per_step"] = medianOf(stepMilliseconds);
+        out["median_ms_per_step"] = stepMilliseconds.median();
         out["grains_upper"] = scene.counters().grainsUpper;
         out["grains_lower"] = scene.counters().grainsLower;
+        if (options.pour > 0) out["poured"] = poured;
         std::cout << out.dump() << "\n";
         return 0;
     }
     std::printf("scene %s: %lld grains (%lld at start), %lld in the upper grid, %lld in the lower grid\n",
-                options.scene.c_str(), (long long)scene.grainCount(), (long long)grainsInitial,
+                sceneName.c_str(), (long long)scene.grainCount(), (long long)grainsInitial,
                 (long long)scene.counters().grainsUpper, (long long)scene.counters().grainsLower);
+    if (options.pour > 0)
+        std::printf("poured %lld of %lld grains\n", (long long)poured, (long long)options.pour);
     std::printf("%lld steps, %lld moves, %s\n", (long long)done, (long long)moves,
                 scene.settled() ? "settled" : "still moving");
     std::printf("%.3f s, %.1f steps/s, median %.3f ms per step, %d thread(s), %s\n", seconds, stepsPerSecond,
-                medianOf(stepMilliseconds), options.threads, options.fullSweep ? "full sweep" : "sleeping grains skipped");
+                stepMilliseconds.median(), threads, options.fullSweep ? "full sweep" : "sleeping grains skipped");
     std::printf("state hash %s\n", hash.c_str());
     return 0;
 }
@@ -107,36 +119,16 @@ int runSimulate(SimulateOptions& options) {
 void addSimulateCommand(CLI::App& app, int& exitCode) {
     auto options = std::make_shared<SimulateOptions>();
     CLI::App* cmd = app.add_subcommand("simulate", "Run a scene headless and report grains, moves, hash and speed");
-    cmd->add_option("--scene", options->scene, "hourglass, sculpture or canvas")->capture_default_str();
-    cmd->add_option("--shape", options->request.shape,
-                    "procedural shape: sphere, cube or hourglass (default: hourglass for the hourglass, sphere for "
-                    "the sculpture)");
-    cmd->add_option("--model", options->request.modelPath,
-                    "model file (OBJ, STL, PLY, glTF, ... ) for the hourglass vessel or the sculpture");
-    cmd->add_flag("--stretch", options->request.stretch, "model: scale every axis to --res cells (aspect not kept)");
-    cmd->add_flag("--robust", options->request.robust, "model: majority-vote inside test for open meshes");
-    cmd->add_option("--noise", options->request.noiseThreshold,
-                    "model: noNoise removes cells with at most this many inside face neighbours (-1 = off)")
-        ->capture_default_str()
-        ->check(CLI::Range(-1, 5));
-    cmd->add_option("--res", options->request.resolution,
-                    "cells along the shape's largest extent (default 64; the canvas: its width, default 60)")
-        ->check(CLI::Range(1, 1 << 20));
-    cmd->add_option("--neck", options->request.neckRadius, "neck radius of the procedural hourglass, cells (0 = auto)")
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--fill", options->request.fillFraction, "share of the upper bulb filled at the start (0..1]")
-        ->capture_default_str();
-    auto* steps = cmd->add_option("--steps", options->steps, "number of steps (default 1000)")->check(CLI::NonNegativeNumber);
+    addSceneOptions(*cmd, options->scene);
+    auto* steps = addNumberOption(*cmd, "--steps", options->steps, std::int64_t{0}, kMaxSteps,
+                                  "number of steps (default 1000)");
     auto* settled = cmd->add_flag("--until-settled", options->untilSettled, "run until a step moves nothing");
     steps->excludes(settled);
-    cmd->add_option("--max-steps", options->maxSteps, "upper bound for --until-settled")->capture_default_str();
-    cmd->add_option("--seed", options->seed, "seed of the slip randomness")->capture_default_str();
-    cmd->add_option("--threads", options->threads, "worker threads (the result does not depend on it)")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 256));
-    cmd->add_flag("--full-sweep", options->fullSweep, "visit every cell each step (R5 off; same result, slower)");
-    cmd->add_option("--pour", options->pour, "canvas: release one grain per step at the centre for N steps")
-        ->check(CLI::NonNegativeNumber);
+    addNumberOption(*cmd, "--max-steps", options->maxSteps, std::int64_t{1}, kMaxSteps,
+                    "with --until-settled: stop after this many steps at most (default 10000000)");
+    cmd->add_flag("--full-sweep", options->fullSweep, "visit every cell each step (same result, slower)");
+    addNumberOption(*cmd, "--pour", options->pour, std::int64_t{0}, std::int64_t{1} << 31,
+                    "canvas: release one grain per step at the centre of the top, N grains in all");
     cmd->add_flag("--json", options->json, "print one JSON object");
     cmd->callback([options, &exitCode] { exitCode = runSimulate(*options); });
 }

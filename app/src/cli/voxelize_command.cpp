@@ -1,7 +1,9 @@
 // SPEC C2: `sandglass voxelize FILE --res N` loads a model, voxelizes it and reports the grid,
 // the inside cells, the mesh and voxel volumes and whether the mesh is closed.
+#include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
 #include "scene/model_voxelizer.hpp"
+#include "scene/scene_request.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -59,14 +61,12 @@ void addVoxelizeCommand(CLI::App& app, int& exitCode) {
     auto options = std::make_shared<VoxelizeOptions>();
     CLI::App* cmd = app.add_subcommand("voxelize", "Voxelize a model file and report its grid, volumes and closedness");
     cmd->add_option("file", options->file, "model file (OBJ, STL, PLY, glTF, ...)")->required();
-    cmd->add_option("--res", options->settings.resolution, "cells along the model's largest extent")
-        ->capture_default_str()
-        ->check(CLI::Range(1, sandcore::kMaxVoxelResolution));
+    addNumberOption(*cmd, "--res", options->settings.resolution, 1, sandcore::kMaxVoxelResolution,
+                    "cells along the model's largest extent (default " + std::to_string(options->settings.resolution) + ")");
     cmd->add_flag("--robust", options->settings.robust, "majority vote of parity along x, y and z (open meshes)");
     cmd->add_flag("--stretch", options->settings.stretch, "scale every axis to --res cells (aspect not kept)");
-    cmd->add_option("--threads", options->settings.threads, "threads that share the rows (same result for any count)")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 256));
+    addNumberOption(*cmd, "--threads", options->settings.threads, kThreadsRange.min, kThreadsRange.max,
+                    "threads that share the rows (default 1; same result for any count)");
     cmd->add_flag("--json", options->json, "print one JSON object");
     cmd->callback([options, &exitCode] { exitCode = runVoxelize(*options); });
 }

@@ -3,6 +3,8 @@
 
 #include "bench/report_files.hpp"
 
+#include "sandcore/scene.hpp"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,8 +25,9 @@ struct DrainRun {
     std::uint64_t hash = 0;      ///< state hash once settled
 };
 
-/// Drains the procedural hourglass at each resolution with sleeping on and off, 1 and 2 threads.
-std::vector<DrainRun> measureDrains(const std::vector<int>& resolutions);
+/// Drains the procedural hourglass at each resolution with sleeping on and off, on 1 thread and
+/// on step.threads, all with step.seed.
+std::vector<DrainRun> measureDrains(const std::vector<int>& resolutions, const sandcore::StepSettings& step);
 
 /// The runs as a table, with the hash check against the first run of the same resolution.
 Table drainTable(const std::vector<DrainRun>& runs);

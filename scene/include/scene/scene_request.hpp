@@ -1,6 +1,7 @@
 #pragma once
 // What the user asked for (scene kind, shape, resolution), turned into a sandcore::Scene. The
-// command line, the benchmark and the window all build scenes through here.
+// command line, the benchmark and the window all build scenes through here, and every value of a
+// request is given its default and checked in one place (applySceneDefaults), with one range each.
 
 #include "scene/model_voxelizer.hpp"
 
@@ -12,6 +13,20 @@
 #include <string_view>
 
 namespace sandglass {
+
+/// The range a setting may take, with the command-line option that sets it (for messages).
+template <class T> struct SettingRange {
+    T min;              ///< smallest allowed value
+    T max;              ///< largest allowed value
+    const char* option; ///< e.g. "--res"
+    bool contains(T value) const { return value >= min && value <= max; } ///< min <= value <= max
+};
+
+inline constexpr SettingRange<int> kResolutionRange{8, 4096, "--res"};     ///< cells along the largest extent
+inline constexpr SettingRange<int> kThreadsRange{1, 256, "--threads"};      ///< worker threads of a step
+inline constexpr SettingRange<double> kNeckRadiusRange{0.0, 1024.0, "--neck"}; ///< cells; 0 = automatic
+inline constexpr SettingRange<double> kFillRange{0.001, 1.0, "--fill"};     ///< share of the upper bulb filled
+inline constexpr SettingRange<int> kNoiseRange{-1, 5, "--noise"};           ///< noNoise threshold; -1 = off
 
 /// A scene as the user describes it.
 struct SceneRequest {
@@ -27,6 +42,20 @@ struct SceneRequest {
     bool drainCompletely = true; ///< hourglass: S3 noSharpEdges carves the upper bulb so it drains completely
     std::uint64_t memoryLimit = 0; ///< model: bytes a scene may use; 0 = the memory available now
 };
+
+/// Everything that decides a scene and its steps: the request and the library's step settings
+/// (seed, threads, sleeping), embedded rather than copied field by field.
+struct SceneSettings {
+    SceneRequest request;        ///< scene kind, model file or procedural shape, resolution, fill
+    sandcore::StepSettings step; ///< seed, threads and sleeping of every step
+};
+
+/// Gives every unset value of settings its default (resolution, the scene's default model when
+/// neither a model nor a shape is named) and checks every value against its range and the
+/// combinations (a canvas takes no model or shape; a model excludes a shape). Throws
+/// std::invalid_argument with one line naming the option, e.g. "--res must lie in 8..4096, got 4".
+/// The command line, the panel and the benchmark all call it before building.
+void applySceneDefaults(SceneSettings& settings);
 
 /// A scene and, when it came from a model file, the voxelization report the GUI and CLI show.
 struct BuiltScene {
@@ -47,16 +76,13 @@ void requireKnownShape(std::string_view shape);
 /// for an unknown name or an invalid resolution.
 sandcore::InsideMask makeProceduralMask(std::string_view shape, int resolution, float neckRadius);
 
-/// The command line's check that a canvas request names no model or shape (the window simply
-/// ignores them when the user switches to the canvas); throws std::invalid_argument.
-void requireNoShapeForCanvas(const SceneRequest& request);
-
-/// Builds the requested scene (a canvas ignores modelPath and shape); throws std::invalid_argument (or ModelError, "FILE: cause", for a
-/// model) with a one-line message on bad input. Nothing is changed on failure.
-sandcore::Scene buildScene(const SceneRequest& request, const sandcore::StepSettings& step);
+/// Builds the requested scene from settings that applySceneDefaults accepted; throws
+/// std::invalid_argument (or ModelError, "FILE: cause", for a model) with a one-line message on
+/// bad input. Nothing is changed on failure.
+sandcore::Scene buildScene(const SceneSettings& settings);
 
 /// As buildScene, also returning the model's voxelization report.
-BuiltScene buildSceneWithReport(const SceneRequest& request, const sandcore::StepSettings& step);
+BuiltScene buildSceneWithReport(const SceneSettings& settings);
 
 /// The resolution a scene gets when none is asked for: 64 cells, the canvas 60 (R10's 60x10x60 over 60x40x60).
 int defaultResolution(sandcore::SceneKind kind);

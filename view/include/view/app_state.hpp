@@ -1,24 +1,19 @@
 #pragma once
-// Everything the panels show and change (SPEC G1, G2). The panels read and write this struct
-// and raise command flags; the application carries the commands out after the UI is built.
-// Nothing here points into the simulation's grids.
+// Everything the panels show and change. The panels read and write this struct and queue
+// commands; the application carries the commands out after the panels are built. Nothing here
+// points into the simulation's grids.
 
 #include "view/render/render_settings.hpp"
 #include "scene/scene_request.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sandglass {
-
-/// Which scene to build and how its steps run.
-struct SceneSettings {
-    SceneRequest request;        ///< scene kind, model file or procedural shape, resolution, fill
-    std::uint64_t seed = 1;      ///< R3 seed of the slip randomness
-    int threads = 1;             ///< R6 worker threads (the result does not depend on it)
-};
 
 /// Thesis §3.7 "Zeichnen" (canvas) controls, each with the thesis's default, plus SPEC P3, P6,
 /// P7 and G2 obstacle placement.
@@ -40,19 +35,35 @@ struct PaintingSettings {
     std::size_t undoBytes = 0;   ///< memory the kept strokes' snapshots use, bytes
 };
 
-/// Requests raised by panels and keys, served once per frame.
-struct PendingCommands {
-    bool reset = false;        ///< refill the scene (R10 reset)
-    bool rebuild = false;      ///< build a new scene from SceneSettings
-    bool singleStep = false;   ///< one step while paused
-    bool screenshot = false;   ///< save this frame as PNG
-    bool benchmark = false;    ///< run the B1 frame-rate benchmark
-    bool quit = false;         ///< close the window
-    bool frameCamera = false;  ///< reset the camera to frame the scene
-    bool undo = false;            ///< P7: take back the last stroke (Ctrl+Z)
-    bool loadDraft = false;       ///< P5: load PaintingSettings::draftPath as the draft
-    bool addObstacle = false;     ///< R11: add the box PaintingSettings::obstacleMin/Max to the lower grid
-    bool clearObstacles = false;  ///< R11: remove every obstacle of the canvas
+/// What the panels and keys ask the application to do; served once per frame, in order.
+enum class Command {
+    Reset,             ///< refill the scene
+    Rebuild,           ///< build a new scene from AppState::scene
+    ApplyStepSettings, ///< seed and threads of AppState::scene.step take effect on the next step
+    SingleStep,        ///< one step while paused
+    Screenshot,        ///< save this frame as PNG
+    Benchmark,         ///< run the frame-rate benchmark
+    Quit,              ///< close the window
+    FrameCamera,       ///< reset the camera to frame the scene
+    Undo,              ///< take back the last stroke (Ctrl+Z)
+    LoadDraft,         ///< load PaintingSettings::draftPath as the draft
+    AddObstacle,       ///< add the box PaintingSettings::obstacleMin/Max to the canvas's lower grid
+    ClearObstacles,    ///< remove every obstacle of the canvas
+};
+
+/// Commands in the order they were raised.
+class CommandQueue {
+public:
+    void push(Command command) { commands_.push_back(command); } ///< ask for a command
+    /// True when the command is waiting.
+    bool contains(Command command) const {
+        return std::find(commands_.begin(), commands_.end(), command) != commands_.end();
+    }
+    /// Takes every waiting command, oldest first, leaving the queue empty.
+    std::vector<Command> take() { return std::exchange(commands_, {}); }
+
+private:
+    std::vector<Command> commands_;
 };
 
 /// Numbers for the statistics panel, refreshed every frame.
@@ -75,8 +86,8 @@ struct FrameStatistics {
 
 /// The application's state, as far as the panels see it.
 struct AppState {
-    SceneSettings scene;            ///< what the next rebuild builds
-    sandcore::SceneKind runningSceneKind = sandcore::SceneKind::Hourglass; ///< the scene shown now (set when a build is adopted)
+    SceneSettings scene;            ///< what the next rebuild builds (the panel's choices)
+    SceneSettings loaded;           ///< what the running scene was built from (set when a build is adopted)
     RenderSettings render;          ///< how grains are drawn
     PaintingSettings painting;      ///< canvas painting options
     bool simulationRunning = false; ///< thesis default: simulation off
@@ -88,7 +99,8 @@ struct AppState {
     std::string statusLine;         ///< the last message (error or confirmation) for the user
     std::vector<std::string> modelFiles; ///< files found in models/, for the model list
     FrameStatistics stats;          ///< numbers shown in the statistics panel
-    PendingCommands pending;        ///< requests to serve after the UI is built
+    CommandQueue commands;          ///< requests to serve after the panels are built
+    bool building = false;          ///< a scene is being built in the background
 };
 
 } // namespace sandglass

@@ -3,6 +3,7 @@
 // the window size, turned into the application's start settings.
 
 #include "app/application.hpp"
+#include "app/cli/scene_options.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -12,24 +13,20 @@ namespace sandglass {
 
 /// Scene and display choices as typed on the command line.
 struct ViewOptions {
-    std::string scene = "hourglass";  ///< hourglass, sculpture or canvas
-    std::string model;                ///< model file; empty = the scene's default (see applicationOptionsFrom)
-    std::string shape;                ///< procedural shape instead of a model file
-    int resolution = 0;               ///< cells along the shape's largest extent; 0 = the scene's default
-    std::uint64_t seed = 1;           ///< R3 seed
+    SceneOptions scene;               ///< scene, model or shape, resolution, seed, threads
     std::string mode = "points";      ///< points, sprites, billboards or pseudo
     int grainsPerCell = 4;            ///< 1..32
-    bool light = false;               ///< V3 lighting
-    bool hideInner = false;           ///< V4: skip inner grains
-    bool black = false;               ///< V5: black background
-    bool noHull = false;              ///< V6: no glass
+    bool light = false;               ///< lighting from estimated normals
+    bool hideInner = false;           ///< skip inner grains
+    bool black = false;               ///< black background
+    bool noHull = false;              ///< no glass
     std::string size;                 ///< "WxH" in pixels; empty = the command's default
     int steps = 0;                    ///< simulation steps before the first frame
     float zoom = 1.0f;                ///< camera distance as a share of the distance that frames the scene
 };
 
-/// Adds --scene --model --shape --res --seed --mode --grains-per-cell --light --no-inner --black
-/// --no-hull --size --steps --zoom to a subcommand.
+/// Adds the scene options and --mode --grains-per-cell --light --no-inner --black --no-hull
+/// --size --steps --zoom to a subcommand.
 void addViewOptions(CLI::App& command, ViewOptions& options);
 
 /// Application options from the typed ones; throws std::invalid_argument with one line on a bad value.

@@ -55,6 +55,8 @@ public:
     /// (joined to the last column), up ends it. Returns true when the scene's grains changed.
     bool handlePointer(sandcore::Scene& scene, const PointerSample& sample, const CanvasView& view,
                        const PaintSettings& settings);
+    /// Ends a stroke under way (the button came up).
+    void endStroke() { painter_.endStroke(); }
     /// P7: undoes the last stroke; false when there is none.
     bool undo(sandcore::Scene& scene) { return painter_.undo(scene); }
     /// The scene was rebuilt or reset: ends any stroke, forgets undo history and the id image.

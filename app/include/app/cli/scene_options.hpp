@@ -1,0 +1,26 @@
+#pragma once
+// The scene options every command that builds a scene shares (simulate, gui, render, bench):
+// one registration, one set of ranges (scene_request.hpp), one check (applySceneDefaults).
+
+#include "scene/scene_request.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace sandglass {
+
+/// A scene as typed on the command line.
+struct SceneOptions {
+    std::string scene = "hourglass"; ///< hourglass, sculpture or canvas
+    SceneSettings settings;          ///< request and step settings, filled by the options
+};
+
+/// Adds --scene --model --shape --res --neck --fill --stretch --robust --noise --seed --threads.
+void addSceneOptions(CLI::App& command, SceneOptions& options);
+
+/// The settings the options stand for, defaults applied and every value checked; throws
+/// std::invalid_argument with one line naming the option.
+SceneSettings sceneSettingsFrom(const SceneOptions& options);
+
+} // namespace sandglass

@@ -1,0 +1,39 @@
+#include "app/cli/scene_options.hpp"
+
+#include "app/cli/checked_options.hpp"
+
+#include <cstdint>
+#include <limits>
+
+namespace sandglass {
+
+void addSceneOptions(CLI::App& command, SceneOptions& options) {
+    SceneRequest& request = options.settings.request;
+    sandcore::StepSettings& step = options.settings.step;
+    command.add_option("--scene", options.scene, "hourglass, sculpture or canvas")->capture_default_str();
+    command.add_option("--model", request.modelPath, "model file (OBJ, STL, PLY, glTF, ...) as vessel or sculpture");
+    command.add_option("--shape", request.shape, "procedural shape instead of a model: hourglass, sphere or cube");
+    addNumberOption(command, "--res", request.resolution, kResolutionRange.min, kResolutionRange.max,
+                    "cells along the shape's largest extent (default 64; the canvas: its width, default 60)");
+    addNumberOption(command, "--neck", request.neckRadius, float(kNeckRadiusRange.min), float(kNeckRadiusRange.max),
+                    "neck radius of the procedural hourglass in cells (0 = automatic, res/24)");
+    addNumberOption(command, "--fill", request.fillFraction, float(kFillRange.min), float(kFillRange.max),
+                    "share of the upper bulb filled with sand at the start (default 0.85)");
+    command.add_flag("--stretch", request.stretch, "model: scale every axis to --res cells (aspect not kept)");
+    command.add_flag("--robust", request.robust, "model: majority-vote inside test for open meshes");
+    addNumberOption(command, "--noise", request.noiseThreshold, kNoiseRange.min, kNoiseRange.max,
+                    "model: remove cells with at most this many inside face neighbours (-1 = off, default 1)");
+    addNumberOption(command, "--seed", step.seed, std::uint64_t{0}, std::numeric_limits<std::uint64_t>::max(),
+                    "seed of the slip randomness (default 1)");
+    addNumberOption(command, "--threads", step.threads, kThreadsRange.min, kThreadsRange.max,
+                    "worker threads of a step (default 1; the result does not depend on it)");
+}
+
+SceneSettings sceneSettingsFrom(const SceneOptions& options) {
+    SceneSettings settings = options.settings;
+    settings.request.kind = parseSceneKind(options.scene);
+    applySceneDefaults(settings);
+    return settings;
+}
+
+} // namespace sandglass

@@ -1,0 +1,63 @@
+#include "app/frame_benchmark_runner.hpp"
+
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+
+namespace sandglass {
+
+BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkCase>& cases,
+                                  const BenchmarkTiming& timing) {
+    using Clock = std::chrono::steady_clock;
+    const SceneSettings& loaded = app.host().loaded();
+    BenchmarkReport report;
+    report.scene = std::string(sceneKindName(loaded.request.kind)) +
+                   (loaded.request.shape.empty() ? "" : " (" + loaded.request.shape + ")") + ", resolution " +
+                   std::to_string(loaded.request.resolution);
+    report.glRenderer = app.state().glRenderer;
+    report.glVersion = app.state().glVersion;
+    app.targetSize(report.width, report.height);
+
+    SceneHost host(loaded); // the benchmark's own scene: the user's stays as it is
+    glfwSwapInterval(0);    // measure drawing, not the display's refresh
+    auto last = Clock::now();
+    RenderSettings render = app.state().render;
+    auto frame = [&] {
+        glfwPollEvents();
+        const auto now = Clock::now();
+        app.renderHostFrame(host, render, true, std::chrono::duration<double>(now - last).count());
+        last = now;
+        app.finishFrame();
+    };
+    for (const BenchmarkCase& setup : cases) {
+        render.mode = setup.mode;
+        render.grainsPerCell = setup.grainsPerCell;
+        render.lighting = setup.lighting;
+        render.innerGrains = setup.innerGrains;
+        // Every row starts from a full upper bulb, so each measures the same flowing sand
+        // (a drained hourglass would upload nothing and flatter the later rows).
+        host.reset();
+        for (int i = 0; i < timing.warmupFrames; ++i) frame();
+        BenchmarkRow row;
+        row.setup = setup;
+        const auto start = Clock::now();
+        double elapsed = 0.0;
+        while (row.frames < timing.minFrames || (row.frames < timing.maxFrames && elapsed < timing.maxSeconds)) {
+            frame();
+            ++row.frames;
+            elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        }
+        row.seconds = elapsed;
+        row.filledCells = host.scene().grainCount();
+        report.rows.push_back(row);
+        std::printf("%-4s %2d grains/cell, light %-3s, inner %-3s: %8.1f fps\n", renderModeShortName(setup.mode),
+                    setup.grainsPerCell, setup.lighting ? "on" : "off", setup.innerGrains ? "yes" : "no",
+                    row.framesPerSecond());
+        std::fflush(stdout);
+    }
+    glfwSwapInterval(app.options().window.vsync ? 1 : 0);
+    return report;
+}
+
+} // namespace sandglass

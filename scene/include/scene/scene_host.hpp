@@ -1,0 +1,118 @@
+#pragma once
+// The running scene of an application, without GL: the scene, the next one being built on a
+// worker thread (the last request wins, the running scene stays until the new one is ready),
+// and the clock that turns wall time into steps. Whoever draws or edits the scene watches its
+// revisions instead of being told about every change.
+
+#include "scene/scene_request.hpp"
+
+#include "sandcore/scene.hpp"
+#include "sandcore/sim_clock.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace sandglass {
+
+/// What became of a build when it finished.
+struct BuildOutcome {
+    bool adopted = false; ///< the new scene runs now; false: it failed and the old scene stays
+    std::string message;  ///< "built hourglass, 17848 grains" or the one-line error
+};
+
+/// Steps actually run per second of wall time, measured over the last second or so (frames
+/// that ran no step count too, so the readout is the true rate).
+class StepRateMeter {
+public:
+    /// Records that `steps` steps ran in a frame that took `elapsedSeconds`.
+    void addFrame(double elapsedSeconds, int steps);
+    double stepsPerSecond() const; ///< steps over the window's wall time; 0 before any time passed
+    void clear();                  ///< forget the history (after a pause or a new scene)
+
+private:
+    struct Frame {
+        double seconds;
+        int steps;
+    };
+    std::deque<Frame> frames_;
+    double seconds_ = 0.0;
+    std::int64_t steps_ = 0;
+};
+
+class SceneHost {
+public:
+    /// Builds the scene now, on this thread; throws as buildScene does.
+    explicit SceneHost(const SceneSettings& settings);
+    ~SceneHost();
+    SceneHost(const SceneHost&) = delete;
+    SceneHost& operator=(const SceneHost&) = delete;
+
+    const sandcore::Scene& scene() const { return *scene_; } ///< the running scene
+    /// The running scene for an edit (painting, obstacles, undo); counts as a change of its grains.
+    sandcore::Scene& editScene();
+    /// As editScene, for edits that also change which cells are INVALID (obstacles).
+    sandcore::Scene& editLayout();
+    /// The settings the running scene was built from: what the panel shows as loaded.
+    const SceneSettings& loaded() const { return loaded_; }
+
+    /// Starts building `settings` on a worker thread. While a build runs, the newest request
+    /// waits and starts when it is done; the ones in between are dropped.
+    void requestBuild(const SceneSettings& settings);
+    bool building() const { return build_.valid(); } ///< a build runs or waits
+    bool buildWaiting() const { return waiting_.has_value(); } ///< a newer request waits for the running build
+    double buildSeconds() const;                    ///< how long the current build has run, s
+    /// Adopts a finished build (or reports its error); nothing while none has finished.
+    std::optional<BuildOutcome> pollBuild();
+    /// Waits for every requested build and adopts the last; the outcome of the last, if any.
+    std::optional<BuildOutcome> finishBuilds();
+
+    /// Seed, threads and sleeping of later steps, without a rebuild (none changes a step's
+    /// result but the seed).
+    void applyStepSettings(const sandcore::StepSettings& step);
+
+    /// The clock: on or off, flow speed in steps per second, and the cap of steps per frame.
+    void setRunning(bool running);
+    bool running() const { return clock_.running(); } ///< true while the clock makes steps
+    void setStepsPerSecond(double stepsPerSecond) { clock_.setStepsPerSecond(stepsPerSecond); } ///< flow speed
+    void requestSingleStep() { clock_.requestSingleStep(); } ///< one step at the next advance, even paused
+    /// Feeds elapsed wall time to the clock and runs the steps that are due; returns how many ran.
+    int advance(double elapsedSeconds);
+    /// Runs steps now, outside the clock (scripted drawings, tests, `render --steps`).
+    void runSteps(int steps);
+    /// R10 reset: refills the scene; the clock keeps running or not as it was.
+    void reset();
+
+    /// Share (0..1) of the last step's glide that frames draw now: the clock's fraction while it
+    /// runs the steps, 1 (grains at their new cells) after steps made outside it.
+    float displayStepFraction() const;
+    double millisecondsPerStep() const { return millisecondsPerStep_; } ///< smoothed wall time of one step, ms
+    double stepsPerSecond() const { return rate_.stepsPerSecond(); }  ///< the true rate of the last second
+
+    /// Changes whenever the grains change (a step, reset, edit or new scene).
+    std::uint64_t contentRevision() const { return contentRevision_; }
+    /// Changes whenever the cells' layout changes (a new scene, an obstacle edit).
+    std::uint64_t layoutRevision() const { return layoutRevision_; }
+
+private:
+    void adopt(sandcore::Scene scene, const SceneSettings& settings);
+    void startBuild(SceneSettings settings);
+
+    std::unique_ptr<sandcore::Scene> scene_;
+    SceneSettings loaded_;
+    std::future<sandcore::Scene> build_;
+    SceneSettings building_;                 // what build_ builds
+    std::optional<SceneSettings> waiting_;   // the newest request made while build_ ran
+    std::chrono::steady_clock::time_point buildStarted_;
+    sandcore::SimClock clock_;
+    bool lastStepOutsideClock_ = false; // the running clock's fraction would show that step undone
+    double millisecondsPerStep_ = 0.0;
+    StepRateMeter rate_;
+    std::uint64_t contentRevision_ = 1, layoutRevision_ = 1;
+};
+
+} // namespace sandglass

@@ -1,0 +1,158 @@
+#include "scene/scene_host.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace sandglass {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+constexpr double kRateWindowSeconds = 1.0;
+} // namespace
+
+void StepRateMeter::addFrame(double elapsedSeconds, int steps) {
+    if (!(elapsedSeconds >= 0.0)) return;
+    frames_.push_back({elapsedSeconds, steps});
+    seconds_ += elapsedSeconds;
+    steps_ += steps;
+    // Keep about one second of frames, never fewer than one.
+    while (frames_.size() > 1 && seconds_ - frames_.front().seconds >= kRateWindowSeconds) {
+        seconds_ -= frames_.front().seconds;
+        steps_ -= frames_.front().steps;
+        frames_.pop_front();
+    }
+}
+
+double StepRateMeter::stepsPerSecond() const { return seconds_ > 0.0 ? double(steps_) / seconds_ : 0.0; }
+
+void StepRateMeter::clear() {
+    frames_.clear();
+    seconds_ = 0.0;
+    steps_ = 0;
+}
+
+SceneHost::SceneHost(const SceneSettings& settings) {
+    SceneSettings checked = settings;
+    applySceneDefaults(checked);
+    adopt(buildScene(checked), checked);
+}
+
+SceneHost::~SceneHost() {
+    // A build still running holds no reference to this host; only wait so its thread ends.
+    if (build_.valid()) build_.wait();
+}
+
+sandcore::Scene& SceneHost::editScene() {
+    ++contentRevision_;
+    return *scene_;
+}
+
+sandcore::Scene& SceneHost::editLayout() {
+    ++layoutRevision_;
+    return editScene();
+}
+
+void SceneHost::adopt(sandcore::Scene scene, const SceneSettings& settings) {
+    scene_ = std::make_unique<sandcore::Scene>(std::move(scene));
+    loaded_ = settings;
+    lastStepOutsideClock_ = false;
+    rate_.clear();
+    ++contentRevision_;
+    ++layoutRevision_;
+}
+
+void SceneHost::startBuild(SceneSettings settings) {
+    building_ = settings;
+    buildStarted_ = Clock::now();
+    // Scenes are built off the main thread so the window stays responsive.
+    build_ = std::async(std::launch::async, [settings = std::move(settings)] { return buildScene(settings); });
+}
+
+void SceneHost::requestBuild(const SceneSettings& settings) {
+    if (build_.valid())
+        waiting_ = settings; // the last request wins
+    else
+        startBuild(settings);
+}
+
+double SceneHost::buildSeconds() const {
+    return build_.valid() ? std::chrono::duration<double>(Clock::now() - buildStarted_).count() : 0.0;
+}
+
+std::optional<BuildOutcome> SceneHost::pollBuild() {
+    if (!build_.valid() || build_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
+    BuildOutcome outcome;
+    try {
+        sandcore::Scene scene = build_.get();
+        if (waiting_) {
+            // Newer settings arrived while this one was built: it is stale, build those instead.
+            startBuild(*std::exchange(waiting_, std::nullopt));
+            return std::nullopt;
+        }
+        adopt(std::move(scene), building_);
+        outcome.adopted = true;
+        outcome.message = std::string("built ") + sceneKindName(scene_->kind()) + ", " +
+                          std::to_string(scene_->grainCount()) + " grains";
+    } catch (const std::exception& error) {
+        if (waiting_) {
+            startBuild(*std::exchange(waiting_, std::nullopt)); // its error no longer matters either
+            return std::nullopt;
+        }
+        outcome.message = error.what(); // the running scene stays as it was
+    }
+    return outcome;
+}
+
+std::optional<BuildOutcome> SceneHost::finishBuilds() {
+    std::optional<BuildOutcome> last;
+    while (build_.valid()) {
+        build_.wait();
+        if (auto outcome = pollBuild()) last = outcome;
+    }
+    return last;
+}
+
+void SceneHost::applyStepSettings(const sandcore::StepSettings& step) {
+    scene_->setSeed(step.seed);
+    scene_->setThreads(std::clamp(step.threads, kThreadsRange.min, kThreadsRange.max));
+    scene_->setSleeping(step.sleeping);
+    loaded_.step = scene_->settings();
+}
+
+void SceneHost::setRunning(bool running) {
+    if (running != clock_.running()) rate_.clear();
+    clock_.setRunning(running);
+}
+
+int SceneHost::advance(double elapsedSeconds) {
+    const int due = clock_.advance(elapsedSeconds);
+    rate_.addFrame(elapsedSeconds, due);
+    if (due == 0) return 0;
+    const auto start = Clock::now();
+    for (int i = 0; i < due; ++i) scene_->step();
+    const double milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count() / due;
+    millisecondsPerStep_ = millisecondsPerStep_ == 0.0 ? milliseconds : 0.9 * millisecondsPerStep_ + 0.1 * milliseconds;
+    // Paused, the clock's fraction stands still (often at 0): a single step would not show.
+    lastStepOutsideClock_ = !clock_.running();
+    ++contentRevision_;
+    return due;
+}
+
+void SceneHost::runSteps(int steps) {
+    if (steps <= 0) return;
+    for (int i = 0; i < steps; ++i) scene_->step();
+    lastStepOutsideClock_ = true;
+    ++contentRevision_;
+}
+
+void SceneHost::reset() {
+    scene_->reset();
+    lastStepOutsideClock_ = false;
+    ++contentRevision_;
+}
+
+float SceneHost::displayStepFraction() const {
+    return lastStepOutsideClock_ ? 1.0f : float(clock_.stepFraction());
+}
+
+} // namespace sandglass
