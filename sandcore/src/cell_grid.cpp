@@ -1,5 +1,7 @@
 #include "sandcore/cell_grid.hpp"
 
+#include "layer_neighbourhood.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -25,20 +27,11 @@ CellGrid::CellGrid(Int3 size, CellValue fill) : size_(size) {
 
 int CellGrid::layerNeighbours(std::uint32_t n, int dy, bool skipCentre, std::uint32_t* out) const {
     const Int3 c = coordinate(n);
-    const int y = c.y + dy;
-    if (y < 0 || y >= size_.y) return 0;
+    const CellNeighbourhood around(*this, c.x, c.y, c.z);
+    if (!around.hasLayer(dy)) return 0;
     int count = 0;
-    const std::uint32_t centre = n + std::uint32_t(std::int64_t(dy) * layerSize_);
-    if (!skipCentre) out[count++] = centre; // the direct neighbour comes first
-    for (int dz = -1; dz <= 1; ++dz) {
-        const int z = c.z + dz;
-        if (z < 0 || z >= size_.z) continue;
-        for (int dx = -1; dx <= 1; ++dx) {
-            const int x = c.x + dx;
-            if (x < 0 || x >= size_.x || (dx == 0 && dz == 0)) continue;
-            out[count++] = index(x, y, z);
-        }
-    }
+    if (!skipCentre) out[count++] = around.index(0, dy, 0); // the direct neighbour comes first
+    around.forEachAround([&](int dx, int dz) { out[count++] = around.index(dx, dy, dz); });
     return count;
 }
 
