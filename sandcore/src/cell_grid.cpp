@@ -12,11 +12,14 @@ void validateGridSize(Int3 size) {
     if (size.x <= 0 || size.y <= 0 || size.z <= 0)
         throw std::invalid_argument("grid size must be positive on every axis, got " + std::to_string(size.x) +
                                     "x" + std::to_string(size.y) + "x" + std::to_string(size.z));
-    const std::int64_t cells = std::int64_t(size.x) * size.y * size.z;
-    if (cells > kMaxGridCells)
+    // A layer of two int axes fits in 64 bits; only when it is within the limit is the whole
+    // product sure to fit as well, so a huge size cannot overflow the check itself.
+    const std::int64_t layer = std::int64_t(size.x) * size.z;
+    const std::int64_t cells = layer <= kMaxGridCells ? layer * size.y : -1;
+    if (cells < 0 || cells > kMaxGridCells)
         throw std::invalid_argument("grid of " + std::to_string(size.x) + "x" + std::to_string(size.y) + "x" +
-                                    std::to_string(size.z) + " = " + std::to_string(cells) +
-                                    " cells exceeds the limit of 2^31 cells");
+                                    std::to_string(size.z) + (cells < 0 ? "" : " = " + std::to_string(cells) + " cells") +
+                                    " exceeds the limit of 2^31 cells");
 }
 
 CellGrid::CellGrid(Int3 size, CellValue fill) : size_(size) {

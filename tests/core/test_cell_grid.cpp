@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -76,4 +77,8 @@ TEST_CASE("grid sizes are validated before allocating") {
     }
     CHECK_NOTHROW(validateGridSize({1290, 1290, 1290})); // 2,146,689,000 cells: just under 2^31
     CHECK_THROWS(validateGridSize({1291, 1291, 1291}));
+    // The largest int on every axis is refused without the cell count overflowing (UBSan checks).
+    const int most = std::numeric_limits<int>::max();
+    CHECK_THROWS_WITH(validateGridSize({most, most, most}),
+                      doctest::Contains("exceeds the limit of 2^31 cells"));
 }
