@@ -1,5 +1,7 @@
 #include "sandcore/cell_grid.hpp"
 
+#include "layer_neighbourhood.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -10,11 +12,14 @@ void validateGridSize(Int3 size) {
     if (size.x <= 0 || size.y <= 0 || size.z <= 0)
         throw std::invalid_argument("grid size must be positive on every axis, got " + std::to_string(size.x) +
                                     "x" + std::to_string(size.y) + "x" + std::to_string(size.z));
-    const std::int64_t cells = std::int64_t(size.x) * size.y * size.z;
-    if (cells > kMaxGridCells)
+    // A layer of two int axes fits in 64 bits; only when it is within the limit is the whole
+    // product sure to fit as well, so a huge size cannot overflow the check itself.
+    const std::int64_t layer = std::int64_t(size.x) * size.z;
+    const std::int64_t cells = layer <= kMaxGridCells ? layer * size.y : -1;
+    if (cells < 0 || cells > kMaxGridCells)
         throw std::invalid_argument("grid of " + std::to_string(size.x) + "x" + std::to_string(size.y) + "x" +
-                                    std::to_string(size.z) + " = " + std::to_string(cells) +
-                                    " cells exceeds the limit of 2^31 cells");
+                                    std::to_string(size.z) + (cells < 0 ? "" : " = " + std::to_string(cells) + " cells") +
+                                    " exceeds the limit of 2^31 cells");
 }
 
 CellGrid::CellGrid(Int3 size, CellValue fill) : size_(size) {
@@ -25,20 +30,11 @@ CellGrid::CellGrid(Int3 size, CellValue fill) : size_(size) {
 
 int CellGrid::layerNeighbours(std::uint32_t n, int dy, bool skipCentre, std::uint32_t* out) const {
     const Int3 c = coordinate(n);
-    const int y = c.y + dy;
-    if (y < 0 || y >= size_.y) return 0;
+    const CellNeighbourhood around(*this, c.x, c.y, c.z);
+    if (!around.hasLayer(dy)) return 0;
     int count = 0;
-    const std::uint32_t centre = n + std::uint32_t(std::int64_t(dy) * layerSize_);
-    if (!skipCentre) out[count++] = centre; // the direct neighbour comes first
-    for (int dz = -1; dz <= 1; ++dz) {
-        const int z = c.z + dz;
-        if (z < 0 || z >= size_.z) continue;
-        for (int dx = -1; dx <= 1; ++dx) {
-            const int x = c.x + dx;
-            if (x < 0 || x >= size_.x || (dx == 0 && dz == 0)) continue;
-            out[count++] = index(x, y, z);
-        }
-    }
+    if (!skipCentre) out[count++] = around.index(0, dy, 0); // the direct neighbour comes first
+    around.forEachAround([&](int dx, int dz) { out[count++] = around.index(dx, dy, dz); });
     return count;
 }
 

@@ -25,11 +25,23 @@ struct SweepResult {
     std::int64_t visited = 0; ///< cells looked at
 };
 
+/// What one grid's sweep in one step shares with every cell it visits (like Box2D's
+/// b2StepContext): set up once by Scene::step, unchanged while the sweep runs. Each strip
+/// returns its own totals, so strips on different threads never write to a shared count.
+struct SweepContext {
+    CellGrid& grid;      ///< the grid being swept
+    GrainStore& grains;  ///< the scene's grain records; a move updates its grain's
+    std::uint64_t seed;  ///< StepSettings::seed: picks the slips (R3)
+    std::uint64_t step;  ///< this step's number, 1 = the first after a reset: picks the slips, stamps movedAtStep
+    GridLevel level;     ///< which grid: picks the slips, so the two grids draw differently
+    bool sleeping;       ///< R5: visit awake cells only; false = every cell (same result)
+};
+
 class GridSweep {
 public:
     /// Awake bits for a grid of this size. bottomIsOutlet: grains in layer 0 stay awake for the
-    /// transition (the upper grid). The grid itself is passed to each call, so a Scene can move.
-    GridSweep(Int3 gridSize, GridLevel level, bool bottomIsOutlet);
+    /// transition (the upper grid). The grid itself is passed to each sweep, so a Scene can move.
+    GridSweep(Int3 gridSize, bool bottomIsOutlet);
 
     void wake(std::uint32_t cell);              ///< the cell is visited in its layer's next turn
     void wakeAt(int x, int y, int z);           ///< as wake, by coordinate
@@ -51,8 +63,9 @@ public:
     /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
     std::int64_t awakeRowCount() const;
 
-    /// Applies the rules to layers 1..top, bottom-up. sleeping = false visits every cell.
-    SweepResult sweep(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, bool sleeping, WorkerPool* pool);
+    /// Applies the rules to layers 1..top of context.grid, bottom-up; pool (may be null) shares
+    /// busy layers' strips between threads.
+    SweepResult sweep(const SweepContext& context, WorkerPool* pool);
 
     /// Calls visit(cell) for every cell of layer 0 that is awake (or every cell, when not
     /// sleeping), in index order, and puts them to sleep.
@@ -80,16 +93,14 @@ public:
     }
 
 private:
-    void sweepStrip(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, bool sleeping, int y, int strip,
-                    SweepResult& totals);
-    void visitCell(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, int x, int y, int z,
-                   SweepResult& totals);
+    SweepResult sweepStrip(const SweepContext& context, int y, int strip);
+    bool visitCell(const SweepContext& context, int x, int y, int z); // true when a grain moved
     void clearRow(std::uint32_t row);
+    std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
     int awakeRowsInLayer(int y) const;
 
     Int3 size_;
-    GridLevel level_;
     bool bottomIsOutlet_;
     GridSweep* above_ = nullptr;
     bool deferWakesAbove_ = false;

@@ -1,5 +1,7 @@
 #include "sandcore/mask_cleanup.hpp"
 
+#include "layer_neighbourhood.hpp"
+
 #include <algorithm>
 #include <vector>
 
@@ -42,12 +44,10 @@ std::int64_t removeSharpEdges(InsideMask& mask, int fromLayer, int toLayer) {
             for (int z = 0; z < s.z; ++z)
                 for (int x = 0; x < s.x; ++x) {
                     if (!mask.at(x, y, z)) continue;
-                    bool supported = false;
-                    for (int dz = -1; dz <= 1 && !supported; ++dz)
-                        for (int dx = -1; dx <= 1 && !supported; ++dx) {
-                            const int xx = x + dx, zz = z + dz;
-                            supported = xx >= 0 && zz >= 0 && xx < s.x && zz < s.z && mask.at(xx, y - 1, zz);
-                        }
+                    // Supported: some cell of the 3x3 below is inside, so sand here can slip on.
+                    const LayerNeighbourhood around(x, z, s.x, s.z);
+                    const bool supported =
+                        around.anyWithCentre([&](int dx, int dz) { return mask.at(x + dx, y - 1, z + dz); });
                     if (!supported) {
                         mask.set(x, y, z, false);
                         ++removedTotal;

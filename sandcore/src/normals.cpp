@@ -1,5 +1,7 @@
 #include "sandcore/normals.hpp"
 
+#include "layer_neighbourhood.hpp"
+
 #include <cmath>
 
 namespace sandcore {
@@ -31,34 +33,33 @@ Vec3 columnNormal(const std::vector<int>& heights, Int3 gridSize, int x, int z) 
     const int here = heights[std::size_t(x) + std::size_t(gridSize.x) * std::size_t(z)];
     float sx = 0, sy = 0, sz = 0;
     int faces = 0;
-    for (int dz = -1; dz <= 1; ++dz)
-        for (int dx = -1; dx <= 1; ++dx) {
-            const int xx = x + dx, zz = z + dz;
-            if ((dx == 0 && dz == 0) || xx < 0 || zz < 0 || xx >= gridSize.x || zz >= gridSize.z) continue;
-            const int there = heights[std::size_t(xx) + std::size_t(gridSize.x) * std::size_t(zz)];
-            const float side = there > here ? -1.0f : there < here ? 1.0f : 0.0f;
-            const Vec3 face = normalised(side * float(dx), 1.0f, side * float(dz));
-            sx += face.x;
-            sy += face.y;
-            sz += face.z;
-            ++faces;
-        }
+    const LayerNeighbourhood around(x, z, gridSize.x, gridSize.z);
+    around.forEachAround([&](int dx, int dz) {
+        const int there = heights[std::size_t(around.column(dx, dz))];
+        const float side = there > here ? -1.0f : there < here ? 1.0f : 0.0f;
+        const Vec3 face = normalised(side * float(dx), 1.0f, side * float(dz));
+        sx += face.x;
+        sy += face.y;
+        sz += face.z;
+        ++faces;
+    });
     if (faces == 0) return {0.0f, 1.0f, 0.0f};
     return normalised(sx, sy, sz);
 }
 
 Vec3 gradientNormal(const CellGrid& grid, std::uint32_t cell) {
     const Int3 c = grid.coordinate(cell);
+    const CellNeighbourhood around(grid, c.x, c.y, c.z);
     int gx = 0, gy = 0, gz = 0;
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz)
-            for (int dx = -1; dx <= 1; ++dx) {
-                const int x = c.x + dx, y = c.y + dy, z = c.z + dz;
-                if (!grid.contains(x, y, z) || grid.at(x, y, z) < 0) continue;
-                gx += dx;
-                gy += dy;
-                gz += dz;
-            }
+    for (int dy = -1; dy <= 1; ++dy) {
+        if (!around.hasLayer(dy)) continue;
+        around.forEachWithCentre([&](int dx, int dz) {
+            if (around.at(dx, dy, dz) < 0) return;
+            gx += dx;
+            gy += dy;
+            gz += dz;
+        });
+    }
     // Sand lies where the gradient points; the surface faces the other way.
     return normalised(float(-gx), float(-gy), float(-gz));
 }

@@ -43,8 +43,8 @@ Scene::Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::ve
         if (cell >= upper_.cellCount() || upperLayout_[cell] != kEmpty)
             throw std::invalid_argument("a fill cell lies outside the upper grid or on an INVALID cell");
     if (settings_.threads < 1) throw std::invalid_argument("threads must be at least 1");
-    upperSweep_ = std::make_unique<GridSweep>(upper_.size(), GridLevel::Upper, true);
-    lowerSweep_ = std::make_unique<GridSweep>(lower_.size(), GridLevel::Lower, false);
+    upperSweep_ = std::make_unique<GridSweep>(upper_.size(), true);
+    lowerSweep_ = std::make_unique<GridSweep>(lower_.size(), false);
     lowerSweep_->setGridAbove(upperSweep_.get());
     pool_ = std::make_unique<WorkerPool>(settings_.threads);
     reset();
@@ -78,6 +78,8 @@ void Scene::reset() {
 void Scene::step() {
     const std::uint64_t stepNumber = counters_.stepsDone + 1;
     WorkerPool* pool = settings_.threads > 1 ? pool_.get() : nullptr;
+    const SweepContext lowerContext{lower_, grains_, settings_.seed, stepNumber, GridLevel::Lower, settings_.sleeping};
+    const SweepContext upperContext{upper_, grains_, settings_.seed, stepNumber, GridLevel::Upper, settings_.sleeping};
     SweepResult lower, upper;
     // The two grids touch no common cell during their sweeps (the lower grid's wakes of the
     // outlet row wait until both are done), so when both have comparable work they run side by
@@ -91,15 +93,15 @@ void Scene::step() {
         lowerSweep_->setDeferWakesAbove(true);
         pool->parallelFor(2, [&](int grid) {
             if (grid == 0)
-                lower = lowerSweep_->sweep(lower_, grains_, settings_.seed, stepNumber, settings_.sleeping, nullptr);
+                lower = lowerSweep_->sweep(lowerContext, nullptr);
             else
-                upper = upperSweep_->sweep(upper_, grains_, settings_.seed, stepNumber, settings_.sleeping, nullptr);
+                upper = upperSweep_->sweep(upperContext, nullptr);
         });
         lowerSweep_->setDeferWakesAbove(false);
         lowerSweep_->applyDeferredWakes();
     } else {
-        lower = lowerSweep_->sweep(lower_, grains_, settings_.seed, stepNumber, settings_.sleeping, pool);
-        upper = upperSweep_->sweep(upper_, grains_, settings_.seed, stepNumber, settings_.sleeping, pool);
+        lower = lowerSweep_->sweep(lowerContext, pool);
+        upper = upperSweep_->sweep(upperContext, pool);
     }
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;

@@ -65,9 +65,11 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const HourglassSettings& h
 Scene makeSculptureScene(const InsideMask& model, const StepSettings& step) {
     requireInside(model, "the model");
     const Int3 m = model.size;
-    CellGrid upper({2 * m.x, m.y, 2 * m.z}, kEmpty);
-    CellGrid lower({2 * m.x, 2 * m.y, 2 * m.z}, kEmpty);
-    const int offsetX = m.x / 2, offsetZ = m.z / 2;
+    const SceneGridSizes sizes = sceneGridSizes(SceneKind::Sculpture, m);
+    CellGrid upper(sizes.upper, kEmpty);
+    CellGrid lower(sizes.lower, kEmpty);
+    // The model in the middle of the upper grid.
+    const int offsetX = (sizes.upper.x - m.x) / 2, offsetZ = (sizes.upper.z - m.z) / 2;
     std::vector<std::uint32_t> fill;
     for (int y = 0; y < m.y; ++y)
         for (int z = 0; z < m.z; ++z)

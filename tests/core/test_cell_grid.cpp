@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -50,6 +51,20 @@ TEST_CASE("cells outside the box are not neighbours") {
     CHECK(grid.nearCellsOf(grid.index(2, 0, 2), out) == 3);
 }
 
+TEST_CASE("neighbours come in one fixed order: the direct one first, then z outer, x inner, clipped at the box") {
+    const CellGrid grid({4, 3, 4});
+    std::uint32_t out[9];
+    REQUIRE(grid.successorsOf(grid.index(1, 1, 1), out) == 9);
+    const Int3 interior[9] = {{1, 0, 1}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 1},
+                              {2, 0, 1}, {0, 0, 2}, {1, 0, 2}, {2, 0, 2}};
+    for (int i = 0; i < 9; ++i) CHECK(grid.coordinate(out[i]) == interior[i]);
+    // On the x = 3 edge at z = 0, the columns outside the box drop out and the order stays.
+    REQUIRE(grid.nearCellsOf(grid.index(3, 2, 0), out) == 3);
+    CHECK(grid.coordinate(out[0]) == Int3{2, 2, 0});
+    CHECK(grid.coordinate(out[1]) == Int3{2, 2, 1});
+    CHECK(grid.coordinate(out[2]) == Int3{3, 2, 1});
+}
+
 TEST_CASE("grid sizes are validated before allocating") {
     CHECK_THROWS_AS(CellGrid({0, 4, 4}), std::invalid_argument);
     CHECK_THROWS_AS(CellGrid({4, -1, 4}), std::invalid_argument);
@@ -62,4 +77,8 @@ TEST_CASE("grid sizes are validated before allocating") {
     }
     CHECK_NOTHROW(validateGridSize({1290, 1290, 1290})); // 2,146,689,000 cells: just under 2^31
     CHECK_THROWS(validateGridSize({1291, 1291, 1291}));
+    // The largest int on every axis is refused without the cell count overflowing (UBSan checks).
+    const int most = std::numeric_limits<int>::max();
+    CHECK_THROWS_WITH(validateGridSize({most, most, most}),
+                      doctest::Contains("exceeds the limit of 2^31 cells"));
 }

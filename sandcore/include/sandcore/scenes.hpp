@@ -4,14 +4,9 @@
 
 #include "sandcore/inside_mask.hpp"
 #include "sandcore/scene.hpp"
+#include "sandcore/scene_geometry.hpp"
 
 namespace sandcore {
-
-/// R10 canvas sizes.
-struct CanvasSettings {
-    Int3 upperSize{60, 10, 60}; ///< the thin release grid, cells
-    Int3 lowerSize{60, 40, 60}; ///< the painting box, cells
-};
 
 /// R10 hourglass options.
 struct HourglassSettings {
@@ -28,9 +23,10 @@ Scene makeCanvasScene(const CanvasSettings& canvas = {}, const StepSettings& ste
 Scene makeHourglassScene(const InsideMask& vessel, const HourglassSettings& hourglass = {},
                          const StepSettings& step = {});
 
-/// A sculpture from a model's inside mask (MODE_SHAPE + SHAPE_LOSE): the upper grid is twice as
-/// wide and deep as the model with the model filled in its middle; below it an EMPTY grid twice
-/// as wide, deep and high as the model. Throws std::invalid_argument for an empty mask.
+/// A sculpture from a model's inside mask (MODE_SHAPE + SHAPE_LOSE): the grids of
+/// sceneGridSizes(SceneKind::Sculpture, model.size), the upper one twice as wide and deep as the
+/// model with the model filled in its middle; below it an EMPTY grid twice as wide, deep and
+/// high as the model. Throws std::invalid_argument for an empty mask.
 Scene makeSculptureScene(const InsideMask& model, const StepSettings& step = {});
 
 /// The cell of the upper grid's top row over the grid's centre, where `simulate --pour` releases sand.
