@@ -32,6 +32,7 @@ void StepRateMeter::clear() {
 }
 
 SceneHost::SceneHost(const SceneSettings& settings) {
+    clock_.setMaxStepsPerFrame(kMaxStepsPerFrame);
     SceneSettings checked = settings;
     applySceneDefaults(checked);
     adopt(buildScene(checked), checked);
@@ -149,6 +150,14 @@ void SceneHost::reset() {
     scene_->reset();
     lastStepOutsideClock_ = false;
     ++contentRevision_;
+}
+
+bool SceneHost::flip() {
+    if (!scene_->flip()) return false;
+    lastStepOutsideClock_ = true; // the grains sit in their new cells; the view turns instead
+    ++contentRevision_;
+    ++layoutRevision_;
+    return true;
 }
 
 float SceneHost::displayStepFraction() const {

@@ -50,3 +50,14 @@ TEST_CASE("single step works while paused; bad rates are ignored") {
     clock.setStepsPerSecond(120.0);
     CHECK(clock.stepsPerSecond() == 120.0);
 }
+
+TEST_CASE("sim clock: slow frames run several steps up to the cap, and say when the cap dropped steps") {
+    sandcore::SimClock clock({30.0, 64});
+    clock.setRunning(true);
+    CHECK(clock.advance(1.0 / 3.0) == 10); // 3 frames per second: 10 steps each keep 30 steps/s
+    CHECK_FALSE(clock.capped());
+    CHECK(clock.advance(3.0) == 64); // a 3 s stall: 90 due, 64 run
+    CHECK(clock.capped());
+    clock.setMaxStepsPerFrame(0);
+    CHECK(clock.maxStepsPerFrame() == 1);
+}

@@ -52,6 +52,7 @@ struct SceneSnapshot {
     SceneCounters counters;                ///< R14 counters
     std::vector<CellBox> upperObstacles;   ///< obstacles of the upper grid
     std::vector<CellBox> lowerObstacles;   ///< obstacles of the lower grid
+    bool flipped = false;                  ///< the hourglass was turned over an odd number of times
 };
 
 /// Two grids of sand and the step that moves it: the library's main object. Movable, not copyable.
@@ -91,6 +92,16 @@ public:
     void setThreads(int threads);       ///< 1 or more; the result does not change
     void setSleeping(bool sleeping);    ///< R5 on or off; the result does not change
 
+    /// Turns the hourglass over (T1): the sand becomes the exact mirror in y of what it was,
+    /// the lower grid becomes the upper and the upper the lower, every grain keeps its identity
+    /// and colour, and the drain goes on. Two flips with no step between give back the same
+    /// state. Returns false (and changes nothing) for a sculpture or a canvas.
+    bool flip();
+    /// True after an odd number of flips; reset() turns the hourglass upright again.
+    bool flipped() const { return flipped_; }
+    /// An independent copy of the scene in its current state: the same later steps, the same hash.
+    Scene clone() const;
+
     /// The whole state, for undo.
     SceneSnapshot snapshot() const;
     /// Returns to a state taken by snapshot() of this scene: the state hash and every later
@@ -117,6 +128,8 @@ private:
     void transition();
     void rebuildCells(GridLevel level);
     void markEverythingAwake();
+    void flipLayouts();
+    void makeSweeps();
 
     SceneKind kind_;
     StepSettings settings_;
@@ -127,6 +140,7 @@ private:
     GrainStore grains_;
     std::uint32_t nextIdentity_ = 0;
     SceneCounters counters_;
+    bool flipped_ = false;
     std::unique_ptr<GridSweep> upperSweep_, lowerSweep_;
     std::unique_ptr<WorkerPool> pool_;
 };

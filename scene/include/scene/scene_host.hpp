@@ -86,6 +86,12 @@ public:
     void runSteps(int steps);
     /// R10 reset: refills the scene; the clock keeps running or not as it was.
     void reset();
+    /// Turns the hourglass over (T1); false for a sculpture or a canvas.
+    bool flip();
+    /// Steps the clock may run in one frame to keep its rate when frames are slow.
+    static constexpr int kMaxStepsPerFrame = 64;
+    /// True when the last frame had more steps due than kMaxStepsPerFrame: the rate was not kept.
+    bool rateCapped() const { return clock_.capped(); }
 
     /// Share (0..1) of the last step's glide that frames draw now: the clock's fraction while it
     /// runs the steps, 1 (grains at their new cells) after steps made outside it.
