@@ -10,7 +10,7 @@ using Clock = std::chrono::steady_clock;
 constexpr double kRateWindowSeconds = 1.0;
 } // namespace
 
-void StepRateMeter::addFrame(double elapsedSeconds, int steps) {
+void StepRateMeter::addFrame(double elapsedSeconds, double steps) {
     if (!(elapsedSeconds >= 0.0)) return;
     frames_.push_back({elapsedSeconds, steps});
     seconds_ += elapsedSeconds;
@@ -23,12 +23,12 @@ void StepRateMeter::addFrame(double elapsedSeconds, int steps) {
     }
 }
 
-double StepRateMeter::stepsPerSecond() const { return seconds_ > 0.0 ? double(steps_) / seconds_ : 0.0; }
+double StepRateMeter::stepsPerSecond() const { return seconds_ > 0.0 ? steps_ / seconds_ : 0.0; }
 
 void StepRateMeter::clear() {
     frames_.clear();
     seconds_ = 0.0;
-    steps_ = 0;
+    steps_ = 0.0;
 }
 
 SceneHost::SceneHost(const SceneSettings& settings) {
@@ -126,8 +126,9 @@ void SceneHost::setRunning(bool running) {
 }
 
 int SceneHost::advance(double elapsedSeconds) {
+    const double fractionBefore = clock_.stepFraction();
     const int due = clock_.advance(elapsedSeconds);
-    rate_.addFrame(elapsedSeconds, due);
+    rate_.addFrame(elapsedSeconds, double(due) + clock_.stepFraction() - fractionBefore);
     if (due == 0) return 0;
     const auto start = Clock::now();
     for (int i = 0; i < due; ++i) scene_->step();

@@ -127,7 +127,7 @@ TEST_CASE("flip: after a turn, sleeping equals a full sweep and two threads equa
     CHECK(threaded.stateHash() == reference.stateHash());
 }
 
-TEST_CASE("flip: reset turns the hourglass upright and refills it; sculptures and canvases do not turn") {
+TEST_CASE("flip: reset turns the hourglass upright and refills it, and sculptures and canvases do not turn") {
     Scene scene = lopsided();
     const std::uint64_t fresh = scene.stateHash();
     for (int i = 0; i < 60; ++i) scene.step();

@@ -39,7 +39,7 @@ TEST_CASE("a slow frame drops steps beyond the per-frame limit") {
     CHECK(clock.stepFraction() < 1.0);
 }
 
-TEST_CASE("single step works while paused; bad rates are ignored") {
+TEST_CASE("single step works while paused, and bad rates are ignored") {
     SimClock clock;
     clock.requestSingleStep();
     CHECK(clock.advance(0.0) == 1);
