@@ -111,6 +111,12 @@ public:
     /// The obstacles placed in a grid, in the order they were added.
     const std::vector<CellBox>& obstacles(GridLevel level) const;
 
+    /// A grid's layout as built (EMPTY and INVALID cells only, no obstacles, no grains): with
+    /// fillCells(), kind() and settings() what the constructor needs to build this scene again.
+    const CellGrid& layout(GridLevel level) const { return level == GridLevel::Upper ? upperLayout_ : lowerLayout_; }
+    /// The upper-grid cells reset() fills with sand, in the order they are filled.
+    const std::vector<std::uint32_t>& fillCells() const { return upperFill_; }
+
 private:
     CellGrid& gridRef(GridLevel level) { return level == GridLevel::Upper ? upper_ : lower_; }
     GridSweep& sweepOf(GridLevel level);
