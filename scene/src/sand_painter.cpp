@@ -84,7 +84,7 @@ void SandPainter::paintSample(sandcore::Scene& scene, CanvasColumn column, const
 }
 
 void SandPainter::pushHistory(const sandcore::Scene& scene) {
-    history_.emplace_back(scene.snapshot());
+    history_.emplace_back(scene);
     historyBytes_ += history_.back().bytes();
     // Oldest strokes go first; the one just saved always stays, so Undo takes it back.
     const std::size_t maxStrokes = std::max<std::size_t>(limits_.maxStrokes, 1);
@@ -121,8 +121,8 @@ void SandPainter::endStroke() { last_.reset(); }
 bool SandPainter::undo(sandcore::Scene& scene) {
     if (history_.empty()) return false;
     endStroke();
-    redo_.emplace_back(scene.snapshot());
-    scene.restore(history_.back().expand());
+    redo_.emplace_back(scene);
+    scene.restore(history_.back().expand(scene));
     historyBytes_ -= history_.back().bytes();
     history_.pop_back();
     return true;
@@ -132,7 +132,7 @@ bool SandPainter::redo(sandcore::Scene& scene) {
     if (redo_.empty()) return false;
     endStroke();
     pushHistory(scene);
-    scene.restore(redo_.back().expand());
+    scene.restore(redo_.back().expand(scene));
     redo_.pop_back();
     return true;
 }

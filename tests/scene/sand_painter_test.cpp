@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -153,7 +154,7 @@ TEST_CASE("undo history is capped by memory as well as by count, and always keep
     {
         sandcore::Scene dry = smallCanvas();
         for (int stroke = 0; stroke < 6; ++stroke) {
-            kept.push_back(CompressedSnapshot(dry.snapshot()).bytes());
+            kept.push_back(CompressedSnapshot(dry).bytes());
             releaseGrain(dry, {stroke, 2}, 0);
         }
     }
@@ -293,4 +294,33 @@ TEST_CASE("compressed history: a 256-wide canvas keeps a stroke in far less than
                                 << perStroke << " bytes per stroke");
     CHECK(painter.undoDepth() == 4);
     CHECK(perStroke * 50 < raw);
+}
+
+TEST_CASE("compressed snapshot: expands to exactly the scene's snapshot, obstacles and all") {
+    sandcore::Scene scene = smallCanvas();
+    scene.addObstacle(GridLevel::Lower, {{2, 0, 2}, {6, 4, 7}});
+    scene.addObstacle(GridLevel::Lower, {{-3, 5, 10}, {30, 6, 12}}); // clipped to the grid
+    scene.addObstacle(GridLevel::Upper, {{8, 0, 8}, {9, 3, 9}});
+    SandPainter painter;
+    PaintSettings settings;
+    settings.brushRadius = 3;
+    settings.color = 0xff00ff00u;
+    painter.beginStroke(scene, {4, 4}, settings);
+    for (int i = 0; i < 12; ++i) {
+        scene.step();
+        painter.continueStroke(scene, {4 + i, 4 + i / 2}, settings);
+    }
+    painter.endStroke();
+    scene.clearObstacles(GridLevel::Upper);
+    const sandcore::SceneSnapshot expected = scene.snapshot();
+    const sandcore::SceneSnapshot got = CompressedSnapshot(scene).expand(scene);
+    CHECK(std::ranges::equal(got.upper.cells(), expected.upper.cells()));
+    CHECK(std::ranges::equal(got.lower.cells(), expected.lower.cells()));
+    CHECK(got.grains.cell == expected.grains.cell);
+    CHECK(got.grains.color == expected.grains.color);
+    CHECK(got.grains.movedAtStep == expected.grains.movedAtStep);
+    CHECK(got.nextIdentity == expected.nextIdentity);
+    CHECK(got.counters.stepsDone == expected.counters.stepsDone);
+    CHECK(got.lowerObstacles.size() == 2);
+    CHECK(got.upperObstacles.empty());
 }

@@ -116,6 +116,8 @@ public:
     const CellGrid& layout(GridLevel level) const { return level == GridLevel::Upper ? upperLayout_ : lowerLayout_; }
     /// The upper-grid cells reset() fills with sand, in the order they are filled.
     const std::vector<std::uint32_t>& fillCells() const { return upperFill_; }
+    /// The identity the next new grain gets (part of snapshot(), without copying the grids).
+    std::uint32_t nextIdentity() const { return nextIdentity_; }
 
 private:
     CellGrid& gridRef(GridLevel level) { return level == GridLevel::Upper ? upper_ : lower_; }

@@ -1,6 +1,9 @@
 #pragma once
-// SPEC E3: a SceneSnapshot kept zstd-compressed, so the undo and redo history hold many more
-// strokes in the same memory (a 256-wide canvas is 55 MB raw, mostly EMPTY cells).
+// SPEC E3: a scene's state kept small, so the undo and redo history hold many more strokes in the
+// same memory. A 256-wide canvas is 55 MB of cells, nearly all EMPTY or INVALID; but every cell
+// follows from the scene's layouts, its obstacles and its grains (a grain's cell names it, an
+// obstacle's cells are INVALID, every other cell is as laid out), so only the grain records,
+// obstacles and counters are kept, zstd-compressed, and the grids are rebuilt on expand().
 
 #include "sandcore/scene.hpp"
 
@@ -9,16 +12,17 @@
 
 namespace sandglass {
 
-/// A scene's whole state, compressed; expand() gives back exactly what was compressed.
+/// A scene's whole state, compressed; expand() gives back exactly Scene::snapshot() of the time.
 class CompressedSnapshot {
 public:
-    /// Compresses a snapshot (zstd, the state file's codec).
-    explicit CompressedSnapshot(const sandcore::SceneSnapshot& snapshot);
-    /// The snapshot as it was taken.
-    sandcore::SceneSnapshot expand() const;
+    /// The scene's current state (grains, obstacles, counters), compressed with zstd.
+    explicit CompressedSnapshot(const sandcore::Scene& scene);
+    /// The snapshot as it was taken, its grids rebuilt from `scene`'s layouts: pass the same
+    /// scene (or one built the same way). Scene::restore takes it.
+    sandcore::SceneSnapshot expand(const sandcore::Scene& scene) const;
     /// Memory the compressed form uses, bytes.
     std::size_t bytes() const { return compressed_.capacity(); }
-    /// Bytes of the snapshot before compression (its encoded size).
+    /// Bytes of the state before compression.
     std::uint64_t rawBytes() const { return rawBytes_; }
 
 private:
