@@ -78,6 +78,16 @@ public:
         at_ += std::size_t(count) * sizeof(T);
         return values;
     }
+    /// An array written by putArray of exactly out.size() elements, read into out.
+    template <class T> void getArrayInto(const char* what, std::span<T> out) {
+        const auto count = get<std::uint64_t>(what);
+        if (count != out.size())
+            throw FormatError(std::string(what) + ": " + std::to_string(count) + " entries where " +
+                              std::to_string(out.size()) + " belong");
+        require(out.size_bytes(), what);
+        std::memcpy(out.data(), bytes_.data() + at_, out.size_bytes());
+        at_ += out.size_bytes();
+    }
     std::string getString(const char* what, std::size_t maxLength) {
         const auto length = get<std::uint64_t>(what);
         if (length > maxLength) throw FormatError(std::string(what) + ": a text longer than " + std::to_string(maxLength));

@@ -57,40 +57,41 @@ CellGrid readGrid(ByteReader& in, const char* sizeWhat, const char* cellsWhat) {
     // Checked before CellGrid allocates: the cells must be in the input.
     if (cells > in.remaining() / sizeof(sandcore::CellValue)) throw FormatError(std::string(cellsWhat) + ": the data ends early");
     CellGrid grid(size);
-    const std::vector<sandcore::CellValue> values = in.getArray<sandcore::CellValue>(cellsWhat, cells);
-    std::copy(values.begin(), values.end(), grid.cells().begin());
+    in.getArrayInto<sandcore::CellValue>(cellsWhat, grid.cells());
     return grid;
 }
 
 } // namespace
 
-std::size_t encodedSnapshotBytes(const sandcore::SceneSnapshot& s) {
-    const std::size_t grains = s.grains.size();
-    return 2 * (12 + 8) + s.upper.cells().size_bytes() + s.lower.cells().size_bytes() + 6 * 8 + grains * 22 + 4 +
-           5 * 8 + 2 * 8 + (s.upperObstacles.size() + s.lowerObstacles.size()) * 24;
+std::size_t encodedSnapshotBytes(const sandcore::Scene& scene) {
+    const std::size_t grains = scene.grains().size();
+    return 2 * (12 + 8) + scene.grid(GridLevel::Upper).cells().size_bytes() +
+           scene.grid(GridLevel::Lower).cells().size_bytes() + 6 * 8 + grains * 22 + 4 + 5 * 8 + 2 * 8 +
+           (scene.obstacles(GridLevel::Upper).size() + scene.obstacles(GridLevel::Lower).size()) * 24;
 }
 
-void writeSnapshot(ByteWriter& out, const sandcore::SceneSnapshot& s) {
-    out.reserve(out.bytes().size() + encodedSnapshotBytes(s));
-    writeSize(out, s.upper.size());
-    out.putArray(s.upper.cells());
-    writeSize(out, s.lower.size());
-    out.putArray(s.lower.cells());
-    const sandcore::GrainStore& g = s.grains;
+void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
+    out.reserve(out.bytes().size() + encodedSnapshotBytes(scene));
+    for (const GridLevel level : {GridLevel::Upper, GridLevel::Lower}) {
+        writeSize(out, scene.grid(level).size());
+        out.putArray(scene.grid(level).cells());
+    }
+    const sandcore::GrainStore& g = scene.grains();
     out.putArray(g.level);
     out.putArray(g.cell);
     out.putArray(g.cameFrom);
     out.putArray(g.movedAtStep);
     out.putArray(g.identity);
     out.putArray(g.color);
-    out.put<std::uint32_t>(s.nextIdentity);
-    out.put<std::int64_t>(s.counters.grainsUpper);
-    out.put<std::int64_t>(s.counters.grainsLower);
-    out.put<std::int64_t>(s.counters.movesLastStep);
-    out.put<std::int64_t>(s.counters.visitedLastStep);
-    out.put<std::uint64_t>(s.counters.stepsDone);
-    writeBoxes(out, s.upperObstacles);
-    writeBoxes(out, s.lowerObstacles);
+    const sandcore::SceneCounters& c = scene.counters();
+    out.put<std::uint32_t>(scene.nextIdentity());
+    out.put<std::int64_t>(c.grainsUpper);
+    out.put<std::int64_t>(c.grainsLower);
+    out.put<std::int64_t>(c.movesLastStep);
+    out.put<std::int64_t>(c.visitedLastStep);
+    out.put<std::uint64_t>(c.stepsDone);
+    writeBoxes(out, scene.obstacles(GridLevel::Upper));
+    writeBoxes(out, scene.obstacles(GridLevel::Lower));
 }
 
 sandcore::SceneSnapshot readSnapshot(ByteReader& in) {

@@ -7,10 +7,11 @@
 
 namespace sandglass {
 
-/// Appends every field of the snapshot.
-void writeSnapshot(ByteWriter& out, const sandcore::SceneSnapshot& snapshot);
+/// Appends every field of the scene's snapshot (what Scene::snapshot() holds), read straight
+/// from the scene without copying its grids first.
+void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene);
 
-/// Reads a snapshot written by writeSnapshot. Sizes are checked (grid sizes valid, arrays no
+/// Reads what writeSnapshot wrote. Sizes are checked (grid sizes valid, arrays no
 /// longer than the input) but not the content: see requireConsistentSnapshot. Throws FormatError.
 sandcore::SceneSnapshot readSnapshot(ByteReader& in);
 
@@ -20,7 +21,7 @@ sandcore::SceneSnapshot readSnapshot(ByteReader& in);
 void requireConsistentSnapshot(const sandcore::SceneSnapshot& snapshot, const sandcore::CellGrid& upperLayout,
                                const sandcore::CellGrid& lowerLayout);
 
-/// Bytes writeSnapshot appends for this snapshot (to reserve once).
-std::size_t encodedSnapshotBytes(const sandcore::SceneSnapshot& snapshot);
+/// Bytes writeSnapshot appends for this scene (to reserve once).
+std::size_t encodedSnapshotBytes(const sandcore::Scene& scene);
 
 } // namespace sandglass

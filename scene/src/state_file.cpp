@@ -164,6 +164,8 @@ std::uint64_t stateChecksum(std::span<const std::uint8_t> bytes, std::uint64_t s
 
 std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const SceneRequest& request) {
     ByteWriter out;
+    out.reserve(encodedSnapshotBytes(scene) + 2 * std::size_t(scene.layout(GridLevel::Upper).cellCount()) +
+                2 * std::size_t(scene.layout(GridLevel::Lower).cellCount()) + 4 * scene.fillCells().size() + 4096);
     out.put<std::uint8_t>(std::uint8_t(scene.kind()));
     out.put<std::uint64_t>(scene.settings().seed);
     out.put<std::int32_t>(scene.settings().threads);
@@ -177,7 +179,7 @@ std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const
     writeLayout(out, scene.layout(GridLevel::Upper));
     writeLayout(out, scene.layout(GridLevel::Lower));
     out.putArray(scene.fillCells());
-    writeSnapshot(out, scene.snapshot());
+    writeSnapshot(out, scene);
     return std::move(out.bytes());
 }
 
