@@ -39,9 +39,10 @@ struct PaintSettings {
     bool colorFromDraft = false;            ///< P6: new grains take the draft image's colour at their column
 };
 
-/// How much undo history a painter keeps (P7). Each stroke keeps a whole-scene snapshot,
-/// compressed (E3: a few hundred kB for a 256-wide canvas where raw it is about 55 MB); memory
-/// caps the history as well as the count.
+/// How much undo history a painter keeps (P7). Each stroke keeps the scene's whole state as a
+/// CompressedSnapshot (E3: grains, obstacles and counters, zstd; tens of kB for a 256-wide
+/// canvas with tens of thousands of grains, where a raw snapshot is about 56 MB); memory caps the
+/// history as well as the count.
 struct UndoLimits {
     std::size_t maxStrokes = 32;                    ///< most strokes kept (at least 1)
     std::size_t maxBytes = std::size_t(256) << 20;  ///< most bytes the kept undo snapshots use, compressed (256 MiB); the last stroke is kept even when it alone is larger
