@@ -25,7 +25,6 @@ namespace {
 constexpr std::array<std::uint8_t, 8> kSignature{0x89, 'S', 'A', 'N', 'D', '\r', '\n', 0x1a};
 constexpr std::uint64_t kMaxRequestFields = 64;
 constexpr std::size_t kMaxFieldText = 4096;
-constexpr int kMaxSavedThreads = 1024;
 
 // ---- the scene request as named text fields: a field this version does not know is skipped,
 // so later versions can add options without breaking older readers of the same format version.
@@ -247,7 +246,7 @@ LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std:
         sandcore::StepSettings settings;
         settings.seed = in.get<std::uint64_t>("seed");
         settings.threads = in.get<std::int32_t>("threads");
-        if (settings.threads < 1 || settings.threads > kMaxSavedThreads)
+        if (!kThreadsRange.contains(settings.threads))
             throw FormatError("thread count " + std::to_string(settings.threads) + " out of range");
         const auto sleeping = in.get<std::uint8_t>("sleeping");
         if (sleeping > 1) throw FormatError("the sleeping flag is neither on nor off");
@@ -272,7 +271,7 @@ LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std:
             sandcore::Scene scene(sandcore::SceneKind(kind), std::move(upperLayout), std::move(lowerLayout),
                                   std::move(fill), settings);
             scene.restore(snapshot);
-            return {std::move(scene), std::move(request)};
+            return {std::move(scene), SceneSettings{std::move(request), settings}};
         } catch (const std::invalid_argument& e) {
             throw FormatError(e.what());
         }

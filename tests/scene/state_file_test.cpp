@@ -68,10 +68,10 @@ void checkSaveLoadContinues(auto makeScene, const SceneRequest& request) {
     LoadedState loaded = loadState(folder / "state.sand");
     checkSameSnapshot(saved, loaded.scene);
     CHECK(loaded.scene.stateHash() == saved.stateHash());
-    CHECK(loaded.request.kind == request.kind);
-    CHECK(loaded.request.resolution == request.resolution);
-    CHECK(loaded.request.shape == request.shape);
-    CHECK(loaded.request.modelPath == request.modelPath);
+    CHECK(loaded.settings.request.kind == request.kind);
+    CHECK(loaded.settings.request.resolution == request.resolution);
+    CHECK(loaded.settings.request.shape == request.shape);
+    CHECK(loaded.settings.request.modelPath == request.modelPath);
     for (int i = 0; i < 100; ++i) {
         straight.step();
         loaded.scene.step();
@@ -82,7 +82,7 @@ void checkSaveLoadContinues(auto makeScene, const SceneRequest& request) {
     checkSameSnapshot(straight, loaded.scene);
     // Saving again gives the same bytes: nothing is lost or invented on the way.
     saveState(folder / "again.sand", straight, request);
-    saveState(folder / "loaded.sand", loaded.scene, loaded.request);
+    saveState(folder / "loaded.sand", loaded.scene, loaded.settings.request);
     CHECK(bytesOf(folder / "again.sand") == bytesOf(folder / "loaded.sand"));
 }
 
@@ -91,14 +91,14 @@ void checkSaveLoadContinues(auto makeScene, const SceneRequest& request) {
 TEST_CASE("state file: an hourglass saved after 100 steps and loaded runs on as if never saved") {
     sandcore::StepSettings step;
     step.seed = 11;
-    checkSaveLoadContinues([&] { return buildScene(support::hourglassRequest(), step); }, support::hourglassRequest());
+    checkSaveLoadContinues([&] { return support::build(support::hourglassRequest(), step); }, support::hourglassRequest());
 }
 
 TEST_CASE("state file: a sculpture saved after 100 steps and loaded runs on as if never saved") {
     sandcore::StepSettings step;
     step.seed = 5;
     step.threads = 2;
-    checkSaveLoadContinues([&] { return buildScene(support::sculptureRequest(), step); }, support::sculptureRequest());
+    checkSaveLoadContinues([&] { return support::build(support::sculptureRequest(), step); }, support::sculptureRequest());
 }
 
 TEST_CASE("state file: a painted canvas with obstacles and colours loads exactly and runs on") {
@@ -133,17 +133,19 @@ TEST_CASE("state file: the scene request (model path and options) and the step s
     step.seed = 0xfeedbeefcafeull;
     step.threads = 3;
     step.sleeping = false;
-    sandcore::Scene scene = buildScene(support::hourglassRequest(), step);
+    sandcore::Scene scene = support::build(support::hourglassRequest(), step);
     saveState(folder / "request.sand", scene, request);
     const LoadedState loaded = loadState(folder / "request.sand");
-    CHECK(loaded.request.modelPath == request.modelPath);
-    CHECK(loaded.request.stretch);
-    CHECK(loaded.request.robust);
-    CHECK(loaded.request.noiseThreshold == -1);
-    CHECK(loaded.request.fillFraction == 0.5f);
-    CHECK(loaded.request.neckRadius == 2.25f);
-    CHECK_FALSE(loaded.request.drainCompletely);
+    CHECK(loaded.settings.request.modelPath == request.modelPath);
+    CHECK(loaded.settings.request.stretch);
+    CHECK(loaded.settings.request.robust);
+    CHECK(loaded.settings.request.noiseThreshold == -1);
+    CHECK(loaded.settings.request.fillFraction == 0.5f);
+    CHECK(loaded.settings.request.neckRadius == 2.25f);
+    CHECK_FALSE(loaded.settings.request.drainCompletely);
     CHECK(loaded.scene.settings().seed == step.seed);
+    CHECK(loaded.settings.step.seed == step.seed);
+    CHECK(loaded.settings.step.threads == 3);
     CHECK(loaded.scene.settings().threads == 3);
     CHECK_FALSE(loaded.scene.settings().sleeping);
     CHECK(loaded.scene.fillCells() == scene.fillCells());
@@ -192,7 +194,7 @@ TEST_CASE("state file: empty, foreign, random, wrong-version and truncated files
 
 TEST_CASE("state file: a state too large for the memory limit is refused before it is decompressed") {
     TemporaryFolder folder;
-    sandcore::Scene scene = buildScene(support::hourglassRequest(), {});
+    sandcore::Scene scene = support::build(support::hourglassRequest(), {});
     saveState(folder / "big.sand", scene, support::hourglassRequest());
     StateLoadLimits limits;
     limits.memoryLimit = 1000;

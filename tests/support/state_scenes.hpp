@@ -12,6 +12,7 @@ namespace support {
 inline sandglass::SceneRequest hourglassRequest() {
     sandglass::SceneRequest request;
     request.kind = sandcore::SceneKind::Hourglass;
+    request.shape = "hourglass";
     request.resolution = 32;
     return request;
 }
@@ -38,7 +39,7 @@ inline sandglass::SceneRequest canvasRequest() {
 inline sandcore::Scene paintedCanvas(std::uint64_t seed = 7) {
     sandcore::StepSettings step;
     step.seed = seed;
-    sandcore::Scene scene = sandglass::buildScene(canvasRequest(), step);
+    sandcore::Scene scene = sandglass::buildScene({canvasRequest(), step});
     scene.addObstacle(sandcore::GridLevel::Lower, {{4, 0, 4}, {10, 6, 9}});
     scene.addObstacle(sandcore::GridLevel::Lower, {{14, 2, 12}, {20, 3, 22}});
     sandglass::SandPainter painter;
@@ -57,4 +58,11 @@ inline sandcore::Scene paintedCanvas(std::uint64_t seed = 7) {
     return scene;
 }
 
+} // namespace support
+
+namespace support {
+/// A scene built from a request and step settings.
+inline sandcore::Scene build(const sandglass::SceneRequest& request, const sandcore::StepSettings& step = {}) {
+    return sandglass::buildScene({request, step});
+}
 } // namespace support

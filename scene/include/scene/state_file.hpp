@@ -31,10 +31,10 @@ inline constexpr std::uint32_t kStateFileVersion = 1;
 /// Bytes of the header before the compressed payload.
 inline constexpr std::size_t kStateHeaderBytes = 48;
 
-/// A scene read back from a state file, with the request it was built from.
+/// A scene read back from a state file, with the settings it was built from.
 struct LoadedState {
     sandcore::Scene scene;  ///< the scene exactly as saved: the same hash and the same future steps
-    SceneRequest request;   ///< how it was built (model path and options), for the panel to show
+    SceneSettings settings; ///< how it was built (model path and options) and how it steps, for the panel to show
 };
 
 /// What loading may use.

@@ -25,6 +25,9 @@ enum class KeyCommand {
     Quit,              ///< Esc
     Screenshot,        ///< P
     Undo,              ///< Ctrl+Z: take back the last stroke (P7)
+    Redo,              ///< Ctrl+Y or Ctrl+Shift+Z: bring back the last undone stroke (E3)
+    Save,              ///< Ctrl+S: save the state (E1)
+    Open,              ///< Ctrl+O: open a saved state (E1)
     RotateLeft, RotateRight, RotateUp, RotateDown, ///< arrow keys
     ZoomIn, ZoomOut,   ///< + and -
     ViewPerspective,   ///< 1
