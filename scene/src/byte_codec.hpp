@@ -74,7 +74,7 @@ public:
                               std::to_string(expected) + " belong");
         if (count > remaining() / sizeof(T)) throw FormatError(std::string(what) + ": the data ends early");
         std::vector<T> values(static_cast<std::size_t>(count));
-        std::memcpy(values.data(), bytes_.data() + at_, std::size_t(count) * sizeof(T));
+        if (count > 0) std::memcpy(values.data(), bytes_.data() + at_, std::size_t(count) * sizeof(T));
         at_ += std::size_t(count) * sizeof(T);
         return values;
     }
@@ -85,7 +85,7 @@ public:
             throw FormatError(std::string(what) + ": " + std::to_string(count) + " entries where " +
                               std::to_string(out.size()) + " belong");
         require(out.size_bytes(), what);
-        std::memcpy(out.data(), bytes_.data() + at_, out.size_bytes());
+        if (!out.empty()) std::memcpy(out.data(), bytes_.data() + at_, out.size_bytes());
         at_ += out.size_bytes();
     }
     std::string getString(const char* what, std::size_t maxLength) {

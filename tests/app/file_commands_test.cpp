@@ -12,7 +12,7 @@
 
 using namespace sandglass;
 
-TEST_CASE("file commands: save, run on, open gives back the saved scene; a damaged file changes nothing") {
+TEST_CASE("file commands: save, run on, open gives back the saved scene, and a damaged file changes nothing") {
     ApplicationOptions options;
     options.window = {96, 96, false, false, "sandglass file test"};
     options.offscreen = true;

@@ -59,7 +59,7 @@ TEST_CASE("simulate --load of a damaged, empty or foreign file: one line naming 
     CHECK(runSandglass("simulate --load " + quoted(state) + " --scene canvas").exitCode == 2);
 }
 
-TEST_CASE("simulate --export writes the sand; an unknown format or missing folder fails before the run") {
+TEST_CASE("simulate --export writes the sand, and an unknown format or missing folder fails before the run") {
     TemporaryFolder folder;
     for (const char* name : {"sand.ply", "sand.vox", "sand.stl"}) {
         const auto r = runSandglass("simulate --scene sculpture --shape sphere --res 12 --steps 30 --export " + quoted(folder / name));
