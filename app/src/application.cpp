@@ -6,6 +6,8 @@
 
 #include "scene/canvas_surface.hpp"
 #include "scene/draft_image.hpp"
+#include "scene/scene_export.hpp"
+#include "scene/state_file.hpp"
 
 #include "sandcore/display_positions.hpp"
 
@@ -273,6 +275,9 @@ void Application::handleKey(KeyCommand command) {
     case KeyCommand::Screenshot: state_.commands.push(Command::Screenshot); break;
     case KeyCommand::Undo: state_.commands.push(Command::Undo); break;
     case KeyCommand::Flip: state_.commands.push(Command::Flip); break;
+    case KeyCommand::Redo: state_.commands.push(Command::Redo); break;
+    case KeyCommand::Save: state_.commands.push(Command::SaveState); break;
+    case KeyCommand::Open: state_.commands.push(Command::LoadState); break;
     default: break;
     }
     std::fflush(stdout);
@@ -356,6 +361,24 @@ void Application::serve(Command command) {
     case Command::SingleStep: host_.requestSingleStep(); break;
     case Command::FrameCamera: frameCamera(); break;
     case Command::Undo: state_.statusLine = canvas_.undo(host_) ? "undone" : "nothing to undo"; break;
+    case Command::Redo: state_.statusLine = canvas_.redo(host_) ? "redone" : "nothing to redo"; break;
+    case Command::SaveState:
+        try {
+            saveState(state_.files.statePath, host_.scene(), state_.loaded.request);
+            state_.statusLine = "saved to " + state_.files.statePath;
+        } catch (const std::exception& error) {
+            state_.statusLine = error.what();
+        }
+        break;
+    case Command::LoadState: loadStateFile(state_.files.statePath); break;
+    case Command::Export:
+        try {
+            exportScene(state_.files.exportPath, host_.scene(), {state_.render.cellSize, state_.render.jitter});
+            state_.statusLine = "exported to " + state_.files.exportPath;
+        } catch (const std::exception& error) {
+            state_.statusLine = error.what();
+        }
+        break;
     case Command::LoadDraft: loadDraft(state_.painting.draftPath); break;
     case Command::AddObstacle:
         state_.statusLine = canvas_.addObstacle(host_, state_.painting.obstacleMin, state_.painting.obstacleMax);
@@ -367,6 +390,27 @@ void Application::serve(Command command) {
     case Command::Screenshot:
     case Command::Benchmark:
     case Command::Quit: break; // served by run() after the frame
+    }
+}
+
+bool Application::loadStateFile(const std::string& path) {
+    try {
+        LoadedState loaded = loadState(path);
+        // The running scene stays untouched unless the whole file loaded.
+        host_.adoptLoaded(std::move(loaded.scene), loaded.settings);
+        state_.files.statePath = path;
+        state_.loaded = host_.loaded();
+        state_.scene = state_.loaded;
+        canvas_.sceneReplaced();
+        timer_.stop();
+        turnStarted_.reset();
+        camera_.setTurn(0.0f);
+        frameCamera();
+        state_.statusLine = "opened " + path;
+        return true;
+    } catch (const std::exception& error) {
+        state_.statusLine = error.what();
+        return false;
     }
 }
 

@@ -29,6 +29,7 @@ void drawPanels(AppState& state) {
         if (state.loaded.request.kind == sandcore::SceneKind::Canvas &&
             ImGui::CollapsingHeader("Painting", ImGuiTreeNodeFlags_DefaultOpen))
             drawPaintingSection(state);
+        if (ImGui::CollapsingHeader("File")) drawFileSection(state);
         if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) drawStatisticsSection(state);
         if (!state.statusLine.empty()) {
             ImGui::Separator();
@@ -286,7 +287,11 @@ void drawPaintingSection(AppState& state) {
     if (ImGui::Button("Undo stroke (Ctrl+Z)")) state.commands.push(Command::Undo);
     ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::Text("%zu kept (%.0f MiB)", painting.undoSteps, double(painting.undoBytes) / double(1 << 20));
+    ImGui::SameLine();
+    ImGui::BeginDisabled(painting.redoSteps == 0);
+    if (ImGui::Button("Redo (Ctrl+Y)")) state.commands.push(Command::Redo);
+    ImGui::EndDisabled();
+    ImGui::Text("%zu kept (%.1f MiB compressed)", painting.undoSteps, double(painting.undoBytes) / double(1 << 20));
 
     // SPEC G2 / R11: a box of INVALID cells in the lower grid; sand piles on it.
     if (ImGui::TreeNode("obstacles")) {
@@ -298,6 +303,22 @@ void drawPaintingSection(AppState& state) {
         if (ImGui::Button("Clear obstacles")) state.commands.push(Command::ClearObstacles);
         ImGui::TreePop();
     }
+}
+
+void drawFileSection(AppState& state) {
+    // SPEC E1, E2: typed paths (a path dropped on the window still loads drafts and models).
+    FileSettings& files = state.files;
+    char path[512] = {};
+    files.statePath.copy(path, sizeof path - 1);
+    if (ImGui::InputText("state file", path, sizeof path)) files.statePath = path;
+    if (ImGui::Button("Save (Ctrl+S)")) state.commands.push(Command::SaveState);
+    ImGui::SameLine();
+    if (ImGui::Button("Open (Ctrl+O)")) state.commands.push(Command::LoadState);
+    char exportPath[512] = {};
+    files.exportPath.copy(exportPath, sizeof exportPath - 1);
+    if (ImGui::InputText("export file", exportPath, sizeof exportPath)) files.exportPath = exportPath;
+    if (ImGui::Button("Export")) state.commands.push(Command::Export);
+    ImGui::TextDisabled(".ply points, .vox voxels, .obj .stl .glb surface");
 }
 
 void drawStatisticsSection(AppState& state) {

@@ -46,4 +46,14 @@ std::int64_t CellGrid::countGrains() const {
     return std::count_if(cells_.begin(), cells_.end(), [](CellValue v) { return v >= 0; });
 }
 
+CellGrid mirroredInY(const CellGrid& grid) {
+    const Int3 size = grid.size();
+    CellGrid out(size, kEmpty);
+    const std::size_t layer = grid.layerSize();
+    for (int y = 0; y < size.y; ++y)
+        std::copy_n(grid.cells().begin() + std::ptrdiff_t(std::size_t(y) * layer), layer,
+                    out.cells().begin() + std::ptrdiff_t(std::size_t(size.y - 1 - y) * layer));
+    return out;
+}
+
 } // namespace sandcore

@@ -12,16 +12,6 @@ namespace sandcore {
 
 namespace {
 
-CellGrid mirroredInY(const CellGrid& grid) {
-    const Int3 size = grid.size();
-    CellGrid out(size, kEmpty);
-    const std::size_t layer = grid.layerSize();
-    for (int y = 0; y < size.y; ++y)
-        std::copy_n(grid.cells().begin() + std::ptrdiff_t(std::size_t(y) * layer), layer,
-                    out.cells().begin() + std::ptrdiff_t(std::size_t(size.y - 1 - y) * layer));
-    return out;
-}
-
 std::vector<CellBox> mirroredInY(const std::vector<CellBox>& boxes, int sizeY) {
     std::vector<CellBox> out;
     out.reserve(boxes.size());

@@ -83,16 +83,21 @@ void SandPainter::paintSample(sandcore::Scene& scene, CanvasColumn column, const
     }
 }
 
-void SandPainter::beginStroke(sandcore::Scene& scene, CanvasColumn column, const PaintSettings& settings,
-                              const DraftImage* draft) {
-    history_.push_back(scene.snapshot());
-    historyBytes_ += snapshotBytes(history_.back());
-    // Oldest strokes go first; the one just begun always stays, so Undo takes it back.
+void SandPainter::pushHistory(const sandcore::Scene& scene) {
+    history_.emplace_back(scene);
+    historyBytes_ += history_.back().bytes();
+    // Oldest strokes go first; the one just saved always stays, so Undo takes it back.
     const std::size_t maxStrokes = std::max<std::size_t>(limits_.maxStrokes, 1);
     while (history_.size() > maxStrokes || (history_.size() > 1 && historyBytes_ > limits_.maxBytes)) {
-        historyBytes_ -= snapshotBytes(history_.front());
+        historyBytes_ -= history_.front().bytes();
         history_.pop_front();
     }
+}
+
+void SandPainter::beginStroke(sandcore::Scene& scene, CanvasColumn column, const PaintSettings& settings,
+                              const DraftImage* draft) {
+    pushHistory(scene);
+    redo_.clear(); // a new stroke starts a new future
     released_ = erased_ = 0;
     last_ = column;
     paintSample(scene, column, settings, draft);
@@ -116,10 +121,26 @@ void SandPainter::endStroke() { last_.reset(); }
 bool SandPainter::undo(sandcore::Scene& scene) {
     if (history_.empty()) return false;
     endStroke();
-    scene.restore(history_.back());
-    historyBytes_ -= snapshotBytes(history_.back());
+    redo_.emplace_back(scene);
+    scene.restore(history_.back().expand(scene));
+    historyBytes_ -= history_.back().bytes();
     history_.pop_back();
     return true;
+}
+
+bool SandPainter::redo(sandcore::Scene& scene) {
+    if (redo_.empty()) return false;
+    endStroke();
+    pushHistory(scene);
+    scene.restore(redo_.back().expand(scene));
+    redo_.pop_back();
+    return true;
+}
+
+std::size_t SandPainter::redoBytes() const {
+    std::size_t bytes = 0;
+    for (const CompressedSnapshot& snapshot : redo_) bytes += snapshot.bytes();
+    return bytes;
 }
 
 } // namespace sandglass

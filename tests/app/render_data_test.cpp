@@ -3,7 +3,7 @@
 #include "app/frame_benchmark.hpp"
 #include "view/render/grain_instances.hpp"
 #include "view/render/hull_mesh.hpp"
-#include "view/render/sand_patterns.hpp"
+#include "scene/sand_patterns.hpp"
 #include "scene/scene_request.hpp"
 
 #include <doctest/doctest.h>

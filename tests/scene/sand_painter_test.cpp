@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -147,8 +148,19 @@ TEST_CASE("undo history is capped by memory as well as by count, and always keep
     // An empty 16-wide canvas: 16*3*16 + 16*10*16 cells of 4 bytes, no grains, no obstacles.
     CHECK(oneSnapshot == (16 * 3 * 16 + 16 * 10 * 16) * sizeof(sandcore::CellValue));
 
-    // Room for about three snapshots (grains add a little to later ones).
-    SandPainter painter(UndoLimits{32, 3 * oneSnapshot + oneSnapshot / 2});
+    // The history keeps compressed snapshots (E3): far below the raw size, and limits apply to
+    // the compressed bytes. A dry run measures what each of six strokes keeps.
+    std::vector<std::size_t> kept;
+    {
+        sandcore::Scene dry = smallCanvas();
+        for (int stroke = 0; stroke < 6; ++stroke) {
+            kept.push_back(CompressedSnapshot(dry).bytes());
+            releaseGrain(dry, {stroke, 2}, 0);
+        }
+    }
+    CHECK(kept.front() * 10 < oneSnapshot);
+    // Room for the newest three and half of another.
+    SandPainter painter(UndoLimits{32, kept[3] + kept[4] + kept[5] + kept[2] / 2});
     std::vector<std::uint64_t> hashes;
     for (int stroke = 0; stroke < 6; ++stroke) {
         hashes.push_back(scene.stateHash());
@@ -157,7 +169,7 @@ TEST_CASE("undo history is capped by memory as well as by count, and always keep
         CHECK(painter.undoBytes() <= painter.undoLimits().maxBytes);
     }
     CHECK(painter.undoDepth() == 3);
-    CHECK(painter.undoBytes() > 2 * oneSnapshot);
+    CHECK(painter.undoBytes() == kept[3] + kept[4] + kept[5]);
     // The newest three strokes come back, newest first; the older ones were dropped.
     for (int stroke = 5; stroke >= 3; --stroke) {
         REQUIRE(painter.undo(scene));
@@ -219,4 +231,96 @@ TEST_CASE("a bad draft image gives a one-line error naming the file") {
         }
     }
     std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("redo takes back an undo exactly, and a new stroke forgets what could be redone") {
+    sandcore::Scene scene = smallCanvas();
+    SandPainter painter;
+    PaintSettings settings;
+    std::vector<std::uint64_t> hashes{scene.stateHash()};
+    for (int stroke = 0; stroke < 3; ++stroke) {
+        painter.beginStroke(scene, {2 + 3 * stroke, 4}, settings);
+        painter.continueStroke(scene, {2 + 3 * stroke, 9}, settings);
+        painter.endStroke();
+        for (int i = 0; i < 5; ++i) scene.step();
+        hashes.push_back(scene.stateHash());
+    }
+    CHECK_FALSE(painter.redo(scene));
+    REQUIRE(painter.undo(scene));
+    REQUIRE(painter.undo(scene));
+    CHECK(painter.redoDepth() == 2);
+    CHECK(painter.redoBytes() > 0);
+    CHECK(painter.redo(scene));
+    CHECK(scene.stateHash() == hashes[2]);
+    CHECK(painter.redo(scene));
+    CHECK(scene.stateHash() == hashes[3]);
+    CHECK_FALSE(painter.redo(scene));
+    CHECK(painter.undoDepth() == 3);
+    // Undo, then a new stroke: the undone future is gone.
+    REQUIRE(painter.undo(scene));
+    CHECK(scene.stateHash() != hashes[3]);
+    painter.beginStroke(scene, {1, 1}, settings);
+    painter.endStroke();
+    CHECK(painter.redoDepth() == 0);
+    CHECK_FALSE(painter.redo(scene));
+    // The whole state comes back through compression: the future after redo is the same.
+    sandcore::Scene again = smallCanvas();
+    SandPainter other;
+    other.beginStroke(again, {5, 5}, settings);
+    other.endStroke();
+    for (int i = 0; i < 7; ++i) again.step();
+    const std::uint64_t before = again.stateHash();
+    REQUIRE(other.undo(again));
+    REQUIRE(other.redo(again));
+    CHECK(again.stateHash() == before);
+}
+
+TEST_CASE("compressed history: a 256-wide canvas keeps a stroke in far less than its raw size") {
+    sandcore::Scene scene = sandcore::makeCanvasScene({{256, 42, 256}, {256, 170, 256}});
+    SandPainter painter;
+    PaintSettings settings;
+    settings.brushRadius = 6;
+    for (int stroke = 0; stroke < 4; ++stroke) {
+        painter.beginStroke(scene, {40 + 40 * stroke, 40}, settings);
+        for (int i = 0; i < 30; ++i) {
+            scene.step();
+            painter.continueStroke(scene, {40 + 40 * stroke + i, 40 + 4 * i}, settings);
+        }
+        painter.endStroke();
+    }
+    const std::size_t raw = snapshotBytes(scene.snapshot());
+    const std::size_t perStroke = painter.undoBytes() / painter.undoDepth();
+    MESSAGE("256-wide canvas, " << scene.grainCount() << " grains: raw snapshot " << raw << " bytes, compressed "
+                                << perStroke << " bytes per stroke");
+    CHECK(painter.undoDepth() == 4);
+    CHECK(perStroke * 50 < raw);
+}
+
+TEST_CASE("compressed snapshot: expands to exactly the scene's snapshot, obstacles and all") {
+    sandcore::Scene scene = smallCanvas();
+    scene.addObstacle(GridLevel::Lower, {{2, 0, 2}, {6, 4, 7}});
+    scene.addObstacle(GridLevel::Lower, {{-3, 5, 10}, {30, 6, 12}}); // clipped to the grid
+    scene.addObstacle(GridLevel::Upper, {{8, 0, 8}, {9, 3, 9}});
+    SandPainter painter;
+    PaintSettings settings;
+    settings.brushRadius = 3;
+    settings.color = 0xff00ff00u;
+    painter.beginStroke(scene, {4, 4}, settings);
+    for (int i = 0; i < 12; ++i) {
+        scene.step();
+        painter.continueStroke(scene, {4 + i, 4 + i / 2}, settings);
+    }
+    painter.endStroke();
+    scene.clearObstacles(GridLevel::Upper);
+    const sandcore::SceneSnapshot expected = scene.snapshot();
+    const sandcore::SceneSnapshot got = CompressedSnapshot(scene).expand(scene);
+    CHECK(std::ranges::equal(got.upper.cells(), expected.upper.cells()));
+    CHECK(std::ranges::equal(got.lower.cells(), expected.lower.cells()));
+    CHECK(got.grains.cell == expected.grains.cell);
+    CHECK(got.grains.color == expected.grains.color);
+    CHECK(got.grains.movedAtStep == expected.grains.movedAtStep);
+    CHECK(got.nextIdentity == expected.nextIdentity);
+    CHECK(got.counters.stepsDone == expected.counters.stepsDone);
+    CHECK(got.lowerObstacles.size() == 2);
+    CHECK(got.upperObstacles.empty());
 }

@@ -124,3 +124,15 @@ TEST_CASE("camera: views 2 (front) and 3 (top) look along -z and straight down")
     applyCameraCommand(KeyCommand::ViewPerspective, camera);
     CHECK(camera.pitch() > 0.0f);
 }
+
+TEST_CASE("files and redo keys: Ctrl+S saves, Ctrl+O opens, Ctrl+Y and Ctrl+Shift+Z redo, Ctrl+Z undoes") {
+    const InputCapture free{};
+    CHECK(keyCommand(free, GLFW_KEY_S, GLFW_MOD_CONTROL) == KeyCommand::Save);
+    CHECK(keyCommand(free, GLFW_KEY_O, GLFW_MOD_CONTROL) == KeyCommand::Open);
+    CHECK(keyCommand(free, GLFW_KEY_Y, GLFW_MOD_CONTROL) == KeyCommand::Redo);
+    CHECK(keyCommand(free, GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT) == KeyCommand::Redo);
+    CHECK(keyCommand(free, GLFW_KEY_Z, GLFW_MOD_CONTROL) == KeyCommand::Undo);
+    CHECK(keyCommand(free, GLFW_KEY_S) == KeyCommand::None); // S alone does nothing
+    const InputCapture typing{false, true};
+    CHECK(keyCommand(typing, GLFW_KEY_S, GLFW_MOD_CONTROL) == KeyCommand::None);
+}

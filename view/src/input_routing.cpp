@@ -29,7 +29,12 @@ bool applyScroll(const InputCapture& capture, float wheelSteps, OrbitCamera& cam
 
 KeyCommand keyCommand(const InputCapture& capture, int glfwKey, int glfwModifiers) {
     if (capture.keyboard) return KeyCommand::None;
-    if (glfwKey == GLFW_KEY_Z && (glfwModifiers & GLFW_MOD_CONTROL)) return KeyCommand::Undo;
+    if (glfwModifiers & GLFW_MOD_CONTROL) {
+        if (glfwKey == GLFW_KEY_Z) return (glfwModifiers & GLFW_MOD_SHIFT) ? KeyCommand::Redo : KeyCommand::Undo;
+        if (glfwKey == GLFW_KEY_Y) return KeyCommand::Redo;
+        if (glfwKey == GLFW_KEY_S) return KeyCommand::Save;
+        if (glfwKey == GLFW_KEY_O) return KeyCommand::Open;
+    }
     switch (glfwKey) {
     case GLFW_KEY_SPACE: return KeyCommand::ToggleGui;
     case GLFW_KEY_F: return KeyCommand::PrintFrameRate;

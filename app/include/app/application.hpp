@@ -73,6 +73,9 @@ public:
     /// Loads a PNG or JPEG as the draft and shows it; on a bad file the status line gets the
     /// one-line reason and the previous draft stays. Returns true when it loaded.
     bool loadDraft(const std::string& path);
+    /// E1: replaces the scene by a saved state; false (and the one-line error in the status line)
+    /// when the file cannot be loaded, the running scene then unchanged.
+    bool loadStateFile(const std::string& path);
     /// Serves the commands the panels and keys queued (rebuild, reset, undo, draft, obstacles...).
     void serveCommands();
     /// Runs simulation steps now, outside the clock (for scripted drawings and tests).

@@ -18,6 +18,7 @@ struct GuiOptions {
     std::string screenshot;
     std::string benchmarkFolder = ".";
     std::string draft;
+    std::string load; ///< E1: a saved state to open instead of the built scene
     int paintDemoPasses = 0;
 };
 
@@ -28,6 +29,10 @@ int runGui(const GuiOptions& options) {
     settings.screenshotFile = options.screenshot;
     settings.benchmarkFolder = options.benchmarkFolder;
     Application application(std::move(settings));
+    if (!options.load.empty() && !application.loadStateFile(options.load)) {
+        std::fprintf(stderr, "sandglass: %s\n", application.state().statusLine.c_str());
+        return 1;
+    }
     // A bad draft is reported and the canvas opens without one (SPEC P5, §8).
     if (!options.draft.empty() && !application.loadDraft(options.draft))
         std::fprintf(stderr, "sandglass: %s\n", application.state().statusLine.c_str());
@@ -53,6 +58,7 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--screenshot", options->screenshot, "with --frames: save the last frame as PNG");
     cmd->add_option("--benchmark-dir", options->benchmarkFolder, "where the B key writes benchmark.txt and .csv")
         ->capture_default_str();
+    cmd->add_option("--load", options->load, "open a saved .sand state (simulate --save, Ctrl+S)");
     cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image (P5)");
     addNumberOption(*cmd, "--paint-demo", options->paintDemoPasses, 1, 50,
                     "canvas with --draft: pour this many layers of sand over the draft, colour from draft");

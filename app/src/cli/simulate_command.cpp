@@ -3,9 +3,12 @@
 #include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/scene_options.hpp"
+#include "scene/file_io.hpp"
 #include "scene/hex.hpp"
 #include "scene/hourglass_timer.hpp"
+#include "scene/scene_export.hpp"
 #include "scene/scene_request.hpp"
+#include "scene/state_file.hpp"
 #include "scene/statistics.hpp"
 
 #include "sandcore/scenes.hpp"
@@ -37,16 +40,37 @@ struct SimulateOptions {
     std::vector<std::int64_t> flipAt;
     double duration = 0.0;
     bool json = false;
+    std::string load;       ///< E1: a state file to go on from instead of building a scene
+    std::string save;       ///< E1: where to save the state after the run
+    std::string exportFile; ///< E2: where to export the sand after the run (.ply .vox .obj .stl .glb)
 };
 
-int runSimulate(const SimulateOptions& options) {
+// The scene to run: a loaded state (the file's seed and settings, unless given here) or a new build.
+sandcore::Scene sceneFor(const SimulateOptions& options, const CLI::App& command, SceneSettings& settings) {
+    if (options.load.empty()) return buildScene(settings);
+    LoadedState loaded = loadState(options.load);
+    if (command.count("--threads")) loaded.scene.setThreads(settings.step.threads);
+    if (command.count("--seed")) loaded.scene.setSeed(settings.step.seed);
+    if (options.fullSweep) loaded.scene.setSleeping(false);
+    settings = loaded.settings;
+    settings.step = loaded.scene.settings();
+    return std::move(loaded.scene);
+}
+
+int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     using Clock = std::chrono::steady_clock;
     SceneSettings settings = sceneSettingsFrom(options.scene);
     settings.step.sleeping = !options.fullSweep;
+    // Outputs are checked before the run, so a long run never ends in an unwritable path.
+    if (!options.save.empty()) requireWritableFileTarget(options.save);
+    if (!options.exportFile.empty()) {
+        exportFormatOf(options.exportFile);
+        requireWritableFileTarget(options.exportFile);
+    }
+    sandcore::Scene scene = sceneFor(options, command, settings);
     const bool canvas = settings.request.kind == sandcore::SceneKind::Canvas;
     if (options.pour > 0 && !canvas)
         throw std::invalid_argument("--pour releases sand on the canvas; use it with --scene canvas");
-    sandcore::Scene scene = buildScene(settings);
 
     const std::int64_t grainsInitial = scene.grainCount();
     if (options.pour > 0) {
@@ -97,7 +121,9 @@ int runSimulate(const SimulateOptions& options) {
     const double stepsPerSecond = seconds > 0 ? double(done) / seconds : 0.0;
     const std::string hash = toHex16(scene.stateHash());
     const std::string sceneName = sceneKindName(settings.request.kind);
-    const int threads = settings.step.threads;
+    const int threads = scene.settings().threads;
+    if (!options.save.empty()) saveState(options.save, scene, settings.request);
+    if (!options.exportFile.empty()) exportScene(options.exportFile, scene);
 
     if (options.json) {
         nlohmann::ordered_json out;
@@ -123,6 +149,9 @@ int runSimulate(const SimulateOptions& options) {
             out["steps_per_second_set"] = stepsPerSecondSet;
             out["drain_seconds"] = double(done) / stepsPerSecondSet;
         }
+        if (!options.load.empty()) out["loaded"] = options.load;
+        if (!options.save.empty()) out["saved"] = options.save;
+        if (!options.exportFile.empty()) out["exported"] = options.exportFile;
         std::cout << out.dump() << "\n";
         return 0;
     }
@@ -140,6 +169,9 @@ int runSimulate(const SimulateOptions& options) {
                     options.duration, (long long)drainSteps, stepsPerSecondSet, (long long)done,
                     double(done) / stepsPerSecondSet);
     std::printf("state hash %s\n", hash.c_str());
+    if (!options.load.empty()) std::printf("went on from %s\n", options.load.c_str());
+    if (!options.save.empty()) std::printf("saved the state to %s\n", options.save.c_str());
+    if (!options.exportFile.empty()) std::printf("exported the sand to %s\n", options.exportFile.c_str());
     return 0;
 }
 
@@ -164,7 +196,12 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     addNumberOption(*cmd, "--duration", options->duration, 0.001, 1e7,
                     "timer: predict the drain's steps and set the rate so it lasts this many seconds");
     cmd->add_flag("--json", options->json, "print one JSON object");
-    cmd->callback([options, &exitCode] { exitCode = runSimulate(*options); });
+    auto* load = cmd->add_option("--load", options->load,
+                                 "go on from a saved .sand state instead of building a scene (--steps N runs N more)");
+    for (const char* sceneOption : {"--scene", "--model", "--shape", "--res"}) load->excludes(sceneOption);
+    cmd->add_option("--save", options->save, "after the run, save the whole state to this .sand file");
+    cmd->add_option("--export", options->exportFile, "after the run, export the sand: .ply points, .vox voxels, .obj/.stl/.glb surface");
+    cmd->callback([options, cmd, &exitCode] { exitCode = runSimulate(*options, *cmd); });
 }
 
 } // namespace sandglass

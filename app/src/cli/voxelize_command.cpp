@@ -2,12 +2,15 @@
 // the inside cells, the mesh and voxel volumes and whether the mesh is closed.
 #include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
+#include "scene/file_io.hpp"
 #include "scene/model_voxelizer.hpp"
+#include "scene/scene_export.hpp"
 #include "scene/scene_request.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -20,10 +23,18 @@ struct VoxelizeOptions {
     std::string file;
     sandcore::VoxelizeSettings settings;
     bool json = false;
+    std::string out; ///< E2: write the inside cells here (.vox or .binvox)
 };
 
 int runVoxelize(const VoxelizeOptions& options) {
+    if (!options.out.empty()) {
+        const std::string extension = std::filesystem::path(options.out).extension().string();
+        if (extension != ".vox" && extension != ".binvox")
+            throw std::invalid_argument("--out " + options.out + ": the voxels go to a .vox or .binvox file");
+        requireWritableFileTarget(options.out);
+    }
     const ModelVoxelization model = voxelizeModelFile(options.file, options.settings, ModelUse::MaskOnly);
+    if (!options.out.empty()) writeInsideMask(options.out, model.voxels.mask, &model.voxels.placement);
     const sandcore::VoxelizeResult& v = model.voxels;
     const sandcore::Int3 g = v.mask.size;
     const bool closed = v.closedness.closed;
@@ -40,6 +51,7 @@ int runVoxelize(const VoxelizeOptions& options) {
         out["triangles"] = model.triangles;
         out["threads"] = options.settings.threads;
         out["robust"] = options.settings.robust;
+        if (!options.out.empty()) out["out"] = options.out;
         std::cout << out.dump() << "\n";
         return 0;
     }
@@ -52,6 +64,7 @@ int runVoxelize(const VoxelizeOptions& options) {
     else
         std::printf("no mesh volume: the mesh is open%s\n", options.settings.robust ? "" : " (try --robust)");
     std::printf("voxelized in %.2f ms with %d thread(s)\n", model.milliseconds, options.settings.threads);
+    if (!options.out.empty()) std::printf("wrote the inside cells to %s\n", options.out.c_str());
     return 0;
 }
 
@@ -68,6 +81,7 @@ void addVoxelizeCommand(CLI::App& app, int& exitCode) {
     addNumberOption(*cmd, "--threads", options->settings.threads, kThreadsRange.min, kThreadsRange.max,
                     "threads that share the rows (default 1; same result for any count)");
     cmd->add_flag("--json", options->json, "print one JSON object");
+    cmd->add_option("--out", options->out, "write the inside cells to this .vox (MagicaVoxel) or .binvox file");
     cmd->callback([options, &exitCode] { exitCode = runVoxelize(*options); });
 }
 

@@ -26,5 +26,7 @@ void drawModelOptions(AppState& state);
 void drawPaintingSection(AppState& state);
 /// SPEC G2 and V7: grains, moving grains, steps/s, ms per step, ms per frame, frame-time plot.
 void drawStatisticsSection(AppState& state);
+/// SPEC E1, E2: save, open and export paths with their buttons.
+void drawFileSection(AppState& state);
 
 } // namespace sandglass

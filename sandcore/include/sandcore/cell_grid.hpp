@@ -74,4 +74,7 @@ private:
     std::vector<CellValue> cells_;
 };
 
+/// The grid upside down: cell (x, y, z) of the result is cell (x, sizeY - 1 - y, z) of `grid`.
+CellGrid mirroredInY(const CellGrid& grid);
+
 } // namespace sandcore

@@ -122,6 +122,15 @@ public:
     /// The obstacles placed in a grid, in the order they were added.
     const std::vector<CellBox>& obstacles(GridLevel level) const;
 
+    /// A grid's layout (EMPTY and INVALID cells only, no obstacles, no grains), turned over as the
+    /// scene is (flipped()): with fillCells(), kind() and settings() what the constructor needs
+    /// to build this scene again, after mirroring both layouts back when it is turned over.
+    const CellGrid& layout(GridLevel level) const { return level == GridLevel::Upper ? upperLayout_ : lowerLayout_; }
+    /// The upper-grid cells reset() fills with sand, in the order they are filled.
+    const std::vector<std::uint32_t>& fillCells() const { return upperFill_; }
+    /// The identity the next new grain gets (part of snapshot(), without copying the grids).
+    std::uint32_t nextIdentity() const { return nextIdentity_; }
+
 private:
     CellGrid& gridRef(GridLevel level) { return level == GridLevel::Upper ? upper_ : lower_; }
     GridSweep& sweepOf(GridLevel level);

@@ -3,6 +3,7 @@
 // canvas columns by picking (P1), release sand in the top row of the upper grid or erase the
 // topmost grain of a column of the lower grid. The mouse and the tests use this same path.
 
+#include "scene/compressed_snapshot.hpp"
 #include "scene/draft_image.hpp"
 
 #include "sandcore/scene.hpp"
@@ -38,14 +39,16 @@ struct PaintSettings {
     bool colorFromDraft = false;            ///< P6: new grains take the draft image's colour at their column
 };
 
-/// How much undo history a painter keeps (P7). Each stroke keeps a whole-scene snapshot (about
-/// 55 MB for a 256-wide canvas), so memory caps the history as well as the count.
+/// How much undo history a painter keeps (P7). Each stroke keeps the scene's whole state as a
+/// CompressedSnapshot (E3: grains, obstacles and counters, zstd; tens of kB for a 256-wide
+/// canvas with tens of thousands of grains, where a raw snapshot is about 56 MB); memory caps the
+/// history as well as the count.
 struct UndoLimits {
     std::size_t maxStrokes = 32;                    ///< most strokes kept (at least 1)
-    std::size_t maxBytes = std::size_t(256) << 20;  ///< most bytes all kept snapshots use (256 MiB); the last stroke is kept even when it alone is larger
+    std::size_t maxBytes = std::size_t(256) << 20;  ///< most bytes the kept undo snapshots use, compressed (256 MiB); the last stroke is kept even when it alone is larger
 };
 
-/// Bytes a snapshot's cells, grain records and obstacles use.
+/// Bytes a snapshot's cells, grain records and obstacles use, uncompressed.
 std::size_t snapshotBytes(const sandcore::SceneSnapshot& snapshot);
 
 class SandPainter {
@@ -65,15 +68,23 @@ public:
 
     /// P7: puts the scene back to where it was before the last stroke; false when nothing is left to undo.
     bool undo(sandcore::Scene& scene);
+    /// E3: takes back the last undo (the scene as it was when undone); false when there is none.
+    /// A new stroke forgets what could be redone.
+    bool redo(sandcore::Scene& scene);
     /// Strokes that can be undone.
     std::size_t undoDepth() const { return history_.size(); }
-    /// Memory the kept snapshots use, bytes.
+    /// Undos that can be redone.
+    std::size_t redoDepth() const { return redo_.size(); }
+    /// Memory the kept undo snapshots use, compressed, bytes (the limits apply to this).
     std::size_t undoBytes() const { return historyBytes_; }
+    /// Memory the kept redo snapshots use, compressed, bytes.
+    std::size_t redoBytes() const;
     /// The limits the history is kept within.
     const UndoLimits& undoLimits() const { return limits_; }
-    /// Forgets the undo history (the scene was rebuilt or reset).
+    /// Forgets the undo and redo history (the scene was rebuilt or reset).
     void clearHistory() {
         history_.clear();
+        redo_.clear();
         historyBytes_ = 0;
     }
 
@@ -87,8 +98,11 @@ private:
 
     std::optional<CanvasColumn> last_;
     UndoLimits limits_;
-    std::deque<sandcore::SceneSnapshot> history_;
-    std::size_t historyBytes_ = 0; // sum of snapshotBytes over history_
+    void pushHistory(const sandcore::Scene& scene);
+
+    std::deque<CompressedSnapshot> history_;
+    std::vector<CompressedSnapshot> redo_;
+    std::size_t historyBytes_ = 0; // sum of bytes() over history_
     std::int64_t released_ = 0;
     std::int64_t erased_ = 0;
 };

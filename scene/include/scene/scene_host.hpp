@@ -61,6 +61,10 @@ public:
     /// The settings the running scene was built from: what the panel shows as loaded.
     const SceneSettings& loaded() const { return loaded_; }
 
+    /// E1: runs a scene that was loaded from a state file in place of the running one, with the
+    /// settings it was built from; a build still running replaces it when done, as any request.
+    void adoptLoaded(sandcore::Scene scene, const SceneSettings& settings) { adopt(std::move(scene), settings); }
+
     /// Starts building `settings` on a worker thread. While a build runs, the newest request
     /// waits and starts when it is done; the ones in between are dropped.
     void requestBuild(const SceneSettings& settings);

@@ -32,7 +32,14 @@ struct PaintingSettings {
     std::array<int, 3> obstacleMin{8, 0, 8};    ///< next obstacle's first cell (lower grid), inclusive
     std::array<int, 3> obstacleMax{16, 6, 16};  ///< next obstacle's last cell + 1 (lower grid), exclusive
     std::size_t undoSteps = 0;   ///< strokes that Undo can take back
-    std::size_t undoBytes = 0;   ///< memory the kept strokes' snapshots use, bytes
+    std::size_t undoBytes = 0;   ///< memory the kept strokes' snapshots use, compressed, bytes
+    std::size_t redoSteps = 0;   ///< undone strokes that Redo can bring back
+};
+
+/// SPEC E1, E2: where the File section saves, opens and exports.
+struct FileSettings {
+    std::string statePath = "sandglass.sand"; ///< the .sand file Save writes and Open reads
+    std::string exportPath = "sand.ply";      ///< .ply, .vox, .obj, .stl or .glb for Export
 };
 
 /// What the panels and keys ask the application to do; served once per frame, in order.
@@ -46,6 +53,10 @@ enum class Command {
     Quit,              ///< close the window
     FrameCamera,       ///< reset the camera to frame the scene
     Undo,              ///< take back the last stroke (Ctrl+Z)
+    Redo,              ///< bring back the last undone stroke (Ctrl+Y, Ctrl+Shift+Z)
+    SaveState,         ///< save the whole state to FileSettings::statePath (Ctrl+S)
+    LoadState,         ///< replace the scene by the state in FileSettings::statePath (Ctrl+O)
+    Export,            ///< export the sand to FileSettings::exportPath
     LoadDraft,         ///< load PaintingSettings::draftPath as the draft
     AddObstacle,       ///< add the box PaintingSettings::obstacleMin/Max to the canvas's lower grid
     ClearObstacles,    ///< remove every obstacle of the canvas
@@ -107,6 +118,7 @@ struct AppState {
     RenderSettings render;          ///< how grains are drawn
     PaintingSettings painting;      ///< canvas painting options
     TimerState timer;               ///< the hourglass as a timer
+    FileSettings files;             ///< save, open and export paths
     bool simulationRunning = false; ///< thesis default: simulation off
     double stepsPerSecond = 30.0;   ///< flow speed (R9)
     bool showGui = true;            ///< Space hides the panels

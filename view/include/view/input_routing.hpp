@@ -26,6 +26,9 @@ enum class KeyCommand {
     Screenshot,        ///< P
     Undo,              ///< Ctrl+Z: take back the last stroke (P7)
     Flip,              ///< T: turn the hourglass over
+    Redo,              ///< Ctrl+Y or Ctrl+Shift+Z: bring back the last undone stroke (E3)
+    Save,              ///< Ctrl+S: save the state (E1)
+    Open,              ///< Ctrl+O: open a saved state (E1)
     RotateLeft, RotateRight, RotateUp, RotateDown, ///< arrow keys
     ZoomIn, ZoomOut,   ///< + and -
     ViewPerspective,   ///< 1

@@ -63,6 +63,11 @@ bool CanvasController::undo(SceneHost& host) {
     return input_.undo(host.editLayout());
 }
 
+bool CanvasController::redo(SceneHost& host) {
+    if (!isCanvas(host) || input_.painter().redoDepth() == 0) return false;
+    return input_.redo(host.editLayout());
+}
+
 std::string CanvasController::addObstacle(SceneHost& host, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
     if (!isCanvas(host)) return "obstacles are placed on the canvas";
     if (lo[0] >= hi[0] || lo[1] >= hi[1] || lo[2] >= hi[2]) return "obstacle: each max must be larger than its min";
@@ -90,6 +95,7 @@ DraftPlacement CanvasController::draftPlacement(const sandcore::Scene& scene, co
 void CanvasController::publishUndoState(PaintingSettings& painting) const {
     painting.undoSteps = input_.painter().undoDepth();
     painting.undoBytes = input_.painter().undoBytes();
+    painting.redoSteps = input_.painter().redoDepth();
 }
 
 } // namespace sandglass

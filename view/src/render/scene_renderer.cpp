@@ -1,7 +1,7 @@
 #include "view/render/scene_renderer.hpp"
 
 #include "view/render/hull_mesh.hpp"
-#include "view/render/sand_patterns.hpp"
+#include "scene/sand_patterns.hpp"
 #include "view/render/shader_program.hpp"
 
 #include <glm/gtc/type_ptr.hpp>

@@ -35,6 +35,8 @@ public:
 
     /// Takes back the last stroke; false when there is none.
     bool undo(SceneHost& host);
+    /// E3: brings back the last undone stroke; false when there is none or no canvas runs.
+    bool redo(SceneHost& host);
     /// Adds a box of INVALID cells (lower-grid cells, max exclusive) to the canvas; returns a
     /// status line (the grains it removed, or why the box is refused).
     std::string addObstacle(SceneHost& host, const std::array<int, 3>& min, const std::array<int, 3>& max);

@@ -59,6 +59,8 @@ public:
     void endStroke() { painter_.endStroke(); }
     /// P7: undoes the last stroke; false when there is none.
     bool undo(sandcore::Scene& scene) { return painter_.undo(scene); }
+    /// E3: redoes the last undone stroke; false when there is none.
+    bool redo(sandcore::Scene& scene) { return painter_.redo(scene); }
     /// The scene was rebuilt or reset: ends any stroke, forgets undo history and the id image.
     void sceneReplaced();
 

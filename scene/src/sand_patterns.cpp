@@ -1,4 +1,4 @@
-#include "view/render/sand_patterns.hpp"
+#include "scene/sand_patterns.hpp"
 
 #include "sandcore/counter_random.hpp"
 
@@ -48,6 +48,11 @@ std::vector<SandPattern> makeSandPatterns(int count) {
         }
     }
     return patterns;
+}
+
+std::uint32_t grainExportColor(const std::vector<SandPattern>& patterns, std::uint32_t identity, std::uint32_t rgba) {
+    if (rgba != 0 || patterns.empty()) return rgba | 0xff000000u;
+    return patterns[identity % patterns.size()].colors[0] | 0xff000000u;
 }
 
 } // namespace sandglass

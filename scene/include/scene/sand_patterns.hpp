@@ -2,6 +2,8 @@
 // Thesis §3.8 "Scribble": a fixed set of random patterns, each placing up to 32 sub-grains inside
 // a cell and giving each a pale sand colour. A grain uses pattern (identity mod count), so the
 // choice never changes from frame to frame (no flicker) and costs no random numbers per frame.
+// Pure CPU code in the scene layer: the renderer uploads the patterns, the exporters (E2) take
+// their colours for grains that have none of their own.
 
 #include <array>
 #include <cstdint>
@@ -21,5 +23,9 @@ inline constexpr int kSandPatternCount = 64;
 /// The patterns, the same on every run: colours in RGB (220-240, 220-240, 150-190) with one
 /// tint per pattern and a small variation per sub-grain; sub-grain 0 sits at the cell centre.
 std::vector<SandPattern> makeSandPatterns(int count = kSandPatternCount);
+
+/// The colour a grain is exported with, RGBA8 with alpha 255: its own colour, or for rgba 0 the
+/// tint of its pattern (identity mod patterns.size(), the pattern's sub-grain 0).
+std::uint32_t grainExportColor(const std::vector<SandPattern>& patterns, std::uint32_t identity, std::uint32_t rgba);
 
 } // namespace sandglass

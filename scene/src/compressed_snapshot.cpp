@@ -1,0 +1,84 @@
+#include "scene/compressed_snapshot.hpp"
+
+#include "byte_codec.hpp"
+#include "compression.hpp"
+
+#include <algorithm>
+
+namespace sandglass {
+
+using sandcore::CellBox;
+using sandcore::GridLevel;
+
+namespace {
+
+// Undo snapshots are taken when a stroke begins, so speed matters more than the last percent.
+constexpr int kUndoCompressionLevel = 1;
+
+void writeBoxes(ByteWriter& out, const std::vector<CellBox>& boxes) {
+    out.put<std::uint64_t>(boxes.size());
+    for (const CellBox& box : boxes) out.put(box);
+}
+
+std::vector<CellBox> readBoxes(ByteReader& in) {
+    const auto count = in.get<std::uint64_t>("obstacles");
+    if (count > in.remaining() / sizeof(CellBox)) throw FormatError("obstacles: the data ends early");
+    std::vector<CellBox> boxes;
+    for (std::uint64_t i = 0; i < count; ++i) boxes.push_back(in.get<CellBox>("obstacles"));
+    return boxes;
+}
+
+// Scene's rule for its live cells: the layout, obstacles INVALID (clipped to the grid), grains by id.
+void rebuildGrid(sandcore::CellGrid& grid, const std::vector<CellBox>& obstacles) {
+    const sandcore::Int3 s = grid.size();
+    for (const CellBox& box : obstacles)
+        for (int y = std::max(box.min.y, 0); y < std::min(box.max.y, s.y); ++y)
+            for (int z = std::max(box.min.z, 0); z < std::min(box.max.z, s.z); ++z)
+                for (int x = std::max(box.min.x, 0); x < std::min(box.max.x, s.x); ++x) grid[grid.index(x, y, z)] = sandcore::kInvalid;
+}
+
+} // namespace
+
+CompressedSnapshot::CompressedSnapshot(const sandcore::Scene& scene) {
+    const sandcore::GrainStore& g = scene.grains();
+    ByteWriter out;
+    out.putArray(g.level);
+    out.putArray(g.cell);
+    out.putArray(g.cameFrom);
+    out.putArray(g.movedAtStep);
+    out.putArray(g.identity);
+    out.putArray(g.color);
+    out.put<std::uint32_t>(scene.nextIdentity());
+    out.put(scene.counters());
+    writeBoxes(out, scene.obstacles(GridLevel::Upper));
+    writeBoxes(out, scene.obstacles(GridLevel::Lower));
+    rawBytes_ = out.bytes().size();
+    compressed_ = compressBytes(out.bytes(), kUndoCompressionLevel);
+}
+
+sandcore::SceneSnapshot CompressedSnapshot::expand(const sandcore::Scene& scene) const {
+    const std::vector<std::uint8_t> raw = decompressBytes(compressed_, rawBytes_);
+    ByteReader in(raw);
+    sandcore::GrainStore g;
+    g.level = in.getArray<GridLevel>("grains");
+    g.cell = in.getArray<std::uint32_t>("grains", g.level.size());
+    g.cameFrom = in.getArray<sandcore::MoveCode>("grains", g.level.size());
+    g.movedAtStep = in.getArray<std::uint64_t>("grains", g.level.size());
+    g.identity = in.getArray<std::uint32_t>("grains", g.level.size());
+    g.color = in.getArray<std::uint32_t>("grains", g.level.size());
+    sandcore::SceneSnapshot s{scene.layout(GridLevel::Upper), scene.layout(GridLevel::Lower), std::move(g), 0, {}, {}, {}};
+    s.nextIdentity = in.get<std::uint32_t>("next identity");
+    s.counters = in.get<sandcore::SceneCounters>("counters");
+    s.upperObstacles = readBoxes(in);
+    s.lowerObstacles = readBoxes(in);
+    rebuildGrid(s.upper, s.upperObstacles);
+    rebuildGrid(s.lower, s.lowerObstacles);
+    for (std::uint32_t id = 0; id < s.grains.size(); ++id) {
+        sandcore::CellGrid& grid = s.grains.level[id] == GridLevel::Upper ? s.upper : s.lower;
+        if (s.grains.cell[id] >= grid.cellCount()) throw FormatError("a grain lies outside its grid");
+        grid[s.grains.cell[id]] = sandcore::CellValue(id);
+    }
+    return s;
+}
+
+} // namespace sandglass
