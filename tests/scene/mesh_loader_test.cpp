@@ -4,6 +4,8 @@
 
 #include "sandcore/scenes.hpp"
 
+#include "support/temporary_folder.hpp"
+
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -16,12 +18,9 @@ namespace {
 
 // A fresh folder per test case for the files it writes.
 struct TempDir {
-    std::filesystem::path path;
-    explicit TempDir(const std::string& name) : path(std::filesystem::temp_directory_path() / ("sandglass_" + name)) {
-        std::filesystem::remove_all(path);
-        std::filesystem::create_directories(path);
-    }
-    ~TempDir() { std::filesystem::remove_all(path); }
+    TemporaryFolder folder; // uniquely named, removed at the end
+    std::filesystem::path path = folder.path();
+    explicit TempDir(const std::string&) {}
     std::string write(const std::string& file, const std::string& text) const {
         std::ofstream(path / file) << text;
         return (path / file).string();
@@ -66,7 +65,7 @@ TEST_CASE("every S1 bad input names the file and the cause") {
     TempDir dir("bad");
     const std::string missing = (dir.path / "missing.obj").string();
     CHECK(errorOf(missing) == missing + ": no such file");
-    CHECK(errorOf(dir.path.string()) == dir.path.string() + ": is a directory, not a model file");
+    CHECK(errorOf(dir.path.string()) == dir.path.string() + ": is a folder, not a file");
 
     const std::string garbage = dir.write("garbage.obj", std::string("\x01\x02\x03 this is not a model \xff\xfe", 26));
     CHECK(errorOf(garbage).rfind(garbage + ": ", 0) == 0);

@@ -5,6 +5,8 @@
 
 #include "support/released_columns.hpp"
 
+#include "support/temporary_folder.hpp"
+
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -200,8 +202,8 @@ TEST_CASE("colour from draft gives each released grain the draft's colour at its
 }
 
 TEST_CASE("a bad draft image gives a one-line error naming the file") {
-    const auto dir = std::filesystem::temp_directory_path() / "sandglass-draft-test";
-    std::filesystem::create_directories(dir);
+    const TemporaryFolder folder;
+    const std::filesystem::path& dir = folder.path();
     const auto garbage = dir / "garbage.png";
     std::ofstream(garbage) << "this is not a PNG";
     for (const auto& [path, cause] : {std::pair<std::string, std::string>{(dir / "missing.png").string(), "no such file"},
@@ -218,5 +220,4 @@ TEST_CASE("a bad draft image gives a one-line error naming the file") {
             CHECK(message.find('\n') == std::string::npos);
         }
     }
-    std::filesystem::remove_all(dir);
 }
