@@ -7,6 +7,8 @@
 
 #include "support/temporary_folder.hpp"
 
+#include "sandcore/mesh_shapes.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -81,6 +83,28 @@ TEST_CASE("H2: the same model moved 10^6, scaled 10^-6 or 10^8 gives the same in
     CHECK(std::abs(cellsOf("scaled-1e8.obj", 1e8, 0.0) / unit - 1) <= 0.001);
     // assimp reads the file's coordinates in single precision: 0.5% where they sit at 10^6.
     CHECK(std::abs(cellsOf("moved-1e6.obj", 1.0, 1e6) / unit - 1) <= 0.005);
+}
+
+TEST_CASE("H2: a unit ball scaled by 10^-6 keeps every vertex (assimp's epsilon join merged them: -21% cells)") {
+    const TemporaryFolder folder;
+    const sandcore::TriangleMesh ball = sandcore::makeIcosphereMesh(3, 1.0f);
+    const auto objOf = [&](double scale) {
+        std::string obj;
+        char line[128];
+        for (const sandcore::Vec3& v : ball.vertices) {
+            std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", v.x * scale, v.y * scale, v.z * scale);
+            obj += line;
+        }
+        for (const auto& t : ball.triangles)
+            obj += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) + "\n";
+        return obj;
+    };
+    sandcore::VoxelizeSettings settings;
+    settings.resolution = 64;
+    const auto unit = voxelizeModelFile(writeModel(folder, "ball.obj", objOf(1.0)), settings, ModelUse::MaskOnly);
+    const auto tiny = voxelizeModelFile(writeModel(folder, "ball-1e-6.obj", objOf(1e-6)), settings, ModelUse::MaskOnly);
+    CHECK(tiny.voxels.cellsInside == unit.voxels.cellsInside);
+    CHECK(loadMesh((folder / "ball-1e-6.obj").string()).vertices.size() == ball.vertices.size());
 }
 
 TEST_CASE("H2: a model whose size single precision cannot resolve at its distance is refused as such") {
