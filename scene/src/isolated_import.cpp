@@ -1,16 +1,20 @@
-// Why a child process: assimp (Debian's 5.x) crashes with SIGSEGV, aborts in ai_assert and loops
+// Why another process: assimp (Debian's 5.x) crashes with SIGSEGV, aborts in ai_assert and loops
 // forever on truncated or byte-flipped PLY and OFF files. aiProcess_ValidateDataStructure turns
 // some of these into errors, not all, and no check of ours can know every reader's bugs. So the
-// import runs in a forked child; the parent waits with a time limit and reads a plain triangle
+// import runs in a child process; the parent waits with a time limit and reads a plain triangle
 // list from a pipe, checking every count and index.
 //
-// Forking a multi-threaded process (the GUI builds scenes on a worker thread): only the forking
-// thread exists in the child, and a lock another thread held at the fork stays locked there.
-// The child touches only what it needs: malloc (glibc makes malloc safe across fork), stdio is
-// not used (its output goes to /dev/null), no GL, no ImGui, no logging. Should some lock still be
-// held, the child blocks, the time limit ends it and the user gets one line: never the parent.
-// The child leaves with _exit, so no atexit handler or static destructor of the parent's runs
-// twice and no inherited buffer is flushed twice.
+// The child is the small executable sandglass-import (scene/helper), started with fork + exec.
+// The GUI builds scenes on a worker thread, so the fork happens in a multi-threaded process:
+// only the forking thread exists in the child, and a lock another thread held at the fork stays
+// locked there (under ASan even malloc's). Between fork and exec the child therefore calls only
+// async-signal-safe functions (dup2, open, setrlimit, execv, _exit) on strings prepared before
+// the fork; exec then gives it a fresh process image with no inherited lock.
+//
+// Should the helper be missing (a library user who did not build it), the child runs the import
+// itself after the fork: glibc's malloc is fork-safe and the child uses no stdio, GL or logging,
+// and if it still blocks on a lock the time limit ends it with one line. The parent is never at
+// risk. The child leaves with _exit, so no handler or static destructor of the parent runs twice.
 
 #include "isolated_import.hpp"
 
@@ -30,6 +34,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace sandglass {
 
@@ -118,6 +123,7 @@ std::string plyHeaderProblem(const std::string& path) {
 }
 
 void put(std::vector<std::uint8_t>& out, const void* data, std::size_t size) {
+    if (size == 0) return;
     const auto* bytes = static_cast<const std::uint8_t*>(data);
     out.insert(out.end(), bytes, bytes + size);
 }
@@ -221,6 +227,7 @@ ImportedTriangles decodeImport(const std::vector<std::uint8_t>& bytes) {
     std::size_t at = 0;
     auto take = [&](void* into, std::size_t size) {
         if (bytes.size() - at < size) return false;
+        if (size == 0) return true; // an empty vector's data() may be null: memcpy must not see it
         std::memcpy(into, bytes.data() + at, size);
         at += size;
         return true;
@@ -267,6 +274,13 @@ ImportedTriangles decodeImport(const std::vector<std::uint8_t>& bytes) {
 
 ImportedTriangles importInChildProcess(const std::string& path, double timeLimitSeconds) {
     ImportedTriangles failed;
+    // Everything the child needs before exec is prepared here: it may not allocate.
+    const char* helper = nullptr;
+#ifdef SANDGLASS_IMPORT_HELPER
+    if (::access(SANDGLASS_IMPORT_HELPER, X_OK) == 0) helper = SANDGLASS_IMPORT_HELPER;
+#endif
+    std::string helperName = "sandglass-import", pathArgument = path;
+    std::vector<char*> arguments = {helperName.data(), pathArgument.data(), nullptr};
     int reply[2];
     if (::pipe2(reply, O_CLOEXEC) != 0) {
         failed.error = std::string("cannot start the model importer (") + std::strerror(errno) + ")";
@@ -281,6 +295,19 @@ ImportedTriangles importInChildProcess(const std::string& path, double timeLimit
     }
     if (child == 0) {
         ::close(reply[0]);
+        if (helper != nullptr) {
+            // Async-signal-safe calls only, until exec.
+            const int devNull = ::open("/dev/null", O_RDWR);
+            if (devNull >= 0) {
+                ::dup2(devNull, STDIN_FILENO);
+                ::dup2(devNull, STDERR_FILENO);
+            }
+            ::dup2(reply[1], STDOUT_FILENO);
+            const rlimit noCore{0, 0};
+            ::setrlimit(RLIMIT_CORE, &noCore);
+            ::execv(helper, arguments.data());
+            ::_exit(127);
+        }
         runChild(path, reply[1]);
     }
     ::close(reply[1]);
@@ -305,6 +332,10 @@ ImportedTriangles importInChildProcess(const std::string& path, double timeLimit
         const char* name = sigabbrev_np(signal);
         failed.error = "the model importer crashed on this file (signal " + std::to_string(signal) +
                        (name ? std::string(", SIG") + name : std::string()) + "); the file is probably corrupt";
+        return failed;
+    }
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 127 && bytes.empty()) {
+        failed.error = "cannot start the model importer " + std::string(helper ? helper : "");
         return failed;
     }
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {

@@ -9,6 +9,8 @@
 
 #include <doctest/doctest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -206,9 +208,11 @@ TEST_CASE("a bad draft image gives a one-line error naming the file") {
     const std::filesystem::path& dir = folder.path();
     const auto garbage = dir / "garbage.png";
     std::ofstream(garbage) << "this is not a PNG";
+    REQUIRE(::mkfifo((dir / "pipe.png").c_str(), 0600) == 0); // would block a reader forever
     for (const auto& [path, cause] : {std::pair<std::string, std::string>{(dir / "missing.png").string(), "no such file"},
                                       {garbage.string(), "not a readable PNG or JPEG image"},
-                                      {dir.string(), "is a folder"}}) {
+                                      {dir.string(), "is a folder"},
+                                      {(dir / "pipe.png").string(), "is a FIFO (named pipe), not a regular file"}}) {
         CAPTURE(path);
         try {
             DraftImage::load(path);
