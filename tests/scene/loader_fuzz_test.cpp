@@ -60,7 +60,7 @@ void fuzzModelFormat(const std::string& name) {
         CAPTURE(path);
         const auto start = std::chrono::steady_clock::now();
         try {
-            const sandcore::TriangleMesh mesh = loadMesh(path, {5.0});
+            const sandcore::TriangleMesh mesh = loadMesh(path, {20.0});
             CHECK(!mesh.triangles.empty());
             ++loaded;
         } catch (const ModelError& e) {
@@ -68,7 +68,7 @@ void fuzzModelFormat(const std::string& name) {
             ++refused;
         }
         // The time limit holds (with slack for a slow machine).
-        CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(8));
+        CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(30));
     }
     MESSAGE(name << ": " << kMutationsPerFile << " corrupted copies, " << loaded << " loaded, " << refused
                  << " refused in one line");
