@@ -4,7 +4,7 @@
 // import runs in a child process; the parent waits with a time limit and reads a plain triangle
 // list from a pipe, checking every count and index.
 //
-// The child is the small executable sandglass-import (scene/helper), started with fork + exec.
+// The child is the small executable sandglass-import (scene/src/import_helper_main.cpp), started with fork + exec.
 // The GUI builds scenes on a worker thread, so the fork happens in a multi-threaded process:
 // only the forking thread exists in the child, and a lock another thread held at the fork stays
 // locked there (under ASan even malloc's). Between fork and exec the child therefore calls only
