@@ -26,7 +26,7 @@ struct MeshLoadOptions {
 
 /// Fewest steps of single precision the model's largest extent must span at its distance from the
 /// origin: below that the file's (or assimp's) float coordinates cannot hold the model's shape.
-inline constexpr double kMinSinglePrecisionSteps = 128.0;
+inline constexpr double kMinSinglePrecisionSteps = 16.0;
 
 /// Reads every mesh of the file, triangulated, node transforms applied in double precision,
 /// merged into one mesh, moved so that its bounding-box centre is the origin (the voxel
