@@ -58,6 +58,7 @@ std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
     return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
 }
 
+
 } // namespace
 
 TriangleMesh weldVertices(const TriangleMesh& mesh) {
@@ -81,29 +82,143 @@ TriangleMesh weldVertices(const TriangleMesh& mesh) {
     return welded;
 }
 
-MeshClosedness closednessOf(const TriangleMesh& mesh) {
-    const TriangleMesh welded = weldVertices(mesh);
-    std::vector<std::uint64_t> edges;
-    edges.reserve(welded.triangles.size() * 3);
-    for (const auto& t : welded.triangles) {
+namespace {
+
+// One use of an edge by a triangle: the undirected edge, the triangle, and whether the
+// triangle runs along it from the smaller vertex index to the larger.
+struct EdgeUse {
+    std::uint64_t key;
+    std::uint32_t triangle;
+    bool forward;
+    bool operator<(const EdgeUse& other) const { return key < other.key; }
+};
+
+// Every edge use of the non-degenerate triangles, grouped by edge. Sorting groups the uses of
+// each edge; cheaper and more compact than a hash map.
+std::vector<EdgeUse> sortedEdgeUses(const TriangleMesh& welded) {
+    std::vector<EdgeUse> uses;
+    uses.reserve(welded.triangles.size() * 3);
+    for (std::size_t n = 0; n < welded.triangles.size(); ++n) {
+        const auto& t = welded.triangles[n];
         if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
-        edges.push_back(edgeKey(t[0], t[1]));
-        edges.push_back(edgeKey(t[1], t[2]));
-        edges.push_back(edgeKey(t[2], t[0]));
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = t[std::size_t(e)], b = t[std::size_t((e + 1) % 3)];
+            uses.push_back({edgeKey(a, b), std::uint32_t(n), a < b});
+        }
     }
-    // Sorting groups the uses of each edge; cheaper and more compact than a hash map of counts.
-    std::sort(edges.begin(), edges.end());
+    std::sort(uses.begin(), uses.end());
+    return uses;
+}
+
+} // namespace
+
+MeshClosedness closednessOf(const TriangleMesh& mesh) {
+    const std::vector<EdgeUse> edges = sortedEdgeUses(weldVertices(mesh));
     MeshClosedness result;
     for (std::size_t i = 0; i < edges.size();) {
         std::size_t j = i;
-        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
         const std::size_t uses = j - i;
         if (uses % 2 == 1) ++result.boundaryEdges;
         if (uses > 2) ++result.nonManifoldEdges;
+        if (uses == 2 && edges[i].forward == edges[i + 1].forward) ++result.inconsistentEdges;
         i = j;
     }
     result.closed = result.boundaryEdges == 0;
     return result;
+}
+
+TriangleMesh withoutRepeatedTriangles(const TriangleMesh& mesh) {
+    TriangleMesh welded = weldVertices(mesh);
+    // Each triangle rotated so its smallest index comes first: the same face with the same
+    // orientation gives the same triple.
+    std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint32_t>> keyed;
+    keyed.reserve(welded.triangles.size());
+    for (std::size_t n = 0; n < welded.triangles.size(); ++n) {
+        auto t = welded.triangles[n];
+        while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+        keyed.push_back({t, std::uint32_t(n)});
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<char> keep(welded.triangles.size(), 1);
+    for (std::size_t n = 1; n < keyed.size(); ++n)
+        if (keyed[n].first == keyed[n - 1].first) keep[keyed[n].second] = 0;
+    std::vector<std::array<std::uint32_t, 3>> kept;
+    kept.reserve(welded.triangles.size());
+    for (std::size_t n = 0; n < welded.triangles.size(); ++n)
+        if (keep[n]) kept.push_back(welded.triangles[n]);
+    welded.triangles = std::move(kept);
+    return welded;
+}
+
+TriangleMesh orientedOutward(const TriangleMesh& mesh) {
+    TriangleMesh out = weldVertices(mesh);
+    const std::size_t count = out.triangles.size();
+    // Neighbours across edges used by exactly two triangles; `flip` says whether the two must
+    // differ in flipping (they run along the edge in the same direction) to agree.
+    std::vector<std::vector<std::pair<std::uint32_t, bool>>> neighbours(count);
+    const std::vector<EdgeUse> edges = sortedEdgeUses(out);
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        if (j - i == 2 && edges[i].triangle != edges[i + 1].triangle) {
+            const bool flip = edges[i].forward == edges[i + 1].forward;
+            neighbours[edges[i].triangle].push_back({edges[i + 1].triangle, flip});
+            neighbours[edges[i + 1].triangle].push_back({edges[i].triangle, flip});
+        }
+        i = j;
+    }
+    std::vector<std::int8_t> flipped(count, -1); // -1: not reached yet
+    std::vector<std::uint32_t> part, queue;
+    for (std::size_t seed = 0; seed < count; ++seed) {
+        if (flipped[seed] >= 0) continue;
+        part.clear();
+        queue.assign(1, std::uint32_t(seed));
+        flipped[seed] = 0;
+        while (!queue.empty()) {
+            const std::uint32_t t = queue.back();
+            queue.pop_back();
+            part.push_back(t);
+            for (const auto& [other, flip] : neighbours[t])
+                if (flipped[other] < 0) {
+                    flipped[other] = std::int8_t(flipped[t] ^ int(flip));
+                    queue.push_back(other);
+                }
+        }
+        // Orient the part as a whole so its signed volume about its own centre is positive.
+        std::array<double, 3> low, high;
+        low.fill(std::numeric_limits<double>::infinity());
+        high.fill(-std::numeric_limits<double>::infinity());
+        for (std::uint32_t t : part)
+            for (std::uint32_t i : out.triangles[t]) {
+                const Vec3 v = out.vertices[i];
+                const double c[3] = {v.x, v.y, v.z};
+                for (std::size_t a = 0; a < 3; ++a) {
+                    low[a] = std::min(low[a], c[a]);
+                    high[a] = std::max(high[a], c[a]);
+                }
+            }
+        double sixTimesVolume = 0.0;
+        for (std::uint32_t t : part) {
+            auto tri = out.triangles[t];
+            if (flipped[t]) std::swap(tri[1], tri[2]);
+            double p[3][3];
+            for (std::size_t k = 0; k < 3; ++k) {
+                const Vec3 v = out.vertices[tri[k]];
+                p[k][0] = v.x - 0.5 * (low[0] + high[0]);
+                p[k][1] = v.y - 0.5 * (low[1] + high[1]);
+                p[k][2] = v.z - 0.5 * (low[2] + high[2]);
+            }
+            sixTimesVolume += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
+                              p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+                              p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+        }
+        if (sixTimesVolume < 0.0)
+            for (std::uint32_t t : part) flipped[t] ^= 1;
+    }
+    for (std::size_t t = 0; t < count; ++t)
+        if (flipped[t]) std::swap(out.triangles[t][1], out.triangles[t][2]);
+    return out;
 }
 
 double signedVolume(const TriangleMesh& mesh) {

@@ -42,9 +42,11 @@ struct RayFrame {
 };
 
 // Where the ray through row point (pv, pw) along +u crosses triangle (a, b, c), in cells along u;
-// false when it misses. A triangle whose projection has zero area is never hit.
+// false when it misses. A triangle whose projection has zero area is never hit. `entering` is
+// +1 when the triangle faces against the ray (the ray enters a solid wound counter-clockwise
+// seen from outside), -1 when it faces along it: the step of the winding number.
 bool crossRay(const Point& a, const Point& b, const Point& c, RayFrame f, std::int64_t pv, std::int64_t pw,
-              double& crossing) {
+              double& crossing, int& entering) {
     std::int64_t weightC = 0, weightA = 0, weightB = 0;
     const int s0 = perturbedSide(a[f.v], a[f.w], b[f.v], b[f.w], pv, pw, weightC);
     if (s0 == 0) return false;
@@ -54,6 +56,7 @@ bool crossRay(const Point& a, const Point& b, const Point& c, RayFrame f, std::i
     // Relative to a, so a face of constant u gives that u exactly.
     const double offset = (double(weightB) * double(b[f.u] - a[f.u]) + double(weightC) * double(c[f.u] - a[f.u])) / total;
     crossing = (double(a[f.u]) + offset) / double(kQuantum);
+    entering = -s0; // s0 is the sign of the normal's u component (frames are right-handed)
     return true;
 }
 
@@ -115,7 +118,9 @@ std::vector<Point> quantize(const std::vector<std::array<double, 3>>& grid) {
 }
 
 // One pass of rays along axis f.u. Plain mode writes inside cells between pairs of crossings
-// into `mask`; robust mode adds, per cell, one vote for odd parity counted from each end of the row.
+// into `mask`; robust mode adds, per cell, one vote for a non-zero winding number counted from
+// each end of the row (the mesh is oriented outward first, so overlapping closed parts are a
+// union and a closed mesh gives the same count from both ends).
 void castRays(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles,
               RayFrame f, Int3 size, const VoxelizeSettings& settings, WorkerPool& pool,
               std::vector<std::uint8_t>& out, bool votes) {
@@ -126,7 +131,7 @@ void castRays(const std::vector<Point>& points, const std::vector<std::array<std
     if (settings.binning) bins = binTriangles(points, triangles, f, {rowsV, rowsW, 0});
 
     pool.parallelFor(rowsW, [&](int k) {
-        std::vector<double> crossings;
+        std::vector<std::pair<double, int>> crossings; // position along u, winding step
         for (int j = 0; j < rowsV; ++j) {
             const std::int64_t pv = (2 * std::int64_t(j) + 1) * (kQuantum / 2);
             const std::int64_t pw = (2 * std::int64_t(k) + 1) * (kQuantum / 2);
@@ -134,7 +139,9 @@ void castRays(const std::vector<Point>& points, const std::vector<std::array<std
             auto test = [&](std::uint32_t id) {
                 const auto& t = triangles[id];
                 double at;
-                if (crossRay(points[t[0]], points[t[1]], points[t[2]], f, pv, pw, at)) crossings.push_back(at);
+                int entering;
+                if (crossRay(points[t[0]], points[t[1]], points[t[2]], f, pv, pw, at, entering))
+                    crossings.push_back({at, entering});
             };
             if (settings.binning) {
                 const std::size_t row = std::size_t(j) + std::size_t(rowsV) * std::size_t(k);
@@ -152,16 +159,19 @@ void castRays(const std::vector<Point>& points, const std::vector<std::array<std
             if (!votes) {
                 // An unpaired last crossing (open mesh) does not open a run to the grid's end.
                 for (std::size_t n = 0; n + 1 < crossings.size(); n += 2) {
-                    const int from = firstCellFrom(crossings[n]), to = firstCellFrom(crossings[n + 1]);
+                    const int from = firstCellFrom(crossings[n].first), to = firstCellFrom(crossings[n + 1].first);
                     for (int i = from; i < to; ++i) out[base + std::size_t(i) * stride[f.u]] = 1;
                 }
                 continue;
             }
             const std::size_t total = crossings.size();
+            int windingTotal = 0;
+            for (const auto& crossing : crossings) windingTotal += crossing.second;
             std::size_t passed = 0;
+            int windingFromLow = 0; // counted from the row's low end; from the high end it is windingTotal - this
             for (int i = 0; i < length; ++i) {
-                while (passed < total && crossings[passed] <= i + 0.5) ++passed;
-                const int vote = int(passed % 2) + int((total - passed) % 2);
+                while (passed < total && crossings[passed].first <= i + 0.5) windingFromLow += crossings[passed++].second;
+                const int vote = int(windingFromLow != 0) + int(windingTotal - windingFromLow != 0);
                 out[base + std::size_t(i) * stride[f.u]] += std::uint8_t(vote);
             }
         }
@@ -191,10 +201,14 @@ InsideMask insideFromGridPoints(const std::vector<std::array<double, 3>>& grid,
     return mask;
 }
 
+// What the rays see: a face written twice counts once, and faces are oriented outward for the
+// winding number of robust mode (parity ignores orientation).
+TriangleMesh preparedForRays(const TriangleMesh& mesh) { return orientedOutward(withoutRepeatedTriangles(mesh)); }
+
 } // namespace
 
 double VoxelizeResult::relativeError() const {
-    return meshVolume > 0.0 ? (double(cellsInside) - meshVolume) / meshVolume : 0.0;
+    return meshVolume > 0.0 && volumeMeaningful ? (double(cellsInside) - meshVolume) / meshVolume : 0.0;
 }
 
 VoxelPlacement placeInGrid(const TriangleMesh& mesh, const VoxelizeSettings& settings) {
@@ -232,24 +246,32 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     VoxelizeResult result;
     result.placement = placeInGrid(mesh, settings);
     const VoxelPlacement& p = result.placement;
-    std::vector<std::array<double, 3>> grid(mesh.vertices.size());
+    const TriangleMesh prepared = preparedForRays(mesh);
+    std::vector<std::array<double, 3>> grid(prepared.vertices.size());
     for (std::size_t i = 0; i < grid.size(); ++i) {
-        const Vec3 v = mesh.vertices[i];
+        const Vec3 v = prepared.vertices[i];
         const double model[3] = {v.x, v.y, v.z};
         for (std::size_t a = 0; a < 3; ++a) grid[i][a] = (model[a] - p.modelMin[a]) * p.scale[a] + p.padding[a];
     }
-    result.mask = insideFromGridPoints(grid, mesh.triangles, p.size, settings);
+    result.mask = insideFromGridPoints(grid, prepared.triangles, p.size, settings);
     result.cellsInside = result.mask.countInside();
     result.closedness = closednessOf(mesh);
-    result.meshVolume = std::abs(signedVolume(mesh)) * p.scale[0] * p.scale[1] * p.scale[2];
+    // The volume of the outward-oriented mesh: a model with some faces flipped keeps its
+    // volume; where orientation cannot be made consistent (a non-orientable or non-manifold
+    // surface) the volume means nothing and is not reported as if it did.
+    const MeshClosedness orientedClosedness = closednessOf(prepared);
+    result.volumeMeaningful = result.closedness.closed && orientedClosedness.inconsistentEdges == 0;
+    result.meshVolume = std::abs(signedVolume(prepared)) * p.scale[0] * p.scale[1] * p.scale[2];
     return result;
 }
 
 InsideMask voxelizeGridSpace(const TriangleMesh& gridMesh, Int3 size, const VoxelizeSettings& settings) {
-    std::vector<std::array<double, 3>> grid(gridMesh.vertices.size());
+    if (gridMesh.triangles.empty()) return insideFromGridPoints({}, {}, size, settings);
+    const TriangleMesh prepared = preparedForRays(gridMesh);
+    std::vector<std::array<double, 3>> grid(prepared.vertices.size());
     for (std::size_t i = 0; i < grid.size(); ++i)
-        grid[i] = {gridMesh.vertices[i].x, gridMesh.vertices[i].y, gridMesh.vertices[i].z};
-    return insideFromGridPoints(grid, gridMesh.triangles, size, settings);
+        grid[i] = {prepared.vertices[i].x, prepared.vertices[i].y, prepared.vertices[i].z};
+    return insideFromGridPoints(grid, prepared.triangles, size, settings);
 }
 
 } // namespace sandcore

@@ -1,26 +1,43 @@
 #include "scene/draft_image.hpp"
 
+#include "scene/file_io.hpp"
+
 #include <stb_image.h>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
 namespace sandglass {
 
 DraftImage DraftImage::load(const std::string& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) throw std::runtime_error(path + ": no such file");
-    if (std::filesystem::is_directory(path, error)) throw std::runtime_error(path + ": is a folder, not an image");
+    // Read through file_io: a FIFO is refused instead of blocking, and stb_image decodes from
+    // memory, so it never touches the file system itself. 256 MiB is far beyond any draft.
+    std::vector<std::uint8_t> bytes;
+    try {
+        bytes = readFileBytes(path, std::uint64_t{256} << 20);
+    } catch (const FileError& e) {
+        throw std::runtime_error(e.what());
+    }
+    if (bytes.empty()) throw std::runtime_error(path + ": the file is empty, not an image");
+    if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
+        throw std::runtime_error(path + ": the file is too large for an image");
     int width = 0, height = 0, channels = 0;
-    const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load(path.c_str(), &width, &height, &channels, 4),
-                                                           stbi_image_free);
-    if (!pixels) throw std::runtime_error(path + ": not a readable PNG or JPEG image (" + stbi_failure_reason() + ")");
+    const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+        stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4), stbi_image_free);
+    if (!pixels) {
+        // stb's reason can quote bytes of the file (a corrupt PNG chunk name): keep it one printable line.
+        std::string reason = stbi_failure_reason() ? stbi_failure_reason() : "unknown";
+        for (char& c : reason)
+            if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+        throw std::runtime_error(path + ": not a readable PNG or JPEG image (" + reason + ")");
+    }
     if (width <= 0 || height <= 0) throw std::runtime_error(path + ": the image is empty");
-    const std::size_t bytes = std::size_t(width) * std::size_t(height) * 4;
-    return DraftImage(width, height, std::vector<std::uint8_t>(pixels.get(), pixels.get() + bytes), path);
+    const std::size_t size = std::size_t(width) * std::size_t(height) * 4;
+    return DraftImage(width, height, std::vector<std::uint8_t>(pixels.get(), pixels.get() + size), path);
 }
 
 DraftImage::DraftImage(int width, int height, std::vector<std::uint8_t> rgba, std::string path)

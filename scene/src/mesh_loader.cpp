@@ -1,65 +1,90 @@
 #include "scene/mesh_loader.hpp"
 
-#include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
+#include "isolated_import.hpp"
+#include "scene/file_io.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
+#include <cstdio>
+#include <limits>
+#include <sys/stat.h>
 
 namespace sandglass {
 
 namespace {
 
-void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, sandcore::TriangleMesh& out,
-                const std::string& path) {
-    const aiMatrix4x4 transform = parent * node.mTransformation;
-    for (unsigned m = 0; m < node.mNumMeshes; ++m) {
-        const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
-        const auto base = std::uint32_t(out.vertices.size());
-        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-            const aiVector3D p = transform * mesh.mVertices[v];
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-                throw ModelError(path, "vertex " + std::to_string(v) + " has a NaN or infinite coordinate");
-            out.vertices.push_back({p.x, p.y, p.z});
-        }
-        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-            const aiFace& face = mesh.mFaces[f];
-            if (face.mNumIndices != 3) continue; // points and lines enclose nothing
-            out.triangles.push_back({base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
-        }
-    }
-    for (unsigned c = 0; c < node.mNumChildren; ++c) appendNode(scene, *node.mChildren[c], transform, out, path);
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+// Spacing of single-precision numbers at magnitude `distance`.
+double floatStepAt(double distance) {
+    const float at = float(std::max(distance, double(std::numeric_limits<float>::min())));
+    return double(std::nextafter(at, std::numeric_limits<float>::infinity())) - double(at);
+}
+
+double timeLimitFor(const std::string& path, const MeshLoadOptions& options) {
+    if (options.timeLimitSeconds > 0.0) return options.timeLimitSeconds;
+    struct stat info {};
+    const double mebibytes = ::stat(path.c_str(), &info) == 0 ? double(info.st_size) / double(1 << 20) : 0.0;
+    return 20.0 + mebibytes;
 }
 
 } // namespace
 
-sandcore::TriangleMesh loadMesh(const std::string& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) throw ModelError(path, "no such file");
-    if (std::filesystem::is_directory(path, error)) throw ModelError(path, "is a directory, not a model file");
-    if (!std::ifstream(path).good()) throw ModelError(path, "cannot be read (permission denied?)");
-
-    Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(
-        path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
-    if (scene == nullptr) {
-        std::string cause = importer.GetErrorString();
-        if (cause.empty()) cause = "unknown import error";
-        // assimp's messages can span lines; the CLI promises one.
-        for (char& c : cause)
-            if (c == '\n' || c == '\r') c = ' ';
-        throw ModelError(path, "cannot be read as a model: " + cause);
+sandcore::TriangleMesh loadMesh(const std::string& path, const MeshLoadOptions& options) {
+    try {
+        requireReadableRegularFile(path); // a FIFO would block the importer forever
+    } catch (const FileError& e) {
+        // FileError's message is "path: cause" already.
+        throw ModelError(path, std::string(e.what()).substr(std::min(path.size() + 2, std::string(e.what()).size())));
     }
-    sandcore::TriangleMesh mesh;
-    if (scene->mRootNode != nullptr) appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), mesh, path);
-    if (mesh.triangles.empty()) throw ModelError(path, "contains no triangles (only points or lines, or nothing)");
-    const sandcore::MeshBounds bounds = sandcore::boundsOf(mesh);
+    const ImportedTriangles imported = importInChildProcess(path, timeLimitFor(path, options));
+    if (!imported.error.empty()) throw ModelError(path, imported.error);
+    if (imported.triangles.empty()) throw ModelError(path, "contains no triangles (only points or lines, or nothing)");
+
+    // Bounds of the vertices that triangles use, in double.
+    std::array<double, 3> low, high;
+    low.fill(std::numeric_limits<double>::infinity());
+    high.fill(-std::numeric_limits<double>::infinity());
+    for (const auto& t : imported.triangles)
+        for (std::uint32_t i : t) {
+            const auto& p = imported.vertices[i];
+            for (std::size_t a = 0; a < 3; ++a) {
+                if (!std::isfinite(p[a]))
+                    throw ModelError(path, "vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+                low[a] = std::min(low[a], p[a]);
+                high[a] = std::max(high[a], p[a]);
+            }
+        }
+    double distance = 0.0, largest = 0.0;
+    for (std::size_t a = 0; a < 3; ++a) {
+        distance = std::max({distance, std::abs(low[a]), std::abs(high[a])});
+        largest = std::max(largest, high[a] - low[a]);
+    }
+    // H2: assimp stores coordinates in single precision. A model whose size is a few steps of
+    // single precision at its distance from the origin has lost its shape before we see it.
+    const double step = floatStepAt(distance);
+    if (largest < kMinSinglePrecisionSteps * step)
+        throw ModelError(path, "the coordinates cannot hold the model: its largest extent " + number(largest) +
+                                   " is below what single precision resolves at its distance " + number(distance) +
+                                   " from the origin (steps of " + number(step) + "; at least " +
+                                   number(kMinSinglePrecisionSteps) + " steps are needed); move the model nearer the origin");
     const char* axes[3] = {"x", "y", "z"};
-    for (int a = 0; a < 3; ++a)
-        if (!(bounds.extent(a) > 0.0)) throw ModelError(path, std::string("has zero extent along ") + axes[a] + " (a flat model encloses no volume)");
-    return mesh;
+    for (std::size_t a = 0; a < 3; ++a)
+        if (!(high[a] - low[a] > 0.0))
+            throw ModelError(path, std::string("has zero extent along ") + axes[a] + " (a flat model encloses no volume)");
+
+    // Relative to the bounding-box centre, in double, before anything is rounded to float.
+    sandcore::TriangleMesh mesh;
+    mesh.vertices.reserve(imported.vertices.size());
+    for (const auto& p : imported.vertices)
+        mesh.vertices.push_back({float(p[0] - 0.5 * (low[0] + high[0])), float(p[1] - 0.5 * (low[1] + high[1])),
+                                 float(p[2] - 0.5 * (low[2] + high[2]))});
+    mesh.triangles = imported.triangles;
+    return sandcore::weldVertices(mesh);
 }
 
 } // namespace sandglass

@@ -9,6 +9,8 @@
 #include "sandcore/cell_grid.hpp"
 
 #include <GLFW/glfw3.h>
+#include "support/temporary_folder.hpp"
+
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -200,7 +202,8 @@ TEST_CASE("painting: a bad draft image gives a one-line error and the canvas kee
     REQUIRE_DISPLAY();
     std::optional<Application> app = openCanvas();
     if (!app) return;
-    const std::filesystem::path broken = std::filesystem::temp_directory_path() / "sandglass-broken-draft.png";
+    const sandglass::TemporaryFolder folder;
+    const std::filesystem::path broken = folder / "broken-draft.png";
     std::ofstream(broken) << "this is not a PNG";
     CHECK_FALSE(app->loadDraft("no-such-draft.png"));
     CHECK(app->state().statusLine == "no-such-draft.png: no such file");
@@ -215,7 +218,6 @@ TEST_CASE("painting: a bad draft image gives a one-line error and the canvas kee
     REQUIRE(app->canvas().input().draft() != nullptr);
     CHECK(app->canvas().input().draft()->path() == sun);
     CHECK(app->state().painting.loadedDraft == sun);
-    std::filesystem::remove(broken);
 
     // Still paints, and with "colour from draft" each grain has the draft's colour at its column.
     app->state().painting.colorFromDraft = true;

@@ -3,10 +3,11 @@
 
 #include <doctest/doctest.h>
 
-#include <array>
+#include "support/run_process.hpp"
+#include "support/temporary_folder.hpp"
+
 #include <cstdio>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
@@ -15,23 +16,17 @@ struct ProcessResult {
     std::string output;
 };
 
-ProcessResult runSandglass(const std::string& arguments) {
-    const std::string command = std::string(SANDGLASS_EXECUTABLE) + " " + arguments + " 2>&1";
-    ProcessResult result;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 512> buffer{};
-    while (fgets(buffer.data(), int(buffer.size()), pipe) != nullptr) result.output += buffer.data();
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
+// The one CLI runner (support/run_process.hpp), with both streams together as a user sees them.
+ProcessResult runSandglass(const std::vector<std::string>& arguments) {
+    const cli::ProcessResult run = cli::runSandglassArgs(arguments);
+    return {run.exitCode, run.out + run.err};
 }
 
 } // namespace
 
 TEST_CASE("window: 200 frames with the simulation on, then a clean exit with every grain kept") {
     if (!sandglass::testing::requireDisplay("window")) return;
-    const ProcessResult run = runSandglass("gui --res 24 --run --frames 200 --size 320x240");
+    const ProcessResult run = runSandglass({"gui", "--res", "24", "--run", "--frames", "200", "--size", "320x240"});
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
     unsigned long long frames = 0, steps = 0;
@@ -47,9 +42,9 @@ TEST_CASE("window: 200 frames with the simulation on, then a clean exit with eve
 
 TEST_CASE("window: --screenshot writes the last frame") {
     if (!sandglass::testing::requireDisplay("window")) return;
-    const std::string file = "build/window-test-screenshot.png";
-    std::remove(file.c_str());
-    const ProcessResult run = runSandglass("gui --res 16 --frames 3 --size 200x150 --screenshot " + file);
+    const sandglass::TemporaryFolder folder;
+    const std::string file = (folder / "window-test-screenshot.png").string();
+    const ProcessResult run = runSandglass({"gui", "--res", "16", "--frames", "3", "--size", "200x150", "--screenshot", file});
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
     FILE* png = std::fopen(file.c_str(), "rb");

@@ -1,5 +1,6 @@
 // SPEC C4: `sandglass bench --quick` produces the report (its content, not its speed).
 #include "support/run_process.hpp"
+#include "support/temporary_folder.hpp"
 
 #include <doctest/doctest.h>
 
@@ -10,8 +11,10 @@
 namespace fs = std::filesystem;
 
 TEST_CASE("bench --quick writes the Markdown report, CSV tables and PNG plots, and its checks pass") {
-    const fs::path out = fs::path(cli::temporaryPath()).concat("-report");
-    const auto r = cli::runSandglass("bench --quick --out " + out.string());
+    // A folder name a shell would run or choke on: the report must not pass it to one.
+    const sandglass::TemporaryFolder folder;
+    const fs::path out = folder / "it's a \"report\" $(touch pwned) `touch pwned`";
+    const auto r = cli::runSandglassArgs({"bench", "--quick", "--out", out.string()});
     REQUIRE_MESSAGE(r.exitCode == 0, r.err);
     for (const char* file : {"README.md", "voxelization.csv", "voxelization_dense.csv", "voxelization_binning.csv",
                              "simulation.csv", "plausibility.csv", "discharge.csv", "voxelization.png",
@@ -32,7 +35,8 @@ TEST_CASE("bench --quick writes the Markdown report, CSV tables and PNG plots, a
     char magic[4] = {};
     png.read(magic, 4);
     CHECK(std::string(magic + 1, 3) == "PNG");
-    fs::remove_all(out);
+    CHECK_FALSE(fs::exists("pwned"));
+    CHECK_FALSE(fs::exists(folder / "pwned"));
 }
 
 TEST_CASE("bench refuses an output folder it cannot create, with one line") {

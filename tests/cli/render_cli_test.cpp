@@ -1,11 +1,14 @@
 // SPEC C3 and §6: bad input to render, gui and bench gives one line on stderr and a non-zero code.
 #include "support/display_guard.hpp"
 #include "support/run_process.hpp"
+#include "support/temporary_folder.hpp"
 
 #include <doctest/doctest.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace {
@@ -23,10 +26,14 @@ Result runWithStderr(const std::string& arguments) {
 } // namespace
 
 TEST_CASE("cli: bad render, gui and bench input gives one line and a non-zero exit") {
-    for (const char* arguments :
-         {"render --out x.png --mode voxels", "render --out x.png --grains-per-cell 40", "render --mode points",
-          "render --out x.png --size 12", "render --out x.png --scene teapot", "gui --screenshot x.png",
-          "gui --res 3 --frames 1", "bench --out", "bench --render --res 2", "render --out x.png --zoom 0"}) {
+    // Output paths inside a folder of this test's own: should a check fail, nothing lands elsewhere.
+    const sandglass::TemporaryFolder folder;
+    const std::string x = "'" + (folder / "x.png").string() + "'";
+    for (const std::string& arguments :
+         {"render --out " + x + " --mode voxels", "render --out " + x + " --grains-per-cell 40",
+          std::string("render --mode points"), "render --out " + x + " --size 12", "render --out " + x + " --scene teapot",
+          "gui --screenshot " + x, std::string("gui --res 3 --frames 1"), std::string("bench --out"),
+          std::string("bench --render --res 2"), "render --out " + x + " --zoom 0"}) {
         CAPTURE(arguments);
         const Result result = runWithStderr(arguments);
         CHECK(result.exitCode != 0);
@@ -37,19 +44,32 @@ TEST_CASE("cli: bad render, gui and bench input gives one line and a non-zero ex
 
 TEST_CASE("cli: render writes a PNG and reports fps and frame_ms as JSON") {
     if (!sandglass::testing::requireDisplay("sandglass render")) return;
-    const std::string file = "build/render-cli-test.png";
-    std::remove(file.c_str());
-    const std::string command = std::string(SANDGLASS_EXECUTABLE) +
-                                " render --res 16 --steps 5 --size 64x64 --timed-frames 2 --json --out " + file;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 2048> buffer{};
-    std::string output;
-    while (fgets(buffer.data(), int(buffer.size()), pipe) != nullptr) output += buffer.data();
-    REQUIRE(pclose(pipe) == 0);
-    CHECK(output.find("\"fps\":") != std::string::npos);
-    CHECK(output.find("\"frame_ms\":") != std::string::npos);
+    const sandglass::TemporaryFolder folder;
+    const std::string file = (folder / "render-cli-test.png").string();
+    const cli::ProcessResult run = cli::runSandglassArgs(
+        {"render", "--res", "16", "--steps", "5", "--size", "64x64", "--timed-frames", "2", "--json", "--out", file});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.out.find("\"fps\":") != std::string::npos);
+    CHECK(run.out.find("\"frame_ms\":") != std::string::npos);
     FILE* png = std::fopen(file.c_str(), "rb");
     REQUIRE(png != nullptr);
     std::fclose(png);
+}
+
+TEST_CASE("cli: render to a full device or a missing folder fails and keeps an existing PNG") {
+    if (!sandglass::testing::requireDisplay("sandglass render")) return;
+    const sandglass::TemporaryFolder folder;
+    const std::string file = (folder / "kept.png").string();
+    { std::ofstream(file, std::ios::binary) << "an older picture"; }
+    const std::string missing = (folder / "missing-folder" / "x.png").string();
+    for (const std::string& out : {std::string("/dev/full"), missing}) {
+        CAPTURE(out);
+        const cli::ProcessResult run =
+            cli::runSandglassArgs({"render", "--res", "8", "--steps", "1", "--size", "32x32", "--out", out});
+        CHECK(run.exitCode != 0);
+        CHECK(cli::lineCount(run.err) == 1);
+    }
+    std::ifstream kept(file, std::ios::binary);
+    CHECK(std::string(std::istreambuf_iterator<char>(kept), {}) == "an older picture");
 }

@@ -1,3 +1,6 @@
+#include "support/run_process.hpp"
+#include "support/temporary_folder.hpp"
+
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
@@ -10,28 +13,8 @@
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    std::string out, err;
-};
-
-// Runs the built sandglass with arguments (shell-quoted by the caller), capturing stdout and stderr.
-Run runSandglass(const std::string& arguments) {
-    const auto errFile = std::filesystem::temp_directory_path() / "sandglass_cli_stderr.txt";
-    const std::string command = std::string("'") + SANDGLASS_EXECUTABLE + "' " + arguments + " 2>'" + errFile.string() + "'";
-    Run run;
-    std::FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    char buffer[4096];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
-    const int status = pclose(pipe);
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream err(errFile);
-    run.err.assign(std::istreambuf_iterator<char>(err), {});
-    std::filesystem::remove(errFile);
-    return run;
-}
+using Run = cli::ProcessResult;
+using cli::runSandglass;
 
 std::string model(const std::string& name) { return std::string("'") + SANDGLASS_SOURCE_DIR + "/models/" + name + "'"; }
 
@@ -54,13 +37,12 @@ TEST_CASE("voxelize --json prints the C2 keys for a closed model") {
 }
 
 TEST_CASE("voxelize reports an open mesh with a null mesh volume") {
-    const auto dir = std::filesystem::temp_directory_path() / "sandglass_cli_open";
-    std::filesystem::create_directories(dir);
+    const sandglass::TemporaryFolder folder;
+    const std::filesystem::path& dir = folder.path();
     // A cube without its top face.
     std::ofstream(dir / "open.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
                                        "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 1 5 8 4\nf 2 3 7 6\n";
     const Run run = runSandglass("voxelize '" + (dir / "open.obj").string() + "' --res 8 --robust --json");
-    std::filesystem::remove_all(dir);
     REQUIRE(run.exitCode == 0);
     const auto json = nlohmann::json::parse(run.out);
     CHECK(json["closed"] == false);
@@ -70,8 +52,8 @@ TEST_CASE("voxelize reports an open mesh with a null mesh volume") {
 }
 
 TEST_CASE("each bad input gives one line on stderr naming the file, and a non-zero exit") {
-    const auto dir = std::filesystem::temp_directory_path() / "sandglass_cli_bad";
-    std::filesystem::create_directories(dir);
+    const sandglass::TemporaryFolder folder;
+    const std::filesystem::path& dir = folder.path();
     std::ofstream(dir / "points.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n";
     std::ofstream(dir / "nan.obj") << "v 0 0 0\nv nan 0 0\nv 0 1 1\nf 1 2 3\n";
     std::ofstream(dir / "flat.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n";
@@ -96,7 +78,6 @@ TEST_CASE("each bad input gives one line on stderr naming the file, and a non-ze
     const Run huge = runSandglass("voxelize " + model("ball.obj") + " --res 2000");
     CHECK(huge.exitCode != 0);
     CHECK(huge.err.find("exceeds the limit of 2^31 cells") != std::string::npos);
-    std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("simulate --model drains the default hourglass") {

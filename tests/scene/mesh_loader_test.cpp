@@ -4,9 +4,15 @@
 
 #include "sandcore/scenes.hpp"
 
+#include "support/temporary_folder.hpp"
+
 #include <doctest/doctest.h>
 
+#include <atomic>
 #include <filesystem>
+#include <sys/stat.h>
+#include <thread>
+#include <vector>
 #include <fstream>
 #include <string>
 
@@ -16,12 +22,9 @@ namespace {
 
 // A fresh folder per test case for the files it writes.
 struct TempDir {
-    std::filesystem::path path;
-    explicit TempDir(const std::string& name) : path(std::filesystem::temp_directory_path() / ("sandglass_" + name)) {
-        std::filesystem::remove_all(path);
-        std::filesystem::create_directories(path);
-    }
-    ~TempDir() { std::filesystem::remove_all(path); }
+    TemporaryFolder folder; // uniquely named, removed at the end
+    std::filesystem::path path = folder.path();
+    explicit TempDir(const std::string&) {}
     std::string write(const std::string& file, const std::string& text) const {
         std::ofstream(path / file) << text;
         return (path / file).string();
@@ -66,7 +69,7 @@ TEST_CASE("every S1 bad input names the file and the cause") {
     TempDir dir("bad");
     const std::string missing = (dir.path / "missing.obj").string();
     CHECK(errorOf(missing) == missing + ": no such file");
-    CHECK(errorOf(dir.path.string()) == dir.path.string() + ": is a directory, not a model file");
+    CHECK(errorOf(dir.path.string()) == dir.path.string() + ": is a folder, not a file");
 
     const std::string garbage = dir.write("garbage.obj", std::string("\x01\x02\x03 this is not a model \xff\xfe", 26));
     CHECK(errorOf(garbage).rfind(garbage + ": ", 0) == 0);
@@ -121,4 +124,39 @@ TEST_CASE("a bad model leaves the running scene untouched") {
     }
     CHECK(running.stateHash() == hash);
     CHECK(running.grainCount() == grains);
+}
+
+TEST_CASE("models load in a child process while other threads allocate, as in the GUI") {
+    // The GUI builds scenes on a worker thread while others run: the import forks a
+    // multi-threaded process, and the child must neither deadlock nor disturb the parent.
+    TempDir dir("threads");
+    const std::string cube = dir.write("cube.obj", kCubeObj);
+    std::atomic<bool> stop{false};
+    std::vector<std::thread> busy;
+    for (int t = 0; t < 2; ++t)
+        busy.emplace_back([&stop] {
+            std::vector<std::string> churn;
+            while (!stop.load()) {
+                churn.emplace_back(1000, 'x');
+                if (churn.size() > 100) churn.clear();
+            }
+        });
+    int loaded = 0;
+    std::string error;
+    try {
+        for (int i = 0; i < 8; ++i) loaded += loadMesh(cube, {10.0}).triangles.size() == 12;
+    } catch (const ModelError& e) {
+        error = e.what();
+    }
+    stop = true;
+    for (std::thread& t : busy) t.join();
+    CHECK(error == "");
+    CHECK(loaded == 8);
+}
+
+TEST_CASE("a FIFO given as a model is refused at once instead of blocking the import") {
+    TempDir dir("fifo");
+    const std::string fifo = (dir.path / "model.obj").string();
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    CHECK(errorOf(fifo) == fifo + ": is a FIFO (named pipe), not a regular file");
 }

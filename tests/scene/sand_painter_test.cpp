@@ -5,9 +5,13 @@
 
 #include "support/released_columns.hpp"
 
+#include "support/temporary_folder.hpp"
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -212,13 +216,15 @@ TEST_CASE("colour from draft gives each released grain the draft's colour at its
 }
 
 TEST_CASE("a bad draft image gives a one-line error naming the file") {
-    const auto dir = std::filesystem::temp_directory_path() / "sandglass-draft-test";
-    std::filesystem::create_directories(dir);
+    const TemporaryFolder folder;
+    const std::filesystem::path& dir = folder.path();
     const auto garbage = dir / "garbage.png";
     std::ofstream(garbage) << "this is not a PNG";
+    REQUIRE(::mkfifo((dir / "pipe.png").c_str(), 0600) == 0); // would block a reader forever
     for (const auto& [path, cause] : {std::pair<std::string, std::string>{(dir / "missing.png").string(), "no such file"},
                                       {garbage.string(), "not a readable PNG or JPEG image"},
-                                      {dir.string(), "is a folder"}}) {
+                                      {dir.string(), "is a folder"},
+                                      {(dir / "pipe.png").string(), "is a FIFO (named pipe), not a regular file"}}) {
         CAPTURE(path);
         try {
             DraftImage::load(path);
@@ -230,7 +236,6 @@ TEST_CASE("a bad draft image gives a one-line error naming the file") {
             CHECK(message.find('\n') == std::string::npos);
         }
     }
-    std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("redo takes back an undo exactly, and a new stroke forgets what could be redone") {

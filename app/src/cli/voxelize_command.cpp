@@ -38,13 +38,14 @@ int runVoxelize(const VoxelizeOptions& options) {
     const sandcore::VoxelizeResult& v = model.voxels;
     const sandcore::Int3 g = v.mask.size;
     const bool closed = v.closedness.closed;
+    const bool volumeKnown = v.volumeMeaningful; // closed and consistently orientable
     if (options.json) {
         nlohmann::ordered_json out;
         out["grid"] = {g.x, g.y, g.z};
         out["cells_inside"] = v.cellsInside;
-        out["mesh_volume"] = closed ? nlohmann::ordered_json(v.meshVolume) : nlohmann::ordered_json(nullptr);
+        out["mesh_volume"] = volumeKnown ? nlohmann::ordered_json(v.meshVolume) : nlohmann::ordered_json(nullptr);
         out["voxel_volume"] = double(v.cellsInside);
-        out["relative_error"] = closed ? nlohmann::ordered_json(v.relativeError()) : nlohmann::ordered_json(nullptr);
+        out["relative_error"] = volumeKnown ? nlohmann::ordered_json(v.relativeError()) : nlohmann::ordered_json(nullptr);
         out["closed"] = closed;
         out["boundary_edges"] = v.closedness.boundaryEdges;
         out["milliseconds"] = model.milliseconds;
@@ -58,9 +59,12 @@ int runVoxelize(const VoxelizeOptions& options) {
     std::printf("%s: %lld triangles, %s (%lld boundary edges)\n", options.file.c_str(), (long long)model.triangles,
                 closed ? "closed" : "open", (long long)v.closedness.boundaryEdges);
     std::printf("grid %dx%dx%d, %lld cells inside\n", g.x, g.y, g.z, (long long)v.cellsInside);
-    if (closed)
+    if (volumeKnown)
         std::printf("mesh volume %.1f cells, voxel volume %lld cells, relative error %+.4f%%\n", v.meshVolume,
                     (long long)v.cellsInside, 100.0 * v.relativeError());
+    else if (closed)
+        std::printf("no mesh volume: the faces' orientation is inconsistent and cannot be repaired, so a signed "
+                    "volume means nothing\n");
     else
         std::printf("no mesh volume: the mesh is open%s\n", options.settings.robust ? "" : " (try --robust)");
     std::printf("voxelized in %.2f ms with %d thread(s)\n", model.milliseconds, options.settings.threads);

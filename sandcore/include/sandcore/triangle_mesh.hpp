@@ -32,6 +32,9 @@ struct MeshBounds {
 struct MeshClosedness {
     std::int64_t boundaryEdges = 0;    ///< edges used by an odd number of triangles, after welding
     std::int64_t nonManifoldEdges = 0; ///< edges used by more than two triangles, after welding
+    /// Edges whose two triangles run along them in the same direction: the faces' orientation is
+    /// inconsistent there, so a signed volume of the mesh as it is means nothing.
+    std::int64_t inconsistentEdges = 0;
     bool closed = false;               ///< no boundary edges: ray parity is well defined everywhere
 };
 
@@ -45,6 +48,17 @@ TriangleMesh weldVertices(const TriangleMesh& mesh);
 /// Boundary and non-manifold edge counts after welding. Triangles that repeat a vertex are
 /// skipped: they enclose nothing.
 MeshClosedness closednessOf(const TriangleMesh& mesh);
+
+/// The welded mesh without triangles that repeat another with the same orientation (a face
+/// written twice). A pair with opposite orientations is kept: two closed parts touching along a
+/// face share it that way, and the pair cancels as it should.
+TriangleMesh withoutRepeatedTriangles(const TriangleMesh& mesh);
+
+/// The mesh with triangles flipped so that neighbours across every edge used by exactly two
+/// triangles agree, and each connected part winds counter-clockwise seen from outside (its
+/// signed volume about its own bounds' centre is positive). Parity never depends on this; the
+/// winding number and the signed volume do.
+TriangleMesh orientedOutward(const TriangleMesh& mesh);
 
 /// Sum of signed tetrahedra over all triangles (model units cubed); positive for a closed mesh
 /// whose faces wind counter-clockwise seen from outside. Computed about the bounds' centre so

@@ -19,7 +19,10 @@ inline constexpr int kMaxVoxelResolution = 8192;
 struct VoxelizeSettings {
     int resolution = 64;  ///< cells along the model's largest extent, 1..kMaxVoxelResolution
     bool stretch = false; ///< thesis's per-axis scaling: every axis gets `resolution` cells (aspect not kept)
-    bool robust = false;  ///< S5: majority vote of ray parity along x, y and z, for open meshes
+    /// S5: majority vote of the winding number along x, y and z, counted from both ends of each
+    /// ray, with faces oriented outward first: open meshes get a sensible solid and overlapping
+    /// closed parts their union.
+    bool robust = false;
     int threads = 1;      ///< threads that share the rows; the result does not depend on it
     bool binning = true;  ///< false tests every row against every triangle (only to measure what binning saves)
 };
@@ -37,9 +40,12 @@ struct VoxelizeResult {
     InsideMask mask;                ///< inside cells
     VoxelPlacement placement;       ///< how the model was scaled and shifted
     MeshClosedness closedness;      ///< boundary edges after welding (S5)
-    double meshVolume = 0.0;        ///< |sum of signed tetrahedra|, cell volumes; meaningful when closed
+    double meshVolume = 0.0;        ///< |sum of signed tetrahedra| of the outward-oriented mesh, cell volumes
+    /// The mesh volume means something: the mesh is closed and its faces could be oriented
+    /// consistently (a surface with inconsistent orientation has no signed volume to compare).
+    bool volumeMeaningful = false;
     std::int64_t cellsInside = 0;   ///< inside cells = voxel volume, cell volumes
-    /// (cellsInside - meshVolume) / meshVolume; 0 when the mesh volume is 0.
+    /// (cellsInside - meshVolume) / meshVolume; 0 when the mesh volume is 0 or not meaningful.
     double relativeError() const;
 };
 

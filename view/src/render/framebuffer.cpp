@@ -1,8 +1,12 @@
 #include "view/render/framebuffer.hpp"
 
+#include "scene/file_io.hpp"
+
 #include <stb_image_write.h>
 
 #include <cstring>
+#include <span>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
@@ -42,8 +46,17 @@ RgbImage readPixels(int width, int height) {
 
 void writePng(const std::filesystem::path& file, const RgbImage& image) {
     if (image.width <= 0 || image.height <= 0) throw std::runtime_error("no image to write to " + file.string());
-    const int ok = stbi_write_png(file.c_str(), image.width, image.height, 3, image.pixels.data(), image.width * 3);
-    if (ok == 0) throw std::runtime_error("cannot write " + file.string());
+    // Encoded in memory, then written through a temporary file renamed into place: a full disk
+    // or a missing folder is an error and never leaves a truncated PNG over an existing one.
+    std::vector<std::uint8_t> encoded;
+    const auto append = [](void* context, void* data, int size) {
+        auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+        const auto* bytes = static_cast<const std::uint8_t*>(data);
+        out->insert(out->end(), bytes, bytes + size);
+    };
+    if (stbi_write_png_to_func(append, &encoded, image.width, image.height, 3, image.pixels.data(), image.width * 3) == 0)
+        throw std::runtime_error(file.string() + ": cannot encode the PNG image");
+    writeFileAtomically(file, std::span<const std::uint8_t>(encoded));
 }
 
 } // namespace sandglass
