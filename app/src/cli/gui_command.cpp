@@ -20,6 +20,7 @@ struct GuiOptions {
     std::string draft;
     std::string load; ///< E1: a saved state to open instead of the built scene
     int paintDemoPasses = 0;
+    int timerSeconds = 0;
 };
 
 int runGui(const GuiOptions& options) {
@@ -38,6 +39,12 @@ int runGui(const GuiOptions& options) {
         std::fprintf(stderr, "sandglass: %s\n", application.state().statusLine.c_str());
     if (options.paintDemoPasses > 0)
         std::printf("paint demo: %lld grains poured\n", (long long)paintDraftDemo(application, options.paintDemoPasses));
+    if (options.timerSeconds > 0) {
+        // As if typed into the panel and started: the drain is measured, then the sand runs.
+        application.state().timer.minutes = options.timerSeconds / 60;
+        application.state().timer.seconds = options.timerSeconds % 60;
+        application.state().commands.push(Command::StartTimer);
+    }
     const std::int64_t grainsAtStart = application.scene().grainCount();
     const int exitCode = application.run();
     if (options.frames > 0)
@@ -62,6 +69,8 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image (P5)");
     addNumberOption(*cmd, "--paint-demo", options->paintDemoPasses, 1, 50,
                     "canvas with --draft: pour this many layers of sand over the draft, colour from draft");
+    addNumberOption(*cmd, "--timer", options->timerSeconds, 1, 999 * 60 + 59,
+                    "hourglass: start a timer of this many seconds (the flow is set so the sand lasts that long)");
     cmd->callback([options, &exitCode] {
         if (options->paintDemoPasses > 0 && (options->draft.empty() || options->view.scene.scene != "canvas"))
             throw std::invalid_argument("--paint-demo needs --scene canvas and --draft FILE");
