@@ -1,5 +1,6 @@
 #include "grid_sweep.hpp"
 
+#include "granular_rules.hpp"
 #include "sand_rules.hpp"
 #include "sandcore/worker_pool.hpp"
 
@@ -32,7 +33,7 @@ void GridSweep::wake(std::uint32_t cell) {
     wakeAt(int(x), y, int(rest % std::uint32_t(size_.z)));
 }
 
-// Sets the awake bits x0..x1 (at most 3 apart) of one row with one or two word operations.
+// Sets the awake bits x0..x1 (at most 63 apart) of one row with one or two word operations.
 void GridSweep::wakeSpan(std::size_t row, int x0, int x1) {
     std::uint64_t* words = words_.data() + row * std::size_t(rowWords_);
     const int first = x0 >> 6, last = x1 >> 6;
@@ -54,8 +55,32 @@ void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
 }
 
-void GridSweep::wakeAroundEmptied(int x, int y, int z) {
-    wakePredecessorsOf(x, y, z);
+void GridSweep::wakeSquare(int x, int y, int z, int reach) {
+    const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, size_.x - 1);
+    const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
+    const std::size_t layerRow = std::size_t(y) * std::size_t(size_.z);
+    for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
+}
+
+// The grains whose granular options an EMPTY (x, y, z) can widen (granular_rules.hpp says what a
+// grain reads): in layer y, those within 3 columns whose sideways path may cross it; in layer
+// y+1, those within 3 columns that may now fall or slide into it; in each higher layer up to
+// maxDrop above, those within 3 columns whose look down that column now reaches further, which
+// needs every cell of the column between them and (x, y, z) EMPTY.
+void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
+    if (y > 0) wakeSquare(x, y, z, kGranularReach); // layer 0 only ever falls or transitions
+    const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
+    for (int layer = y + 1; layer <= top; ++layer) {
+        if (layer > y + 1 && grid.at(x, layer - 1, z) != kEmpty) break;
+        wakeSquare(x, layer, z, kGranularReach);
+    }
+}
+
+void GridSweep::wakeAroundEmptied(const CellGrid& grid, int x, int y, int z) {
+    if (granular_)
+        wakeForGranular(grid, x, y, z);
+    else
+        wakePredecessorsOf(x, y, z);
     if (!above_ || y != size_.y - 1) return;
     if (deferWakesAbove_)
         deferredWakesAbove_.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
@@ -102,6 +127,7 @@ int GridSweep::awakeRowsInLayer(int y) const {
 // at -O3 (a call per visited cell costs about a tenth of a step).
 inline bool GridSweep::visitCell(const SweepContext& context, int x, int y, int z) {
     CellGrid& grid = context.grid;
+    if (granular_) return visitGranular(context, x, y, z);
     const std::uint32_t from = grid.index(x, y, z);
     const CellValue grain = grid[from];
     if (grain < 0) return false;
@@ -118,7 +144,18 @@ inline bool GridSweep::visitCell(const SweepContext& context, int x, int y, int 
     grains.movedAtStep[std::size_t(grain)] = context.step;
 
     if (y - 1 > 0 || bottomIsOutlet_) wakeAt(x + target->dx, y - 1, z + target->dz); // it may move on next step
-    wakeAroundEmptied(x, y, z);                                                      // the cell it left is free
+    wakeAroundEmptied(grid, x, y, z);                                                // the cell it left is free
+    return true;
+}
+
+bool GridSweep::visitGranular(const SweepContext& context, int x, int y, int z) {
+    const GranularOutcome outcome = granular_->visit(context.grid, context.grains, context.seed, context.step,
+                                                     std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
+    if (outcome.kind == GranularOutcome::Waiting) wakeAt(x, y, z); // in motion: visited again next step
+    if (outcome.kind != GranularOutcome::Moved) return false;
+    const Int3 to = outcome.to;
+    if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
+    wakeAroundEmptied(context.grid, x, y, z);                  // the cell it left is free
     return true;
 }
 
@@ -134,6 +171,20 @@ SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip)
         // first. Without sleeping, every cell of the row is visited as if awake.
         std::uint64_t* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
         for (int w = 0; w < rowWords_; ++w) {
+            if (granular_ && context.sleeping) {
+                // Granular moves also wake cells of their own layer (the paths): a bit set ahead
+                // of the cell being visited is visited in this step, one set behind it in the
+                // next, as a full sweep would see the change. So each bit is taken as it is reached.
+                std::uint64_t ahead = ~std::uint64_t{0};
+                while (const std::uint64_t bits = words[w] & ahead) {
+                    const int bit = __builtin_ctzll(bits);
+                    words[w] &= ~(std::uint64_t{1} << bit);
+                    ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
+                    ++totals.visited;
+                    totals.moves += visitCell(context, w * 64 + bit, y, z) ? 1 : 0;
+                }
+                continue;
+            }
             std::uint64_t bits = context.sleeping ? words[w] : wholeWord(w);
             words[w] = 0;
             while (bits) {
