@@ -91,8 +91,14 @@ double drainMsPerStep(int height, int threads, PhysicsLevel level, std::uint64_t
     step.physics.level = level;
     Scene scene = makeHourglassScene(makeHourglassMask({height, defaultNeckRadius(height), 0.0f}), {}, step);
     const auto start = std::chrono::steady_clock::now();
-    while (!scene.settled() && scene.counters().stepsDone < 100000) scene.step();
+    double visited = 0, moves = 0;
+    while (!scene.settled() && scene.counters().stepsDone < 100000) {
+        scene.step();
+        visited += double(scene.counters().visitedLastStep);
+        moves += double(scene.counters().movesLastStep);
+    }
     steps = scene.counters().stepsDone;
+    std::printf("  visited/step %.0f moves/step %.0f\n", visited / double(steps), moves / double(steps));
     hash = scene.stateHash();
     return 1000.0 * seconds(start) / double(steps);
 }

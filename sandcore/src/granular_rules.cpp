@@ -80,19 +80,27 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             const double sin2 = std::sin(2.0 * std::atan2(double(dz), double(dx)));
             const double threshold = slope_ * (1.0 + diagonalStiffening * sin2 * sin2) * std::hypot(dx, dz);
             o.thresholdQ8 = std::uint32_t(std::lround(threshold * 256.0));
-            // The cells of the grain's layer under the straight line to the target column (the
-            // target column last), each rounded half away from zero so the path is symmetric under
-            // every mirror of the grid.
+            // The cells of the grain's layer under the straight line to the target column, the
+            // target column included, each rounded half away from zero so the path is symmetric
+            // under every mirror of the grid.
             const int samples = 4 * std::max(std::abs(dx), std::abs(dz));
             for (int i = 1; i <= samples; ++i) {
                 const std::array<int, 2> cell{int(std::lround(double(dx) * i / samples)),
                                               int(std::lround(double(dz) * i / samples))};
                 if (cell == std::array<int, 2>{0, 0}) continue;
-                if (o.pathLength > 0 && o.path[std::size_t(o.pathLength - 1)] == cell) continue;
-                o.path[std::size_t(o.pathLength++)] = cell;
+                o.pathMask |= std::uint64_t{1} << ((cell[1] + kGranularReach) * kWindow + cell[0] + kGranularReach);
             }
             maxDrop_ = std::max(maxDrop_, int((o.thresholdQ8 + 255) >> 8));
         }
+    // Who may gain from an EMPTY cell c, by layer above c (see wakeMask): in c's layer and the one
+    // above, every grain of the window; d layers above c, only a grain whose deepest possible
+    // need towards c's column reaches d cells, since c lies d cells down that column.
+    wakeMasks_.assign(std::size_t(maxDrop_) + 1, 0);
+    wakeMasks_[0] = wakeMasks_[1] = (std::uint64_t{1} << (kWindow * kWindow)) - 1;
+    for (const Offset& o : offsets_)
+        for (int d = 2; d <= maxDrop_; ++d)
+            if (int((o.thresholdQ8 + 255) >> 8) >= d) // a grain at -o looks at c's column with offset o
+                wakeMasks_[std::size_t(d)] |= std::uint64_t{1} << ((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx);
 }
 
 void moveGrain(CellGrid& grid, GrainStore& grains, CellValue grain, std::uint32_t from, std::uint32_t to, Int3 back,
@@ -177,18 +185,36 @@ GranularOutcome GranularRules::slide(CellGrid& grid, GrainStore& grains, std::ui
             }
     if (!anyNearEmpty) return {};
 
-    const std::uint64_t cellHash = mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
+    // The 7x7 windows of EMPTY cells in the grain's layer (paths) and the layer below (targets)
+    // as bit masks, bit (dz + 3) * 7 + (dx + 3); cells outside the grid count as taken.
+    std::uint64_t emptyHere = 0, emptyBelow = 0;
+    const int dzMin = std::max(-kGranularReach, -z), dzMax = std::min(kGranularReach, size.z - 1 - z);
+    const int dxMin = std::max(-kGranularReach, -x), dxMax = std::min(kGranularReach, size.x - 1 - x);
+    for (int dz = dzMin; dz <= dzMax; ++dz) {
+        const CellValue* here = cells + (std::int64_t(from) + dz * row);
+        const CellValue* below = here - layer;
+        const int shift = (dz + kGranularReach) * kWindow + kGranularReach;
+        for (int dx = dxMin; dx <= dxMax; ++dx) {
+            emptyHere |= std::uint64_t(here[dx] == kEmpty) << (shift + dx);
+            emptyBelow |= std::uint64_t(below[dx] == kEmpty) << (shift + dx);
+        }
+    }
     std::uint8_t possible[kOffsets];
     int count = 0;
-    for (int k = 0; k < kOffsets; ++k) {
+    std::uint64_t dithers[kOffsets / 8]; // 8 bits per offset, drawn once per visit only when needed
+    bool drawn = false;
+    for (std::uint64_t targets = emptyBelow; targets;) {
+        const int bit = __builtin_ctzll(targets);
+        targets &= targets - 1;
+        const int k = bit < kOffsets / 2 ? bit : bit - 1; // the window's centre has no offset
         const Offset& o = offsets_[std::size_t(k)];
-        const int tx = x + o.dx, tz = z + o.dz;
-        if (tx < 0 || tx >= size.x || tz < 0 || tz >= size.z) continue;
-        if (at(o.dx, -1, o.dz) != kEmpty) continue;
-        bool clear = true;
-        for (int p = 0; p < o.pathLength && clear; ++p) clear = at(o.path[std::size_t(p)][0], 0, o.path[std::size_t(p)][1]) == kEmpty;
-        if (!clear) continue;
-        const std::uint32_t dither = std::uint32_t(mix64(cellHash + std::uint64_t(k) * 0x9e3779b97f4a7c15ull) >> 56);
+        if (o.pathMask & ~emptyHere) continue; // something lies in the way at the grain's level
+        if (!drawn) {
+            const std::uint64_t cellHash = mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
+            for (int w = 0; w < kOffsets / 8; ++w) dithers[w] = mix64(cellHash + std::uint64_t(w) * 0x9e3779b97f4a7c15ull);
+            drawn = true;
+        }
+        const std::uint32_t dither = std::uint32_t(dithers[k >> 3] >> ((k & 7) * 8)) & 0xffu;
         const int need = std::max(1, int((o.thresholdQ8 + dither) >> 8));
         if (need > y) continue; // the column is not that deep inside this grid
         int depth = 1;

@@ -24,6 +24,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace sandcore {
 
@@ -53,19 +54,23 @@ public:
 
     /// Deepest column a slide ever looks into, cells below the grain's layer.
     int maxDrop() const { return maxDrop_; }
+    /// The grains that an EMPTY cell c may let move, `layersAbove` (0..maxDrop()) layers above c:
+    /// bit (dz + 3) * 7 + (dx + 3) stands for the grain at c + (dx, dz) in that layer.
+    std::uint64_t wakeMask(int layersAbove) const { return wakeMasks_[std::size_t(layersAbove)]; }
     /// g in cells per step squared, 16.16 fixed point.
     std::uint32_t gravity() const { return gravity_; }
     /// The slope T the thresholds use for the asked angle (after calibration).
     double thresholdSlope() const { return slope_; }
 
+    /// Cells per side of the window a slide looks at.
+    static constexpr int kWindow = 2 * kGranularReach + 1;
     /// One sideways move: the offset, and the cells of the grain's layer its path crosses.
     struct Offset {
         int dx = 0, dz = 0;            ///< column offset, cells
         std::uint32_t thresholdQ8 = 0; ///< T|e| in 1/256 cells
-        int pathLength = 0;            ///< cells in path
-        std::array<std::array<int, 2>, 16> path{}; ///< (dx, dz) of the path's cells, the target column last
+        std::uint64_t pathMask = 0;    ///< the path's cells in the 7x7 window, bit (dz + 3) * 7 + (dx + 3)
     };
-    static constexpr int kOffsets = (2 * kGranularReach + 1) * (2 * kGranularReach + 1) - 1; ///< 48
+    static constexpr int kOffsets = kWindow * kWindow - 1; ///< 48
 
 private:
     GranularOutcome fall(CellGrid& grid, GrainStore& grains, std::uint64_t step, bool bottomIsOutlet, int x, int y, int z,
@@ -77,6 +82,7 @@ private:
     double slope_ = 0;
     int maxDrop_ = 1;
     std::uint32_t gravity_ = 0;
+    std::vector<std::uint64_t> wakeMasks_;
 };
 
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the

@@ -55,24 +55,42 @@ void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
 }
 
-void GridSweep::wakeSquare(int x, int y, int z, int reach) {
+// Wakes the grains of layer y at the cells of `mask` (GranularRules::wakeMask) around (x, z);
+// EMPTY cells stay asleep. That is exact: when this runs, during the sweep of layer y or below,
+// no grain can enter those cells before they are visited in this step (grains only move down,
+// and layer y and those above have not been swept yet), and one that enters later is woken by
+// its move.
+void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, std::uint64_t mask) {
+    constexpr int reach = kGranularReach, window = 2 * kGranularReach + 1;
     const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, size_.x - 1);
     const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
     const std::size_t layerRow = std::size_t(y) * std::size_t(size_.z);
-    for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
+    for (int zz = z0; zz <= z1; ++zz) {
+        const auto rowMask = std::uint32_t(mask >> ((zz - z + reach) * window)) & ((1u << window) - 1);
+        if (!rowMask) continue;
+        const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
+        std::uint64_t* words = words_.data() + (layerRow + std::size_t(zz)) * std::size_t(rowWords_);
+        bool any = false;
+        for (int xx = x0; xx <= x1; ++xx)
+            if ((rowMask >> (xx - x + reach) & 1u) && cells[xx] >= 0) {
+                words[xx >> 6] |= std::uint64_t{1} << (xx & 63);
+                any = true;
+            }
+        if (any) rowAwake_[layerRow + std::size_t(zz)] = 1;
+    }
 }
 
 // The grains whose granular options an EMPTY (x, y, z) can widen (granular_rules.hpp says what a
 // grain reads): in layer y, those within 3 columns whose sideways path may cross it; in layer
 // y+1, those within 3 columns that may now fall or slide into it; in each higher layer up to
-// maxDrop above, those within 3 columns whose look down that column now reaches further, which
-// needs every cell of the column between them and (x, y, z) EMPTY.
+// maxDrop above, those whose look down this column may now reach further, which needs every
+// cell of the column between them and (x, y, z) EMPTY.
 void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
-    if (y > 0) wakeSquare(x, y, z, kGranularReach); // layer 0 only ever falls or transitions
+    if (y > 0) wakeGrainsAround(grid, x, y, z, granular_->wakeMask(0)); // layer 0 only falls or transitions
     const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
     for (int layer = y + 1; layer <= top; ++layer) {
         if (layer > y + 1 && grid.at(x, layer - 1, z) != kEmpty) break;
-        wakeSquare(x, layer, z, kGranularReach);
+        wakeGrainsAround(grid, x, layer, z, granular_->wakeMask(layer - y));
     }
 }
 
@@ -151,7 +169,12 @@ inline bool GridSweep::visitCell(const SweepContext& context, int x, int y, int 
 bool GridSweep::visitGranular(const SweepContext& context, int x, int y, int z) {
     const GranularOutcome outcome = granular_->visit(context.grid, context.grains, context.seed, context.step,
                                                      std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
-    if (outcome.kind == GranularOutcome::Waiting) wakeAt(x, y, z); // in motion: visited again next step
+    if (outcome.kind == GranularOutcome::Waiting) {
+        wakeAt(x, y, z); // in motion: visited again next step
+        // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
+        // speed changed without a cell emptying, so the grain above must look again.
+        if (y + 1 < size_.y && context.grid.at(x, y + 1, z) >= 0) wakeAt(x, y + 1, z);
+    }
     if (outcome.kind != GranularOutcome::Moved) return false;
     const Int3 to = outcome.to;
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step

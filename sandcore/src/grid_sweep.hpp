@@ -103,7 +103,7 @@ private:
     void clearRow(std::uint32_t row);
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
-    void wakeSquare(int x, int y, int z, int reach); // the (2 reach + 1)^2 cells of layer y around (x, z)
+    void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, std::uint64_t mask);
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
     bool visitGranular(const SweepContext& context, int x, int y, int z); // true when a grain moved
     int awakeRowsInLayer(int y) const;

@@ -212,6 +212,8 @@ void Scene::transitionGranular() {
         if (neckFlow_) grains_.fallSpeed[grain] = neckFlow_->exitSpeed();
         if (i >= passing) {
             upperSweep_->wakeAt(c.x, 0, c.z); // waits for a later step
+            // Its speed may have changed without a move: the grain resting on it looks again.
+            if (upper_.size().y > 1 && upper_.at(c.x, 1, c.z) >= 0) upperSweep_->wakeAt(c.x, 1, c.z);
             continue;
         }
         const std::uint32_t below = lower_.index(c.x, lowerTop, c.z);
