@@ -125,7 +125,7 @@ GranularOutcome GranularRules::visit(CellGrid& grid, GrainStore& grains, std::ui
     if (below >= 0 && grains.fallSpeed[std::size_t(below)] > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
         // so the grain follows at once when the one below moves on (a column flows as one).
-        grains.fallSpeed[id] = std::min(grains.fallSpeed[id], grains.fallSpeed[std::size_t(below)]);
+        grains.fallSpeed[id] = grains.fallSpeed[std::size_t(below)];
         const std::uint32_t progress = grains.fallFraction[id] + grains.fallSpeed[id] + gravity_ / 2;
         grains.fallFraction[id] = std::uint16_t(std::min<std::uint32_t>(progress, kOne - 1));
         return {GranularOutcome::Waiting, {}};

@@ -21,6 +21,9 @@ inline constexpr double kBeverlooK = 1.5;  ///< empty annulus, grain diameters (
 
 class NeckFlow {
 public:
+    /// Speed of the grains in the neck row, cells per step in 16.16 fixed point: one cell.
+    static constexpr std::uint32_t kFlowSpeed = 1u << 16;
+
     NeckFlow() = default;
     /// The flow through `neckCells` open cells (the neck's cross-section) at `gravity` cells/step^2.
     NeckFlow(std::int64_t neckCells, double gravity);
@@ -28,15 +31,12 @@ public:
     double area() const { return area_; }         ///< open cells of the neck row
     double diameter() const { return diameter_; } ///< 2 sqrt(area / pi), cells
     double rate() const { return rate_; }         ///< grains per step: C sqrt(g) (D - k)^2.5
-    /// Mean exit speed rate / area, cells per step in 16.16 fixed point (at most one cell).
-    std::uint32_t exitSpeed() const { return exitSpeed_; }
     /// Grains allowed through at step `step` (>= 1).
     std::int64_t allowance(std::uint64_t step) const;
 
 private:
     double area_ = 0, diameter_ = 0, rate_ = 0;
     std::uint64_t rateQ32_ = 0; // rate in 32.32 fixed point: the allowance uses integers only
-    std::uint32_t exitSpeed_ = 0;
 };
 
 /// The open (non-INVALID) cells of a grid's layer 0: the neck's measured cross-section.

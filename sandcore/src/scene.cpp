@@ -174,7 +174,7 @@ void Scene::transition() {
 
 // The granular transition: as the thesis's, except that in an hourglass the neck lets through
 // only the grains Beverloo's rate allows this step (neck_flow.hpp), chosen by a counter hash so
-// no part of the neck is favoured, at the neck's exit speed; the others wait, awake, in flow.
+// no part of the neck is favoured; the others wait, awake, in the flow.
 // A grain that cannot pass because the cell below is full stops.
 void Scene::transitionGranular() {
     const int lowerTop = lower_.size().y - 1;
@@ -209,7 +209,10 @@ void Scene::transitionGranular() {
         const std::uint32_t cell = ready[i];
         const auto grain = std::size_t(upper_[cell]);
         const Int3 c = upper_.coordinate(cell);
-        if (neckFlow_) grains_.fallSpeed[grain] = neckFlow_->exitSpeed();
+        // Grains in the neck row, let through or waiting, move at the flow's speed: a cell a step,
+        // so the cell below the neck is free again by the next step and the column above refills
+        // the neck row at once. The neck, not the supply around it, sets the rate.
+        if (neckFlow_) grains_.fallSpeed[grain] = NeckFlow::kFlowSpeed;
         if (i >= passing) {
             upperSweep_->wakeAt(c.x, 0, c.z); // waits for a later step
             // Its speed may have changed without a move: the grain resting on it looks again.
