@@ -3,6 +3,7 @@
 #include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/scene_options.hpp"
+#include "scene/file_io.hpp"
 #include "scene/hex.hpp"
 #include "scene/scene_request.hpp"
 #include "scene/statistics.hpp"
@@ -34,6 +35,7 @@ struct SimulateOptions {
     bool fullSweep = false;
     std::int64_t pour = 0;
     bool json = false;
+    std::string trace; // CSV file: one row per step (SPEC PH7)
 };
 
 int runSimulate(const SimulateOptions& options) {
@@ -62,6 +64,7 @@ int runSimulate(const SimulateOptions& options) {
     const std::uint32_t pourAt = sandcore::pourCell(scene);
     StreamingMedian stepMilliseconds;
     std::int64_t moves = 0, visited = 0, done = 0, poured = 0;
+    std::string trace = options.trace.empty() ? std::string() : "step,grains_upper,grains_lower,moves\n";
     const auto start = Clock::now();
     while (done < stepLimit) {
         // A pour waits while its cell is still taken, so every grain asked for is released.
@@ -72,9 +75,15 @@ int runSimulate(const SimulateOptions& options) {
         moves += scene.counters().movesLastStep;
         visited += scene.counters().visitedLastStep;
         ++done;
+        if (!options.trace.empty()) {
+            const sandcore::SceneCounters& c = scene.counters();
+            trace += std::to_string(c.stepsDone) + ',' + std::to_string(c.grainsUpper) + ',' +
+                     std::to_string(c.grainsLower) + ',' + std::to_string(c.movesLastStep) + '\n';
+        }
         if (options.untilSettled && poured >= options.pour && scene.settled()) break;
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (!options.trace.empty()) writeFileAtomically(options.trace, trace);
     const double stepsPerSecond = seconds > 0 ? double(done) / seconds : 0.0;
     const std::string hash = toHex16(scene.stateHash());
     const std::string sceneName = sceneKindName(settings.request.kind);
@@ -94,6 +103,7 @@ int runSimulate(const SimulateOptions& options) {
         out["threads"] = threads;
         out["settled"] = scene.settled();
         out["sleeping"] = !options.fullSweep;
+        out["physics"] = std::string(sandcore::physicsLevelName(settings.step.physics.level));
         out["median_ms_per_step"] = stepMilliseconds.median();
         out["grains_upper"] = scene.counters().grainsUpper;
         out["grains_lower"] = scene.counters().grainsLower;
@@ -110,6 +120,7 @@ int runSimulate(const SimulateOptions& options) {
                 scene.settled() ? "settled" : "still moving");
     std::printf("%.3f s, %.1f steps/s, median %.3f ms per step, %d thread(s), %s\n", seconds, stepsPerSecond,
                 stepMilliseconds.median(), threads, options.fullSweep ? "full sweep" : "sleeping grains skipped");
+    std::printf("physics %s\n", std::string(sandcore::physicsLevelName(settings.step.physics.level)).c_str());
     std::printf("state hash %s\n", hash.c_str());
     return 0;
 }
@@ -130,6 +141,7 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     addNumberOption(*cmd, "--pour", options->pour, std::int64_t{0}, std::int64_t{1} << 31,
                     "canvas: release one grain per step at the centre of the top, N grains in all");
     cmd->add_flag("--json", options->json, "print one JSON object");
+    cmd->add_option("--trace", options->trace, "write FILE.csv with one row per step: step,grains_upper,grains_lower,moves");
     cmd->callback([options, &exitCode] { exitCode = runSimulate(*options); });
 }
 

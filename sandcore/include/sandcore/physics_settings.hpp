@@ -24,9 +24,11 @@ struct PhysicsSettings {
     PhysicsLevel level = PhysicsLevel::Classic; ///< which rules run
     float reposeDegrees = 33.0f; ///< granular: angle of repose of a poured cone, degrees in [20, 45]
     /// granular: gravity in cells per step squared (> 0, at most 64). The default is slow motion
-    /// (a 1 mm grain at about 440 steps/s) so that the hourglass neck, which passes at most one
-    /// grain per cell and step, can carry Beverloo's rate; see gravityFromCellSize.
-    float gravity = 0.05f;
+    /// (1 mm cells at 700 steps/s; a fall of 100 cells takes 100 steps, as in classic) so that the
+    /// sand around the neck, one grain per cell and step, keeps up with Beverloo's rate for the
+    /// default necks; see gravityFromCellSize.
+    float gravity = 0.02f;
+    friend bool operator==(const PhysicsSettings&, const PhysicsSettings&) = default; ///< same level and values
 };
 
 /// g in cells per step squared for cells of `cellMetres` metres at `stepsPerSecond`:
