@@ -41,7 +41,7 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     SceneSettings settings = options.settings;
     settings.request.kind = parseSceneKind(options.scene);
     const auto physics = sandcore::parsePhysicsLevel(options.physics);
-    if (!physics) throw std::invalid_argument("unknown physics '" + options.physics + "' (classic or granular)");
+    if (!physics) throw std::invalid_argument("--physics must be classic or granular, got '" + options.physics + "'");
     settings.step.physics.level = *physics;
     applySceneDefaults(settings);
     return settings;
