@@ -19,27 +19,6 @@ constexpr std::uint64_t kDitherStream = 0x3d;
 
 } // namespace
 
-double gravityFromCellSize(double cellMetres, double stepsPerSecond) {
-    if (!(cellMetres > 0) || !(stepsPerSecond > 0))
-        throw std::invalid_argument("cell size and step rate must be positive");
-    return 9.81 / (cellMetres * stepsPerSecond * stepsPerSecond);
-}
-
-void validatePhysics(const PhysicsSettings& physics) {
-    if (!(physics.reposeDegrees >= kMinReposeDegrees && physics.reposeDegrees <= kMaxReposeDegrees))
-        throw std::invalid_argument("repose angle must lie in [20, 45] degrees");
-    if (!(physics.gravity > 0.0f && physics.gravity <= 64.0f))
-        throw std::invalid_argument("gravity must lie in (0, 64] cells per step squared");
-}
-
-std::string_view physicsLevelName(PhysicsLevel level) { return level == PhysicsLevel::Granular ? "granular" : "classic"; }
-
-std::optional<PhysicsLevel> parsePhysicsLevel(std::string_view name) {
-    if (name == "classic") return PhysicsLevel::Classic;
-    if (name == "granular") return PhysicsLevel::Granular;
-    return std::nullopt;
-}
-
 // Measured: the mean angle of a cone of 40,000 grains poured at one column (granular_probe pour,
 // seed 1) for each slope T. Grains find the lowest of the thresholds around them, so the cone
 // stands well below atan(T); above about 41 degrees the lattice's own 45-degree facets take over.

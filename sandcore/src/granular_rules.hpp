@@ -4,7 +4,8 @@
 // 1. fall: if the cell below is EMPTY the grain falls with a 16.16 fixed-point speed that grows
 //    by g each step, as far as its speed carries it this step, checking every cell of the path
 //    (a one-cell obstacle stops it at any speed, as The Powder Toy does). On contact it takes the
-//    speed of a moving grain it lands on, or stops.
+//    speed of a moving grain it lands on, or stops. A grain resting on a moving grain moves with
+//    it: it takes its speed and gathers up to a cell of progress, so a column flows as one.
 // 2. slide: a grain resting on something at rest may move to the cell one layer down in any
 //    column up to 3 cells away (48 offsets e) when the sideways path at its own level is clear
 //    and the column there is at least `need` cells deep, need = floor(T|e| + u): T a calibrated
@@ -15,8 +16,9 @@
 //    by a counter hash of (seed, step, grid, cell) (R3).
 //
 // What a grain reads, so the sweep can keep threads apart and wake exactly the grains whose
-// options a change can widen (R5, R6): its own column downwards; cells of its own layer within
-// 3 columns (the paths); and the 7x7 columns of the layers up to maxDrop() below it.
+// options a change can widen (R5, R6): its own column downwards and the speed of the grain
+// below it; cells of its own layer within 3 columns (the paths); and the 7x7 columns of the
+// layers up to maxDrop() below it.
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"

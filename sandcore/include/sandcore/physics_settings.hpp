@@ -18,12 +18,16 @@ enum class PhysicsLevel : std::uint8_t {
 /// Smallest and largest repose angle the granular rules accept, degrees (PH2).
 inline constexpr float kMinReposeDegrees = 20.0f;
 inline constexpr float kMaxReposeDegrees = 45.0f; ///< see kMinReposeDegrees
+/// Smallest and largest gravity, cells per step squared (PH3): below the smallest, 16.16 fixed
+/// point would round a grain's speed gain towards nothing.
+inline constexpr float kMinGravity = 0.001f;
+inline constexpr float kMaxGravity = 64.0f; ///< see kMinGravity
 
 /// Settings of the granular level; classic ignores everything but `level`.
 struct PhysicsSettings {
     PhysicsLevel level = PhysicsLevel::Classic; ///< which rules run
     float reposeDegrees = 33.0f; ///< granular: angle of repose of a poured cone, degrees in [20, 45]
-    /// granular: gravity in cells per step squared (> 0, at most 64). The default is slow motion
+    /// granular: gravity in cells per step squared, in [0.001, 64]. The default is slow motion
     /// (1 mm cells at 700 steps/s; a fall of 100 cells takes 100 steps, as in classic) so that the
     /// sand around the neck, one grain per cell and step, keeps up with Beverloo's rate for the
     /// default necks; see gravityFromCellSize.

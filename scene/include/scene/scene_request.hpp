@@ -29,8 +29,8 @@ inline constexpr SettingRange<double> kFillRange{0.001, 1.0, "--fill"};     ///<
 inline constexpr SettingRange<int> kNoiseRange{-1, 5, "--noise"};           ///< noNoise threshold; -1 = off
 /// Granular angle of repose, degrees (SPEC PH2).
 inline constexpr SettingRange<double> kReposeRange{sandcore::kMinReposeDegrees, sandcore::kMaxReposeDegrees, "--repose"};
-/// Granular gravity, cells per step squared (SPEC PH3); 0 is refused, the smallest is 0.001.
-inline constexpr SettingRange<double> kGravityRange{0.001, 64.0, "--gravity"};
+/// Granular gravity, cells per step squared (SPEC PH3).
+inline constexpr SettingRange<double> kGravityRange{sandcore::kMinGravity, sandcore::kMaxGravity, "--gravity"};
 
 /// A scene as the user describes it.
 struct SceneRequest {
