@@ -4,6 +4,7 @@
 #include "gui/panels.hpp"
 #include "view/render/shader_program.hpp"
 
+#include "scene/canvas_surface.hpp"
 #include "scene/draft_image.hpp"
 
 #include "sandcore/display_positions.hpp"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <system_error>
 
@@ -22,6 +24,9 @@ namespace sandglass {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr float kPi = 3.14159265f;
+constexpr double kTurnSeconds = 0.8; // the view turns over this long after a flip
+constexpr float kCanvasPitch = 1.3f; // radians above the horizon the canvas is seen from
 
 std::vector<std::string> listModelFiles() {
     std::vector<std::string> files;
@@ -126,6 +131,9 @@ void Application::frameCamera() {
     sandcore::Vec3 lo, hi;
     sandcore::sceneBounds(host_.scene(), {state_.render.cellSize, state_.render.jitter}, lo, hi);
     camera_.frame(lo, hi);
+    // The canvas is painted from above and a little from the front, so sand lands where the
+    // cursor points and the piles still show their height.
+    if (scene().kind() == sandcore::SceneKind::Canvas) camera_.rotate(-camera_.yaw(), kCanvasPitch - camera_.pitch());
 }
 
 void Application::targetSize(int& width, int& height) const {
@@ -183,20 +191,16 @@ void Application::renderFrame(double elapsedSeconds) {
     if (state_.showGui) drawPanels(state_);
     camera_.setLensShift(state_.showGui ? state_.panelCoverage : 0.0f);
     serveCommands();
-    host_.setRunning(state_.simulationRunning);
+    updateTimer();
+    // The canvas runs while a stroke is drawn, so the first stroke shows sand even when paused.
+    host_.setRunning(state_.simulationRunning || canvas_.input().painter().stroking());
     host_.setStepsPerSecond(state_.stepsPerSecond);
     host_.advance(elapsedSeconds);
+    updateTurnAnimation();
     renderer_.setDraftPlacement(canvas_.draftPlacement(host_.scene(), state_.painting, state_.render.cellSize));
     drawHost(host_, state_.render);
-    if (host_.building()) {
-        // Progress while a scene is built in the background.
-        ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, 20.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-        ImGui::Begin("##building", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
-        const double seconds = host_.buildSeconds();
-        ImGui::Text("building scene %c  %.1f s", "|/-\\"[int(seconds * 8.0) % 4], seconds);
-        ImGui::End();
-    }
-    imgui_.render(state_.showGui || host_.building());
+    drawOverlays();
+    imgui_.render(true);
     updateStatistics(elapsedSeconds);
     ++framesDrawn_;
 }
@@ -245,9 +249,10 @@ void Application::handleMouse() {
     const std::pair<int, MouseButton> buttons[] = {{GLFW_MOUSE_BUTTON_LEFT, MouseButton::Left},
                                                    {GLFW_MOUSE_BUTTON_MIDDLE, MouseButton::Middle},
                                                    {GLFW_MOUSE_BUTTON_RIGHT, MouseButton::Right}};
+    const bool leftPaints = scene().kind() == sandcore::SceneKind::Canvas;
     for (const auto& [glfwButton, button] : buttons)
         if (glfwGetMouseButton(handle, glfwButton) == GLFW_PRESS)
-            applyMouseDrag(capture, button, alt, dx, dy, float(height), camera_);
+            applyMouseDrag(capture, button, alt, leftPaints, dx, dy, float(height), camera_);
     if (scene().kind() == sandcore::SceneKind::Canvas)
         handleCanvasPointer({x, y, glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS, alt, capture.mouse});
 }
@@ -267,6 +272,7 @@ void Application::handleKey(KeyCommand command) {
     case KeyCommand::Quit: state_.commands.push(Command::Quit); break;
     case KeyCommand::Screenshot: state_.commands.push(Command::Screenshot); break;
     case KeyCommand::Undo: state_.commands.push(Command::Undo); break;
+    case KeyCommand::Flip: state_.commands.push(Command::Flip); break;
     default: break;
     }
     std::fflush(stdout);
@@ -281,6 +287,9 @@ void Application::adoptBuild(const BuildOutcome& outcome) {
     }
     state_.loaded = host_.loaded();
     canvas_.sceneReplaced();
+    timer_.stop();
+    turnStarted_.reset();
+    camera_.setTurn(0.0f);
     frameCamera();
 }
 
@@ -321,8 +330,29 @@ void Application::serve(Command command) {
     case Command::Reset:
         host_.reset();
         canvas_.sceneReplaced();
+        timer_.stop();
         state_.statusLine = "reset";
         break;
+    case Command::Flip:
+        if (!host_.flip()) {
+            state_.statusLine = "only an hourglass turns over";
+            break;
+        }
+        // The sand is already mirrored; the view starts upside down and turns back upright.
+        turnStarted_ = Clock::now();
+        updateTurnAnimation();
+        timer_.sceneTurned(scene());
+        state_.statusLine = "turned over";
+        break;
+    case Command::StartTimer:
+        try {
+            timer_.start(scene(), 60.0 * state_.timer.minutes + state_.timer.seconds);
+            state_.statusLine = "timer set: measuring the drain...";
+        } catch (const std::exception& error) {
+            state_.statusLine = error.what();
+        }
+        break;
+    case Command::StopTimer: timer_.stop(); break;
     case Command::SingleStep: host_.requestSingleStep(); break;
     case Command::FrameCamera: frameCamera(); break;
     case Command::Undo: state_.statusLine = canvas_.undo(host_) ? "undone" : "nothing to undo"; break;
@@ -375,6 +405,94 @@ bool Application::handleCanvasPointer(const PointerSample& sample) {
     return changed;
 }
 
+void Application::updateTurnAnimation() {
+    if (!turnStarted_) return;
+    const double t = std::chrono::duration<double>(Clock::now() - *turnStarted_).count() / kTurnSeconds;
+    if (t >= 1.0) {
+        turnStarted_.reset();
+        camera_.setTurn(0.0f);
+        return;
+    }
+    const double eased = t * t * (3.0 - 2.0 * t); // starts and stops gently
+    camera_.setTurn(kPi * float(1.0 - eased));
+}
+
+void Application::updateTimer() {
+    if (const std::optional<double> rate = timer_.update(scene())) {
+        // The drain is measured: run at the rate that makes it last the duration.
+        state_.stepsPerSecond = *rate;
+        state_.simulationRunning = true;
+        state_.statusLine = "timer running";
+    }
+    TimerState& timer = state_.timer;
+    const HourglassTimer::Phase phase = timer_.phase();
+    timer.set = phase != HourglassTimer::Phase::Off;
+    timer.predicting = phase == HourglassTimer::Phase::Predicting;
+    const bool finishedNow = phase == HourglassTimer::Phase::Finished && !timer.finished;
+    timer.finished = phase == HourglassTimer::Phase::Finished;
+    timer.elapsedSeconds = timer.set ? timer_.elapsedSeconds(scene()) : 0.0;
+    timer.remainingSeconds = timer.set ? timer_.remainingSeconds(scene()) : 0.0;
+    if (finishedNow) {
+        state_.statusLine = "time is up";
+        std::printf("\atime is up\n"); // the terminal's bell, where there is one
+        std::fflush(stdout);
+    }
+}
+
+void Application::drawOverlays() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    auto banner = [&](const char* id, const char* text, ImVec4 colour) {
+        ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, 20.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+        ImGui::PushStyleColor(ImGuiCol_WindowBg, colour);
+        ImGui::Begin(id, nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+        ImGui::TextUnformatted(text);
+        ImGui::End();
+        ImGui::PopStyleColor();
+    };
+    if (host_.building()) {
+        // Progress while a scene is built in the background.
+        const double seconds = host_.buildSeconds();
+        char text[64];
+        std::snprintf(text, sizeof text, "building scene %c  %.1f s", "|/-\\"[int(seconds * 8.0) % 4], seconds);
+        banner("##building", text, ImVec4(0.1f, 0.1f, 0.1f, 0.85f));
+    } else if (state_.timer.finished) {
+        // The end of the timer, blinking so it is seen from across the room.
+        const bool on = int(ImGui::GetTime() * 2.0) % 2 == 0;
+        banner("##timeup", "  Time is up  ", on ? ImVec4(0.80f, 0.25f, 0.10f, 0.95f) : ImVec4(0.45f, 0.12f, 0.05f, 0.95f));
+    }
+    if (scene().kind() == sandcore::SceneKind::Canvas) drawBrushOutline();
+}
+
+void Application::drawBrushOutline() {
+    // A ring on the canvas surface around the column under the cursor, as wide as the brush.
+    // Hidden windows (render, tests) have no cursor to follow.
+    if (!options_.window.visible || ImGui::GetIO().WantCaptureMouse || host_.building()) return;
+    const std::optional<CanvasColumn> column = columnUnderCursor(lastCursorX_, lastCursorY_);
+    if (!column) return;
+    const CanvasView view = canvasView();
+    const CanvasSurface surface =
+        canvasSurface(scene(), state_.painting.pickAtTarget ? PaintTarget::Bottom : PaintTarget::Top, view.cellSize);
+    const float radius = (float(std::max(0, state_.painting.brushRadius)) + 0.5f) * surface.cellSize;
+    const float centreX = surface.originX + (float(column->x) + 0.5f) * surface.cellSize;
+    const float centreZ = surface.originZ + (float(column->z) + 0.5f) * surface.cellSize;
+    const glm::mat4 toClip = view.projection * view.view;
+    const float toWindowX = view.framebufferWidth > 0 ? float(view.windowWidth) / float(view.framebufferWidth) : 1.0f;
+    const float toWindowY = view.framebufferHeight > 0 ? float(view.windowHeight) / float(view.framebufferHeight) : 1.0f;
+    ImVec2 points[48];
+    int count = 0;
+    for (int i = 0; i < 48; ++i) {
+        const float angle = 2.0f * kPi * float(i) / 48.0f;
+        const glm::vec4 clip = toClip * glm::vec4(centreX + radius * std::cos(angle), surface.y,
+                                                  centreZ + radius * std::sin(angle), 1.0f);
+        if (clip.w <= 0.0f) return;
+        // ImGui draws in window units; the framebuffer may have more pixels (HiDPI).
+        points[count++] = ImVec2((clip.x / clip.w * 0.5f + 0.5f) * float(view.framebufferWidth) * toWindowX,
+                                 (0.5f - clip.y / clip.w * 0.5f) * float(view.framebufferHeight) * toWindowY);
+    }
+    const ImU32 colour = state_.painting.erase ? IM_COL32(220, 60, 40, 230) : IM_COL32(40, 40, 40, 230);
+    ImGui::GetForegroundDrawList()->AddPolyline(points, count, colour, ImDrawFlags_Closed, 2.0f);
+}
+
 void Application::updateStatistics(double elapsedSeconds) {
     FrameStatistics& stats = state_.stats;
     const float milliseconds = float(elapsedSeconds * 1000.0);
@@ -387,6 +505,8 @@ void Application::updateStatistics(double elapsedSeconds) {
     }
     stats.stepsPerSecond = float(host_.stepsPerSecond());
     stats.millisecondsPerStep = float(host_.millisecondsPerStep());
+    stats.rateCapped = host_.rateCapped();
+    stats.maxStepsPerFrame = SceneHost::kMaxStepsPerFrame;
     const sandcore::SceneCounters& counters = scene().counters();
     stats.grains = scene().grainCount();
     stats.grainsUpper = counters.grainsUpper;

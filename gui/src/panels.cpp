@@ -3,7 +3,10 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <string>
 
 namespace sandglass {
 
@@ -37,6 +40,40 @@ void drawPanels(AppState& state) {
     ImGui::End();
 }
 
+void drawTimer(AppState& state) {
+    // The hourglass as a timer: minutes:seconds, then the drain is measured and the flow set.
+    TimerState& timer = state.timer;
+    if (!timer.set) {
+        ImGui::PushItemWidth(ImGui::GetFontSize() * 2.5f);
+        ImGui::InputInt("##minutes", &timer.minutes, 0);
+        ImGui::SameLine(0.0f, 2.0f);
+        ImGui::TextUnformatted(":");
+        ImGui::SameLine(0.0f, 2.0f);
+        ImGui::InputInt("##seconds", &timer.seconds, 0);
+        ImGui::PopItemWidth();
+        timer.minutes = std::clamp(timer.minutes, 0, 999);
+        timer.seconds = std::clamp(timer.seconds, 0, 59);
+        ImGui::SameLine();
+        ImGui::BeginDisabled(timer.minutes == 0 && timer.seconds == 0);
+        if (ImGui::Button("Start timer")) state.commands.push(Command::StartTimer);
+        ImGui::EndDisabled();
+        return;
+    }
+    if (ImGui::Button("Stop timer")) state.commands.push(Command::StopTimer);
+    auto clock = [](double seconds) {
+        const int whole = int(std::ceil(std::max(0.0, seconds)));
+        char text[16];
+        std::snprintf(text, sizeof text, "%d:%02d", whole / 60, whole % 60);
+        return std::string(text);
+    };
+    if (timer.predicting)
+        ImGui::TextUnformatted("measuring the drain...");
+    else if (timer.finished)
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.2f, 1.0f), "time is up (%s)", clock(timer.elapsedSeconds).c_str());
+    else
+        ImGui::Text("elapsed %s   remaining %s", clock(timer.elapsedSeconds).c_str(), clock(timer.remainingSeconds).c_str());
+}
+
 void drawControlSection(AppState& state) {
     // Thesis: a green/red button; here a coloured toggle with the same meaning.
     const bool running = state.simulationRunning;
@@ -52,6 +89,14 @@ void drawControlSection(AppState& state) {
     float speed = float(state.stepsPerSecond);
     if (ImGui::SliderFloat("flow (steps/s)", &speed, 1.0f, 240.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
         state.stepsPerSecond = speed;
+    if (state.stats.rateCapped)
+        ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "frames too slow: capped at %d steps per frame",
+                           state.stats.maxStepsPerFrame);
+    if (state.loaded.request.kind == sandcore::SceneKind::Hourglass) {
+        if (ImGui::Button("Turn over (T)")) state.commands.push(Command::Flip);
+        ImGui::SameLine();
+        drawTimer(state);
+    }
     if (ImGui::Button("Screenshot (P)")) state.commands.push(Command::Screenshot);
     ImGui::SameLine();
     if (ImGui::Button("Benchmark (B)")) state.commands.push(Command::Benchmark);
@@ -192,6 +237,9 @@ void drawModelOptions(AppState& state) {
 
 void drawPaintingSection(AppState& state) {
     PaintingSettings& painting = state.painting;
+    // What the left button does, in one line, so a first stroke is no guess.
+    ImGui::TextWrapped(painting.erase ? "Left button: erase the top grain under the ring; Alt + drag: camera."
+                                      : "Left button: pour sand where the ring is; Alt + drag: camera.");
     int erase = painting.erase ? 1 : 0;
     ImGui::RadioButton("draw", &erase, 0);
     ImGui::SameLine();

@@ -45,11 +45,8 @@ Scene::Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::ve
         if (cell >= upper_.cellCount() || upperLayout_[cell] != kEmpty)
             throw std::invalid_argument("a fill cell lies outside the upper grid or on an INVALID cell");
     if (settings_.threads < 1) throw std::invalid_argument("threads must be at least 1");
-    upperSweep_ = std::make_unique<GridSweep>(upper_.size(), true);
-    lowerSweep_ = std::make_unique<GridSweep>(lower_.size(), false);
-    lowerSweep_->setGridAbove(upperSweep_.get());
+    makeSweeps();
     pool_ = std::make_unique<WorkerPool>(settings_.threads);
-    configurePhysics();
     reset();
 }
 
@@ -82,6 +79,13 @@ Scene::~Scene() = default;
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 
+void Scene::makeSweeps() {
+    upperSweep_ = std::make_unique<GridSweep>(upperLayout_.size(), true);
+    lowerSweep_ = std::make_unique<GridSweep>(lowerLayout_.size(), false);
+    lowerSweep_->setGridAbove(upperSweep_.get());
+    configurePhysics(); // the new sweeps get the rules; a turned hourglass's neck is measured again
+}
+
 GridSweep& Scene::sweepOf(GridLevel level) { return level == GridLevel::Upper ? *upperSweep_ : *lowerSweep_; }
 
 void Scene::rebuildCells(GridLevel level) {
@@ -93,6 +97,12 @@ void Scene::rebuildCells(GridLevel level) {
 }
 
 void Scene::reset() {
+    if (flipped_) {
+        // The fill belongs to the upright hourglass: turn the layouts back first.
+        flipLayouts();
+        upper_ = upperLayout_;
+        lower_ = lowerLayout_;
+    }
     grains_.clear();
     nextIdentity_ = 0;
     counters_ = {};
@@ -274,10 +284,15 @@ void Scene::markEverythingAwake() {
 }
 
 SceneSnapshot Scene::snapshot() const {
-    return {upper_, lower_, grains_, nextIdentity_, counters_, upperObstacles_, lowerObstacles_};
+    return {upper_, lower_, grains_, nextIdentity_, counters_, upperObstacles_, lowerObstacles_, flipped_};
 }
 
 void Scene::restore(const SceneSnapshot& saved) {
+    if (saved.flipped != flipped_) {
+        flipLayouts();
+        upper_ = upperLayout_;
+        lower_ = lowerLayout_;
+    }
     if (!(saved.upper.size() == upper_.size()) || !(saved.lower.size() == lower_.size()))
         throw std::invalid_argument("the snapshot belongs to a scene with other grids");
     std::copy(saved.upper.cells().begin(), saved.upper.cells().end(), upper_.cells().begin());

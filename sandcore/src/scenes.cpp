@@ -34,6 +34,14 @@ std::vector<std::uint32_t> fillFromBottom(const InsideMask& mask, float fillFrac
     return cells;
 }
 
+InsideMask mirroredInY(const InsideMask& mask) {
+    InsideMask out = InsideMask::empty(mask.size);
+    for (int y = 0; y < mask.size.y; ++y)
+        for (int z = 0; z < mask.size.z; ++z)
+            for (int x = 0; x < mask.size.x; ++x) out.set(x, mask.size.y - 1 - y, z, mask.at(x, y, z));
+    return out;
+}
+
 // The mask without its empty bottom and top layers, so a plain vessel's floor is its outlet.
 InsideMask trimmedToInsideLayers(const InsideMask& mask) {
     int bottom = 0, top = mask.size.y - 1;
@@ -57,7 +65,17 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const HourglassSettings& h
     InsideMask upper = split ? sliceLayers(vessel, neck, top) : vessel;
     if (hourglass.drainCompletely) removeSharpEdges(upper, 0, upper.size.y - 1);
     requireInside(upper, "the upper bulb");
-    CellGrid lowerLayout = split ? layoutFromMask(sliceLayers(vessel, 0, neck)) : CellGrid(vessel.size, kEmpty);
+    CellGrid lowerLayout(vessel.size, kEmpty);
+    if (split) {
+        InsideMask lower = sliceLayers(vessel, 0, neck);
+        // Turned over (T1), the lower bulb drains too: carve it as the upper bulb it then becomes.
+        if (hourglass.drainCompletely) {
+            lower = mirroredInY(lower);
+            removeSharpEdges(lower, 0, lower.size.y - 1);
+            lower = mirroredInY(lower);
+        }
+        lowerLayout = layoutFromMask(lower);
+    }
     return Scene(SceneKind::Hourglass, layoutFromMask(upper), std::move(lowerLayout),
                  fillFromBottom(upper, hourglass.fillFraction), step);
 }

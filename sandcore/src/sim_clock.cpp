@@ -8,6 +8,7 @@ namespace sandcore {
 
 int SimClock::advance(double elapsedSeconds) {
     int steps = 0;
+    capped_ = false;
     if (singleStepPending_) {
         singleStepPending_ = false;
         steps = 1;
@@ -18,6 +19,7 @@ int SimClock::advance(double elapsedSeconds) {
     const auto due = std::int64_t(accumulated_ / period);
     accumulated_ -= double(due) * period;
     // A frame that took too long drops steps instead of trying to catch up (no spiral of death).
+    capped_ = due > settings_.maxStepsPerFrame;
     return steps + int(std::min<std::int64_t>(due, settings_.maxStepsPerFrame));
 }
 

@@ -3,6 +3,7 @@
 #include "scene/mesh_loader.hpp"
 
 #include "sandcore/cell_grid.hpp"
+#include "sandcore/scene_geometry.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -26,17 +27,17 @@ std::string sizeText(sandcore::Int3 s) {
 
 } // namespace
 
-std::uint64_t estimateModelBytes(ModelUse use, sandcore::Int3 g) {
-    const auto cells = std::uint64_t(g.x) * std::uint64_t(g.y) * std::uint64_t(g.z);
+namespace {
+// The memory a use of a model grid needs, from the library that allocates it.
+std::uint64_t bytesFor(ModelUse use, sandcore::Int3 g) {
     switch (use) {
-    case ModelUse::MaskOnly: return cells * 2; // mask + robust votes
-    // Per model cell: two layouts and two live grids of 4 bytes, masks, and up to one grain of ~32 bytes.
-    case ModelUse::Hourglass: return cells * 48;
-    // The grids cover 4 + 8 model volumes, each as layout and live grid; grains fill the model.
-    case ModelUse::Sculpture: return cells * (12 * 8 + 32 + 4);
+    case ModelUse::MaskOnly: return sandcore::estimateMaskBytes(g);
+    case ModelUse::Hourglass: return sandcore::estimateSceneBytes(sandcore::SceneKind::Hourglass, g);
+    case ModelUse::Sculpture: return sandcore::estimateSceneBytes(sandcore::SceneKind::Sculpture, g);
     }
-    return cells * 48;
+    return sandcore::estimateSceneBytes(sandcore::SceneKind::Sculpture, g);
 }
+} // namespace
 
 std::uint64_t availableMemoryBytes() {
     std::ifstream meminfo("/proc/meminfo");
@@ -60,8 +61,10 @@ ModelVoxelization voxelizeModelFile(const std::string& path, const sandcore::Vox
     try {
         const sandcore::VoxelPlacement placement = sandcore::placeInGrid(mesh, settings);
         const sandcore::Int3 g = placement.size;
-        if (use == ModelUse::Sculpture) sandcore::validateGridSize({2 * g.x, 2 * g.y, 2 * g.z});
-        const std::uint64_t needed = estimateModelBytes(use, g);
+        if (use != ModelUse::MaskOnly)
+            sandcore::validateSceneGridSizes(use == ModelUse::Hourglass ? sandcore::SceneKind::Hourglass
+                                                                        : sandcore::SceneKind::Sculpture, g);
+        const std::uint64_t needed = bytesFor(use, g);
         const std::uint64_t limit = memoryLimit != 0 ? memoryLimit : availableMemoryBytes();
         if (limit != 0 && needed > limit)
             throw ModelError(path, "too large for memory at resolution " + std::to_string(settings.resolution) +

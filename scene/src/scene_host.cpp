@@ -10,7 +10,7 @@ using Clock = std::chrono::steady_clock;
 constexpr double kRateWindowSeconds = 1.0;
 } // namespace
 
-void StepRateMeter::addFrame(double elapsedSeconds, int steps) {
+void StepRateMeter::addFrame(double elapsedSeconds, double steps) {
     if (!(elapsedSeconds >= 0.0)) return;
     frames_.push_back({elapsedSeconds, steps});
     seconds_ += elapsedSeconds;
@@ -23,15 +23,16 @@ void StepRateMeter::addFrame(double elapsedSeconds, int steps) {
     }
 }
 
-double StepRateMeter::stepsPerSecond() const { return seconds_ > 0.0 ? double(steps_) / seconds_ : 0.0; }
+double StepRateMeter::stepsPerSecond() const { return seconds_ > 0.0 ? steps_ / seconds_ : 0.0; }
 
 void StepRateMeter::clear() {
     frames_.clear();
     seconds_ = 0.0;
-    steps_ = 0;
+    steps_ = 0.0;
 }
 
 SceneHost::SceneHost(const SceneSettings& settings) {
+    clock_.setMaxStepsPerFrame(kMaxStepsPerFrame);
     SceneSettings checked = settings;
     applySceneDefaults(checked);
     adopt(buildScene(checked), checked);
@@ -127,8 +128,9 @@ void SceneHost::setRunning(bool running) {
 }
 
 int SceneHost::advance(double elapsedSeconds) {
+    const double fractionBefore = clock_.stepFraction();
     const int due = clock_.advance(elapsedSeconds);
-    rate_.addFrame(elapsedSeconds, due);
+    rate_.addFrame(elapsedSeconds, double(due) + clock_.stepFraction() - fractionBefore);
     if (due == 0) return 0;
     const auto start = Clock::now();
     for (int i = 0; i < due; ++i) scene_->step();
@@ -151,6 +153,14 @@ void SceneHost::reset() {
     scene_->reset();
     lastStepOutsideClock_ = false;
     ++contentRevision_;
+}
+
+bool SceneHost::flip() {
+    if (!scene_->flip()) return false;
+    lastStepOutsideClock_ = true; // the grains sit in their new cells; the view turns instead
+    ++contentRevision_;
+    ++layoutRevision_;
+    return true;
 }
 
 float SceneHost::displayStepFraction() const {

@@ -4,6 +4,7 @@
 
 #include "sandcore/mask_cleanup.hpp"
 #include "sandcore/procedural_shapes.hpp"
+#include "sandcore/scene_geometry.hpp"
 #include "sandcore/scenes.hpp"
 
 #include <algorithm>
@@ -130,14 +131,11 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
     const sandcore::StepSettings& step = checked.step;
     const int resolution = request.resolution;
     if (request.kind == SceneKind::Canvas) {
-        sandcore::CanvasSettings canvas;
-        canvas.upperSize = {resolution, std::max(2, resolution / 6), resolution};
-        canvas.lowerSize = {resolution, std::max(2, resolution * 2 / 3), resolution};
-        const auto cells = std::uint64_t(resolution) * std::uint64_t(resolution) *
-                           std::uint64_t(canvas.upperSize.y + canvas.lowerSize.y);
-        sandcore::validateGridSize(canvas.lowerSize);
-        // Layout and live grid (4 bytes each) per cell, and room for the sand a user pours.
-        requireMemory("the canvas is", resolution, cells * 12, request.memoryLimit);
+        const sandcore::Int3 width{resolution, resolution, resolution};
+        sandcore::validateSceneGridSizes(SceneKind::Canvas, width);
+        requireMemory("the canvas is", resolution, sandcore::estimateSceneBytes(SceneKind::Canvas, width),
+                      request.memoryLimit);
+        const sandcore::CanvasSettings canvas = sandcore::canvasSettingsForWidth(resolution);
         return {sandcore::makeCanvasScene(canvas, step), std::nullopt, 0};
     }
     const bool hourglass = request.kind == SceneKind::Hourglass;
@@ -148,9 +146,9 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
         const std::string shape = !request.shape.empty() ? request.shape : hourglass ? "hourglass" : "sphere";
         requireKnownShape(shape);
         const sandcore::Int3 size = proceduralMaskSize(shape, resolution);
-        sandcore::validateGridSize(size);
-        requireMemory("the " + shape + " is", resolution,
-                      estimateModelBytes(hourglass ? ModelUse::Hourglass : ModelUse::Sculpture, size), request.memoryLimit);
+        sandcore::validateSceneGridSizes(request.kind, size);
+        requireMemory("the " + shape + " is", resolution, sandcore::estimateSceneBytes(request.kind, size),
+                      request.memoryLimit);
         const sandcore::InsideMask mask = makeProceduralMask(shape, resolution, request.neckRadius);
         if (!hourglass) return {sandcore::makeSculptureScene(mask, step), std::nullopt, 0};
         return {sandcore::makeHourglassScene(mask, settings, step), std::nullopt, 0};

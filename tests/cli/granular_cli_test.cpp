@@ -38,7 +38,7 @@ TEST_CASE("simulate --physics granular --trace writes one row per step and keeps
     CHECK(moves == 0); // the last step moved nothing: settled
 }
 
-TEST_CASE("granular and classic give different hashes; granular's repeats with 1 and 2 threads") {
+TEST_CASE("granular and classic give different hashes, and granular repeats with 1 and 2 threads and a full sweep") {
     const std::string base = "simulate --scene sculpture --res 16 --steps 80 --seed 5 --json";
     const auto classic = nlohmann::json::parse(runSandglass(base).out);
     const auto one = nlohmann::json::parse(runSandglass(base + " --physics granular").out);

@@ -86,7 +86,7 @@ TEST_CASE("scene host: seed and threads change without a rebuild, and threads ne
     CHECK(one.scene().stateHash() != two.scene().stateHash()); // the new seed steered the slips
 }
 
-TEST_CASE("scene host: a failed build keeps the running scene; the last of several requests wins") {
+TEST_CASE("scene host: a failed build keeps the running scene, and the last of several requests wins") {
     SceneHost host(procedural("hourglass", 24));
     const std::uint64_t hash = host.scene().stateHash();
     SceneSettings broken = procedural("hourglass", 24);

@@ -56,7 +56,7 @@ TEST_CASE("input: a drag over an ImGui panel leaves the camera where it was") {
     OrbitCamera camera = framedCamera();
     const OrbitCamera before = camera;
     for (MouseButton button : {MouseButton::Left, MouseButton::Middle, MouseButton::Right})
-        CHECK_FALSE(applyMouseDrag(overPanel, button, true, 25.0f, -12.0f, 300.0f, camera));
+        CHECK_FALSE(applyMouseDrag(overPanel, button, true, true, 25.0f, -12.0f, 300.0f, camera));
     CHECK_FALSE(applyScroll(overPanel, 2.0f, camera));
     CHECK(sameView(camera, before));
 }
@@ -66,22 +66,35 @@ TEST_CASE("input: the same Alt drag over the scene moves the camera") {
     REQUIRE_FALSE(overScene.mouse);
     OrbitCamera camera = framedCamera();
     const OrbitCamera before = camera;
-    CHECK(applyMouseDrag(overScene, MouseButton::Left, true, 25.0f, -12.0f, 300.0f, camera));
+    CHECK(applyMouseDrag(overScene, MouseButton::Left, true, true, 25.0f, -12.0f, 300.0f, camera));
     CHECK(camera.yaw() != before.yaw());
     OrbitCamera panned = before;
-    CHECK(applyMouseDrag(overScene, MouseButton::Middle, true, 25.0f, 0.0f, 300.0f, panned));
+    CHECK(applyMouseDrag(overScene, MouseButton::Middle, true, true, 25.0f, 0.0f, 300.0f, panned));
     CHECK(panned.target() != before.target());
     OrbitCamera zoomed = before;
-    CHECK(applyMouseDrag(overScene, MouseButton::Right, true, 0.0f, 40.0f, 300.0f, zoomed));
+    CHECK(applyMouseDrag(overScene, MouseButton::Right, true, true, 0.0f, 40.0f, 300.0f, zoomed));
     CHECK(zoomed.distance() > before.distance());
     CHECK(applyScroll(overScene, 1.0f, zoomed));
 }
 
-TEST_CASE("input: without Alt the mouse never moves the camera (thesis §3.6)") {
+TEST_CASE("input: where the left button paints, only Alt drags move the camera (thesis §3.6)") {
     OrbitCamera camera = framedCamera();
     const OrbitCamera before = camera;
-    CHECK_FALSE(applyMouseDrag({}, MouseButton::Left, false, 30.0f, 30.0f, 300.0f, camera));
+    for (MouseButton button : {MouseButton::Left, MouseButton::Middle, MouseButton::Right})
+        CHECK_FALSE(applyMouseDrag({}, button, false, true, 30.0f, 30.0f, 300.0f, camera));
     CHECK(sameView(camera, before));
+}
+
+TEST_CASE("input: where the left button does not paint, a plain drag rotates, pans and zooms") {
+    const OrbitCamera before = framedCamera();
+    OrbitCamera rotated = before, panned = before, zoomed = before;
+    CHECK(applyMouseDrag({}, MouseButton::Left, false, false, 30.0f, 10.0f, 300.0f, rotated));
+    CHECK(rotated.yaw() != before.yaw());
+    CHECK(applyMouseDrag({}, MouseButton::Middle, false, false, 30.0f, 0.0f, 300.0f, panned));
+    CHECK(panned.target() != before.target());
+    CHECK(applyMouseDrag({}, MouseButton::Right, false, false, 0.0f, 40.0f, 300.0f, zoomed));
+    CHECK(zoomed.distance() > before.distance());
+    CHECK(keyCommand({}, GLFW_KEY_T) == KeyCommand::Flip);
 }
 
 TEST_CASE("input: keys act only when ImGui does not want the keyboard") {

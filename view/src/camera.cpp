@@ -54,7 +54,13 @@ glm::vec3 OrbitCamera::right() const { return {std::cos(yaw_), 0.0f, -std::sin(y
 
 glm::vec3 OrbitCamera::up() const { return glm::normalize(glm::cross(right(), target_ - position())); }
 
-glm::mat4 OrbitCamera::view() const { return glm::lookAt(position(), target_, up()); }
+glm::mat4 OrbitCamera::view() const {
+    const glm::mat4 look = glm::lookAt(position(), target_, up());
+    if (turn_ == 0.0f) return look;
+    // The scene turns about the screen-right axis through its centre, as a hand turns an hourglass.
+    return look * glm::translate(glm::mat4(1.0f), home_) * glm::rotate(glm::mat4(1.0f), turn_, right()) *
+           glm::translate(glm::mat4(1.0f), -home_);
+}
 
 glm::mat4 OrbitCamera::projection(float aspect) const {
     const float nearPlane = std::max(distance_ - 2.0f * radius_, 0.01f * radius_);

@@ -6,9 +6,9 @@
 
 namespace sandglass {
 
-bool applyMouseDrag(const InputCapture& capture, MouseButton button, bool altHeld, float dxPixels, float dyPixels,
-                    float viewportHeightPixels, OrbitCamera& camera) {
-    if (capture.mouse || !altHeld || (dxPixels == 0.0f && dyPixels == 0.0f)) return false;
+bool applyMouseDrag(const InputCapture& capture, MouseButton button, bool altHeld, bool leftPaints, float dxPixels,
+                    float dyPixels, float viewportHeightPixels, OrbitCamera& camera) {
+    if (capture.mouse || (leftPaints && !altHeld) || (dxPixels == 0.0f && dyPixels == 0.0f)) return false;
     switch (button) {
     case MouseButton::Left: camera.rotate(-dxPixels * kRadiansPerPixel, dyPixels * kRadiansPerPixel); return true;
     case MouseButton::Middle: {
@@ -36,6 +36,7 @@ KeyCommand keyCommand(const InputCapture& capture, int glfwKey, int glfwModifier
     case GLFW_KEY_B: return KeyCommand::RunBenchmark;
     case GLFW_KEY_ESCAPE: return KeyCommand::Quit;
     case GLFW_KEY_P: return KeyCommand::Screenshot;
+    case GLFW_KEY_T: return KeyCommand::Flip;
     case GLFW_KEY_LEFT: return KeyCommand::RotateLeft;
     case GLFW_KEY_RIGHT: return KeyCommand::RotateRight;
     case GLFW_KEY_UP: return KeyCommand::RotateUp;

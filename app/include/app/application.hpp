@@ -11,8 +11,10 @@
 #include "view/render/scene_renderer.hpp"
 #include "view/window.hpp"
 
+#include "scene/hourglass_timer.hpp"
 #include "scene/scene_host.hpp"
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -98,6 +100,10 @@ private:
     void frameCamera();
     void drawHost(SceneHost& host, const RenderSettings& render);
     void updateStatistics(double elapsedSeconds);
+    void updateTimer();
+    void updateTurnAnimation();
+    void drawOverlays();
+    void drawBrushOutline();
     void saveScreenshot(const std::filesystem::path& file);
     void runInteractiveBenchmark();
 
@@ -109,7 +115,9 @@ private:
     SceneRenderer renderer_;
     SceneHost host_;
     CanvasController canvas_;
+    HourglassTimer timer_;
     OrbitCamera camera_;
+    std::optional<std::chrono::steady_clock::time_point> turnStarted_; // the view turns after a flip
     // Which host's grains and layout the renderer holds, so it is told only of real changes.
     const SceneHost* drawnHost_ = nullptr;
     std::uint64_t drawnContent_ = 0, drawnLayout_ = 0;

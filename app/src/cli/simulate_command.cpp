@@ -5,6 +5,7 @@
 #include "app/cli/scene_options.hpp"
 #include "scene/file_io.hpp"
 #include "scene/hex.hpp"
+#include "scene/hourglass_timer.hpp"
 #include "scene/scene_request.hpp"
 #include "scene/statistics.hpp"
 
@@ -34,6 +35,8 @@ struct SimulateOptions {
     std::int64_t maxSteps = 10'000'000;
     bool fullSweep = false;
     std::int64_t pour = 0;
+    std::vector<std::int64_t> flipAt;
+    double duration = 0.0;
     bool json = false;
     std::string trace; // CSV file: one row per step (SPEC PH7)
 };
@@ -59,6 +62,21 @@ int runSimulate(const SimulateOptions& options) {
                                         std::to_string(std::max<std::int64_t>(room, 0)) + " grains at --res " +
                                         std::to_string(settings.request.resolution));
     }
+    // The timer: the drain of this very scene is predicted and the rate set to fit the duration.
+    std::int64_t drainSteps = 0;
+    double stepsPerSecondSet = 0.0;
+    if (options.duration > 0.0) {
+        drainSteps = predictDrainSteps(scene);
+        stepsPerSecondSet = double(drainSteps) / options.duration;
+    }
+    std::vector<std::int64_t> flips = options.flipAt;
+    std::sort(flips.begin(), flips.end());
+    std::size_t nextFlip = 0;
+    auto flipDue = [&](std::int64_t afterStep) {
+        for (; nextFlip < flips.size() && flips[nextFlip] == afterStep; ++nextFlip)
+            if (!scene.flip()) throw std::invalid_argument("--flip-at turns an hourglass; this scene cannot be turned");
+    };
+    flipDue(0);
     const std::int64_t steps = options.steps >= 0 ? options.steps : 1000;
     const std::int64_t stepLimit = options.untilSettled ? options.maxSteps : steps;
     const std::uint32_t pourAt = sandcore::pourCell(scene);
@@ -80,6 +98,7 @@ int runSimulate(const SimulateOptions& options) {
             trace += std::to_string(c.stepsDone) + ',' + std::to_string(c.grainsUpper) + ',' +
                      std::to_string(c.grainsLower) + ',' + std::to_string(c.movesLastStep) + '\n';
         }
+        flipDue(done);
         if (options.untilSettled && poured >= options.pour && scene.settled()) break;
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -108,6 +127,12 @@ int runSimulate(const SimulateOptions& options) {
         out["grains_upper"] = scene.counters().grainsUpper;
         out["grains_lower"] = scene.counters().grainsLower;
         if (options.pour > 0) out["poured"] = poured;
+        if (!flips.empty()) out["flips"] = nextFlip;
+        if (options.duration > 0.0) {
+            out["drain_steps"] = drainSteps;
+            out["steps_per_second_set"] = stepsPerSecondSet;
+            out["drain_seconds"] = double(done) / stepsPerSecondSet;
+        }
         std::cout << out.dump() << "\n";
         return 0;
     }
@@ -121,6 +146,10 @@ int runSimulate(const SimulateOptions& options) {
     std::printf("%.3f s, %.1f steps/s, median %.3f ms per step, %d thread(s), %s\n", seconds, stepsPerSecond,
                 stepMilliseconds.median(), threads, options.fullSweep ? "full sweep" : "sleeping grains skipped");
     std::printf("physics %s\n", std::string(sandcore::physicsLevelName(settings.step.physics.level)).c_str());
+    if (options.duration > 0.0)
+        std::printf("timer %.1f s: the drain takes %lld steps, so %.3f steps/s; these %lld steps last %.2f s\n",
+                    options.duration, (long long)drainSteps, stepsPerSecondSet, (long long)done,
+                    double(done) / stepsPerSecondSet);
     std::printf("state hash %s\n", hash.c_str());
     return 0;
 }
@@ -140,6 +169,11 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("--full-sweep", options->fullSweep, "visit every cell each step (same result, slower)");
     addNumberOption(*cmd, "--pour", options->pour, std::int64_t{0}, std::int64_t{1} << 31,
                     "canvas: release one grain per step at the centre of the top, N grains in all");
+    addNumberListOption(*cmd, "--flip-at", options->flipAt, std::int64_t{0}, kMaxSteps,
+                        "turn the hourglass over after this step (repeatable; twice at one step turns it back)")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    addNumberOption(*cmd, "--duration", options->duration, 0.001, 1e7,
+                    "timer: predict the drain's steps and set the rate so it lasts this many seconds");
     cmd->add_flag("--json", options->json, "print one JSON object");
     cmd->add_option("--trace", options->trace, "write FILE.csv with one row per step: step,grains_upper,grains_lower,moves");
     cmd->callback([options, &exitCode] { exitCode = runSimulate(*options); });

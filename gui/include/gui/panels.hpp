@@ -12,6 +12,8 @@ void drawPanels(AppState& state);
 
 /// Thesis §3.7 "Kontrolle": simulation on/off, reset, single step, exit.
 void drawControlSection(AppState& state);
+/// The hourglass as a timer: a duration in minutes:seconds and Start, or elapsed and remaining time.
+void drawTimer(AppState& state);
 /// Thesis §3.7 "Darstellung": grains per cell, background, mode, lighting, inner grains; sizes, jitter, hull.
 void drawDisplaySection(AppState& state);
 /// SPEC G2: scene kind, shape or model file, resolution, seed, threads, rebuild.

@@ -56,6 +56,7 @@ struct SceneSnapshot {
     SceneCounters counters;                ///< R14 counters
     std::vector<CellBox> upperObstacles;   ///< obstacles of the upper grid
     std::vector<CellBox> lowerObstacles;   ///< obstacles of the lower grid
+    bool flipped = false;                  ///< the hourglass was turned over an odd number of times
 };
 
 /// Two grids of sand and the step that moves it: the library's main object. Movable, not copyable.
@@ -100,6 +101,16 @@ public:
     /// Granular hourglass only: grains per step the neck lets through (PH4), else 0.
     double neckFlowRate() const;
 
+    /// Turns the hourglass over (T1): the sand becomes the exact mirror in y of what it was,
+    /// the lower grid becomes the upper and the upper the lower, every grain keeps its identity
+    /// and colour, and the drain goes on. Two flips with no step between give back the same
+    /// state. Returns false (and changes nothing) for a sculpture or a canvas.
+    bool flip();
+    /// True after an odd number of flips; reset() turns the hourglass upright again.
+    bool flipped() const { return flipped_; }
+    /// An independent copy of the scene in its current state: the same later steps, the same hash.
+    Scene clone() const;
+
     /// The whole state, for undo.
     SceneSnapshot snapshot() const;
     /// Returns to a state taken by snapshot() of this scene: the state hash and every later
@@ -128,6 +139,8 @@ private:
     void markEverythingAwake();
     void configurePhysics();
     void transitionGranular();
+    void flipLayouts();
+    void makeSweeps();
 
     SceneKind kind_;
     StepSettings settings_;
@@ -138,6 +151,7 @@ private:
     GrainStore grains_;
     std::uint32_t nextIdentity_ = 0;
     SceneCounters counters_;
+    bool flipped_ = false;
     std::unique_ptr<GridSweep> upperSweep_, lowerSweep_;
     std::unique_ptr<WorkerPool> pool_;
     std::unique_ptr<GranularRules> granular_; // null: classic

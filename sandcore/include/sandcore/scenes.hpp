@@ -11,7 +11,7 @@ namespace sandcore {
 /// R10 hourglass options.
 struct HourglassSettings {
     float fillFraction = 0.85f;   ///< share of the upper bulb's cells filled at reset, from the neck up (0..1]
-    bool drainCompletely = true;  ///< S3: carve the upper bulb with removeSharpEdges so no sand stays behind
+    bool drainCompletely = true;  ///< S3: carve both bulbs with removeSharpEdges (the lower one upside down) so no sand stays behind, turned over or not
 };
 
 /// An empty canvas (MODE_PAINT). Throws std::invalid_argument for invalid sizes or unequal x/z.

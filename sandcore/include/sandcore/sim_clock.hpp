@@ -27,12 +27,19 @@ public:
     double stepsPerSecond() const { return settings_.stepsPerSecond; } ///< current rate
     /// Changes the rate; non-positive or non-finite rates are ignored.
     void setStepsPerSecond(double stepsPerSecond);
+    int maxStepsPerFrame() const { return settings_.maxStepsPerFrame; } ///< the cap of steps per advance
+    /// Changes the cap of steps per advance (at least 1).
+    void setMaxStepsPerFrame(int steps) { settings_.maxStepsPerFrame = steps < 1 ? 1 : steps; }
+    /// True when the last advance had more steps due than the cap and dropped the rest, so the
+    /// simulation ran slower than its rate.
+    bool capped() const { return capped_; }
 
 private:
     ClockSettings settings_;
     double accumulated_ = 0.0; // seconds not yet turned into steps
     bool running_ = false;
     bool singleStepPending_ = false;
+    bool capped_ = false;
 };
 
 } // namespace sandcore

@@ -15,7 +15,7 @@ namespace sandglass {
 enum class ModelUse : std::uint8_t {
     MaskOnly,  ///< `sandglass voxelize`: the inside mask alone
     Hourglass, ///< upper and lower grids of the vessel's size
-    Sculpture, ///< grids twice as wide and deep (and the lower twice as high) as the model
+    Sculpture, ///< the sculpture's grids (sandcore::sceneGridSizes)
 };
 
 /// A voxelized model file and what the user is shown about it (C2, G2).
@@ -25,9 +25,6 @@ struct ModelVoxelization {
     sandcore::VoxelizeResult voxels; ///< mask, placement, closedness, volumes
     double milliseconds = 0.0;       ///< time of the voxelization alone (not loading), ms
 };
-
-/// Bytes a model grid of this size needs for `use`, a generous estimate (grids, masks, grains).
-std::uint64_t estimateModelBytes(ModelUse use, sandcore::Int3 modelGrid);
 
 /// Memory this process may still use, bytes: MemAvailable from /proc/meminfo, else physical memory.
 std::uint64_t availableMemoryBytes();

@@ -29,19 +29,20 @@ struct BuildOutcome {
 /// that ran no step count too, so the readout is the true rate).
 class StepRateMeter {
 public:
-    /// Records that `steps` steps ran in a frame that took `elapsedSeconds`.
-    void addFrame(double elapsedSeconds, int steps);
+    /// Records that a frame of `elapsedSeconds` advanced the simulation by `steps` steps (whole
+    /// steps run plus the change of the glide's fraction, so the rate has no rounding steps).
+    void addFrame(double elapsedSeconds, double steps);
     double stepsPerSecond() const; ///< steps over the window's wall time; 0 before any time passed
     void clear();                  ///< forget the history (after a pause or a new scene)
 
 private:
     struct Frame {
         double seconds;
-        int steps;
+        double steps;
     };
     std::deque<Frame> frames_;
     double seconds_ = 0.0;
-    std::int64_t steps_ = 0;
+    double steps_ = 0.0;
 };
 
 class SceneHost {
@@ -86,6 +87,12 @@ public:
     void runSteps(int steps);
     /// R10 reset: refills the scene; the clock keeps running or not as it was.
     void reset();
+    /// Turns the hourglass over (T1); false for a sculpture or a canvas.
+    bool flip();
+    /// Steps the clock may run in one frame to keep its rate when frames are slow.
+    static constexpr int kMaxStepsPerFrame = 64;
+    /// True when the last frame had more steps due than kMaxStepsPerFrame: the rate was not kept.
+    bool rateCapped() const { return clock_.capped(); }
 
     /// Share (0..1) of the last step's glide that frames draw now: the clock's fraction while it
     /// runs the steps, 1 (grains at their new cells) after steps made outside it.

@@ -49,6 +49,9 @@ enum class Command {
     LoadDraft,         ///< load PaintingSettings::draftPath as the draft
     AddObstacle,       ///< add the box PaintingSettings::obstacleMin/Max to the canvas's lower grid
     ClearObstacles,    ///< remove every obstacle of the canvas
+    Flip,              ///< turn the hourglass over (T)
+    StartTimer,        ///< set the timer to TimerSettings::minutes:seconds on the sand as it is
+    StopTimer,         ///< stop the timer
 };
 
 /// Commands in the order they were raised.
@@ -66,6 +69,17 @@ private:
     std::vector<Command> commands_;
 };
 
+/// The hourglass as a timer: the duration chosen and where the timer stands.
+struct TimerState {
+    int minutes = 1;            ///< duration chosen, minutes part
+    int seconds = 0;            ///< duration chosen, seconds part (0..59)
+    bool set = false;           ///< a timer runs (or is being predicted)
+    bool predicting = false;    ///< the drain is being measured on a worker thread
+    bool finished = false;      ///< the sand has run out: time is up
+    double elapsedSeconds = 0;  ///< sand run since the start, s
+    double remainingSeconds = 0; ///< until the sand on top has run out, s
+};
+
 /// Numbers for the statistics panel, refreshed every frame.
 struct FrameStatistics {
     static constexpr int kHistory = 180;          ///< frames kept for the plot
@@ -75,6 +89,8 @@ struct FrameStatistics {
     float millisecondsPerFrame = 0.0f;            ///< smoothed frame time, ms
     float millisecondsPerStep = 0.0f;             ///< smoothed wall time of one simulation step, ms
     float stepsPerSecond = 0.0f;                  ///< steps actually run per second of wall time
+    bool rateCapped = false;                      ///< the last frame could not run every step due (too slow)
+    int maxStepsPerFrame = 0;                     ///< the cap of steps per frame
     std::int64_t grains = 0;                      ///< grains in the scene
     std::int64_t grainsUpper = 0;                 ///< filled cells of the upper grid
     std::int64_t grainsLower = 0;                 ///< filled cells of the lower grid
@@ -90,6 +106,7 @@ struct AppState {
     SceneSettings loaded;           ///< what the running scene was built from (set when a build is adopted)
     RenderSettings render;          ///< how grains are drawn
     PaintingSettings painting;      ///< canvas painting options
+    TimerState timer;               ///< the hourglass as a timer
     bool simulationRunning = false; ///< thesis default: simulation off
     double stepsPerSecond = 30.0;   ///< flow speed (R9)
     bool showGui = true;            ///< Space hides the panels

@@ -37,6 +37,10 @@ public:
     void setLensShift(float share) { lensShift_ = share; }
     float lensShift() const { return lensShift_; } ///< share of the target's width
     float verticalFieldOfView() const { return fovY_; } ///< radians
+    /// Turns the scene about the screen's horizontal axis through its centre by `radians` in
+    /// the view (pi = upside down): the turning hourglass animation.
+    void setTurn(float radians) { turn_ = radians; }
+    float turn() const { return turn_; } ///< radians
 
 private:
     glm::vec3 target_{0.0f};
@@ -45,6 +49,7 @@ private:
     float radius_ = 1.0f;
     float fovY_ = 0.6981f; // 40 degrees
     float lensShift_ = 0.0f;
+    float turn_ = 0.0f;
 };
 
 } // namespace sandglass

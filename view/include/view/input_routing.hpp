@@ -25,6 +25,7 @@ enum class KeyCommand {
     Quit,              ///< Esc
     Screenshot,        ///< P
     Undo,              ///< Ctrl+Z: take back the last stroke (P7)
+    Flip,              ///< T: turn the hourglass over
     RotateLeft, RotateRight, RotateUp, RotateDown, ///< arrow keys
     ZoomIn, ZoomOut,   ///< + and -
     ViewPerspective,   ///< 1
@@ -35,11 +36,12 @@ enum class KeyCommand {
 /// Rotation per pixel of Alt + left drag, radians.
 inline constexpr float kRadiansPerPixel = 0.008f;
 
-/// Applies a mouse move of (dx, dy) pixels with `button` held to the camera: Alt + left rotates,
-/// Alt + middle pans, Alt + right zooms. Returns true when the camera moved; never when ImGui
-/// wants the mouse or Alt is not held.
-bool applyMouseDrag(const InputCapture& capture, MouseButton button, bool altHeld, float dxPixels, float dyPixels,
-                    float viewportHeightPixels, OrbitCamera& camera);
+/// Applies a mouse move of (dx, dy) pixels with `button` held to the camera: left rotates,
+/// middle pans, right zooms. Where the left button paints (the canvas) these need Alt held;
+/// elsewhere a plain drag does it. Returns true when the camera moved; never when ImGui wants
+/// the mouse.
+bool applyMouseDrag(const InputCapture& capture, MouseButton button, bool altHeld, bool leftPaints, float dxPixels,
+                    float dyPixels, float viewportHeightPixels, OrbitCamera& camera);
 /// Mouse wheel zoom by `wheelSteps` notches (positive = closer); false when ImGui wants the mouse.
 bool applyScroll(const InputCapture& capture, float wheelSteps, OrbitCamera& camera);
 /// The command of a GLFW key press (GLFW_KEY_*, modifiers GLFW_MOD_*); None when ImGui wants the keyboard.

@@ -176,7 +176,7 @@ TEST_CASE("scaling keeps the aspect ratio unless stretched, and centres the mode
     CHECK(odd.padding[1] == doctest::Approx(0.125)); // 3.75 cells of model centred in 4
 }
 
-TEST_CASE("robust mode repairs a sphere with a hole below the hole's rim; plain parity does not") {
+TEST_CASE("robust mode repairs a sphere with a hole below the hole's rim, and plain parity does not") {
     // Radius 15 about (16, 16, 16) in a 32^3 grid, placed directly so the hole cannot move the bounds.
     TriangleMesh sphere = makeIcosphereMesh(3, 15.0f);
     for (Vec3& v : sphere.vertices) v = {v.x + 16.0f, v.y + 16.0f, v.z + 16.0f};

@@ -118,7 +118,7 @@ TEST_CASE("granular: switching sleeping off and on mid-run keeps the result") {
     }
 }
 
-TEST_CASE("granular: recorded state hashes; classic's stay as they were") {
+TEST_CASE("granular: recorded state hashes (classic's stay in determinism_test.cpp)") {
     // If a deliberate change of the granular rules moves these values, record the new ones and
     // say why in the commit. Classic's recorded hashes live in test_determinism.cpp.
     Scene hourglass = granularHourglass(7);
@@ -170,4 +170,23 @@ TEST_CASE("physics settings: ranges, names and gravity from a cell size") {
     Scene scene = makeCanvasScene();
     CHECK_THROWS_AS(scene.setPhysics(bad), std::invalid_argument);
     CHECK(scene.settings().physics.level == PhysicsLevel::Classic); // unchanged by the refused call
+}
+
+TEST_CASE("granular: a turned hourglass drains the other way, as a full sweep does, through the same neck") {
+    Scene sleeping = granularHourglass(6), full = granularHourglass(6);
+    full.setSleeping(false);
+    const double rate = sleeping.neckFlowRate();
+    const std::int64_t grains = sleeping.grainCount();
+    for (int i = 0; i < 400; ++i) {
+        if (i == 150) {
+            REQUIRE(sleeping.flip());
+            REQUIRE(full.flip());
+        }
+        sleeping.step();
+        full.step();
+        REQUIRE(sleeping.stateHash() == full.stateHash());
+    }
+    CHECK(sleeping.neckFlowRate() == doctest::Approx(rate)); // the neck row is the same row, turned
+    CHECK(sleeping.grainCount() == grains);
+    CHECK(sleeping.counters().grainsUpper + sleeping.counters().grainsLower == grains);
 }

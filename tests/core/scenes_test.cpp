@@ -56,7 +56,7 @@ TEST_CASE("sculpture: upper grid twice as wide and deep, lower twice as wide, de
     CHECK(scene.counters().grainsUpper == 0); // collapsed onto the lower grid's floor
 }
 
-TEST_CASE("canvas: both grids EMPTY; a poured grain lands on the floor") {
+TEST_CASE("canvas: both grids EMPTY, and a poured grain lands on the floor") {
     Scene scene = makeCanvasScene();
     CHECK(scene.grid(GridLevel::Upper).size() == Int3{60, 10, 60});
     CHECK(scene.grid(GridLevel::Lower).size() == Int3{60, 40, 60});
@@ -88,7 +88,7 @@ TEST_CASE("obstacles: sand piles on and beside them, never inside") {
     CHECK(scene.grainCount() == 900);
 }
 
-TEST_CASE("an obstacle placed over sand removes those grains; clearing it frees the cells") {
+TEST_CASE("an obstacle placed over sand removes those grains, and clearing it frees the cells") {
     Scene scene = fixtures::boxScene({6, 4, 6});
     for (int x = 0; x < 6; ++x) fixtures::putLower(scene, x, 0, 2);
     CHECK(scene.addObstacle(GridLevel::Lower, {{1, 0, 0}, {3, 2, 6}}) == 2);

@@ -39,7 +39,7 @@ TEST_CASE("a slow frame drops steps beyond the per-frame limit") {
     CHECK(clock.stepFraction() < 1.0);
 }
 
-TEST_CASE("single step works while paused; bad rates are ignored") {
+TEST_CASE("single step works while paused, and bad rates are ignored") {
     SimClock clock;
     clock.requestSingleStep();
     CHECK(clock.advance(0.0) == 1);
@@ -49,4 +49,15 @@ TEST_CASE("single step works while paused; bad rates are ignored") {
     CHECK(clock.stepsPerSecond() == 30.0);
     clock.setStepsPerSecond(120.0);
     CHECK(clock.stepsPerSecond() == 120.0);
+}
+
+TEST_CASE("sim clock: slow frames run several steps up to the cap, and say when the cap dropped steps") {
+    sandcore::SimClock clock({30.0, 64});
+    clock.setRunning(true);
+    CHECK(clock.advance(1.0 / 3.0) == 10); // 3 frames per second: 10 steps each keep 30 steps/s
+    CHECK_FALSE(clock.capped());
+    CHECK(clock.advance(3.0) == 64); // a 3 s stall: 90 due, 64 run
+    CHECK(clock.capped());
+    clock.setMaxStepsPerFrame(0);
+    CHECK(clock.maxStepsPerFrame() == 1);
 }

@@ -9,7 +9,7 @@
 
 using namespace sandcore;
 
-TEST_CASE("index layout is x fastest, then z, then y; the cell above is one layer on") {
+TEST_CASE("index layout is x fastest, then z, then y, and the cell above is one layer on") {
     const CellGrid grid({4, 3, 5});
     CHECK(grid.layerSize() == 20u);
     CHECK(grid.cellCount() == 60u);

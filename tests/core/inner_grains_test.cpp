@@ -20,7 +20,7 @@ TEST_CASE("in a solid 5x5x5 block of sand only the 3x3x3 core is inner") {
     CHECK(!isInnerCell(grid, grid.index(6, 6, 6)));
 }
 
-TEST_CASE("grid edges and INVALID cells hide a face; EMPTY cells expose it") {
+TEST_CASE("grid edges and INVALID cells hide a face, and EMPTY cells expose it") {
     // A 3x1x3 layer of grains on the floor of a 3x3x3 box: the centre grain's only open face is up.
     Scene scene = fixtures::boxScene({3, 3, 3}, 1, {{1, 2, 1}});
     for (int z = 0; z < 3; ++z)

@@ -1,0 +1,86 @@
+// Turning the hourglass over (T1) and copying a scene. The sand is mirrored in y across both
+// grids: the world height of the two grids together stays, so the shared row stays shared and
+// a cell at world height h goes to height H - 1 - h.
+#include "sandcore/scene.hpp"
+
+#include "grid_sweep.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace sandcore {
+
+namespace {
+
+CellGrid mirroredInY(const CellGrid& grid) {
+    const Int3 size = grid.size();
+    CellGrid out(size, kEmpty);
+    const std::size_t layer = grid.layerSize();
+    for (int y = 0; y < size.y; ++y)
+        std::copy_n(grid.cells().begin() + std::ptrdiff_t(std::size_t(y) * layer), layer,
+                    out.cells().begin() + std::ptrdiff_t(std::size_t(size.y - 1 - y) * layer));
+    return out;
+}
+
+std::vector<CellBox> mirroredInY(const std::vector<CellBox>& boxes, int sizeY) {
+    std::vector<CellBox> out;
+    out.reserve(boxes.size());
+    for (const CellBox& box : boxes)
+        out.push_back({{box.min.x, sizeY - box.max.y, box.min.z}, {box.max.x, sizeY - box.min.y, box.max.z}});
+    return out;
+}
+
+} // namespace
+
+// Layouts, obstacle lists and sweeps turn over; the live grids and grains are the caller's.
+void Scene::flipLayouts() {
+    const int upperHeight = upperLayout_.size().y, lowerHeight = lowerLayout_.size().y;
+    CellGrid upperLayout = mirroredInY(lowerLayout_), lowerLayout = mirroredInY(upperLayout_);
+    std::vector<CellBox> upperObstacles = mirroredInY(lowerObstacles_, lowerHeight);
+    std::vector<CellBox> lowerObstacles = mirroredInY(upperObstacles_, upperHeight);
+    upperLayout_ = std::move(upperLayout);
+    lowerLayout_ = std::move(lowerLayout);
+    upperObstacles_ = std::move(upperObstacles);
+    lowerObstacles_ = std::move(lowerObstacles);
+    makeSweeps();
+    flipped_ = !flipped_;
+}
+
+bool Scene::flip() {
+    if (kind_ != SceneKind::Hourglass) return false;
+    CellGrid upper = mirroredInY(lower_), lower = mirroredInY(upper_);
+    const CellGrid& oldUpper = upper_;
+    const CellGrid& oldLower = lower_;
+    for (std::uint32_t id = 0; id < grains_.size(); ++id) {
+        const bool wasUpper = grains_.level[id] == GridLevel::Upper;
+        const CellGrid& from = wasUpper ? oldUpper : oldLower;
+        const CellGrid& to = wasUpper ? lower : upper;
+        const Int3 c = from.coordinate(grains_.cell[id]);
+        grains_.level[id] = wasUpper ? GridLevel::Lower : GridLevel::Upper;
+        grains_.cell[id] = to.index(c.x, from.size().y - 1 - c.y, c.z);
+        // No glide across the turn: the view's turning animation carries the eye.
+        grains_.cameFrom[id] = kNoMove;
+        grains_.movedAtStep[id] = counters_.stepsDone;
+    }
+    flipLayouts();
+    upper_ = std::move(upper);
+    lower_ = std::move(lower);
+    std::swap(counters_.grainsUpper, counters_.grainsLower);
+    // Turning over stops every fall (granular): what fell down would now fall up.
+    std::fill(grains_.fallSpeed.begin(), grains_.fallSpeed.end(), 0u);
+    std::fill(grains_.fallFraction.begin(), grains_.fallFraction.end(), std::uint16_t{0});
+    // Every grain changed its cell, so the scene is no longer settled.
+    counters_.movesLastStep = grains_.size();
+    markEverythingAwake();
+    return true;
+}
+
+Scene Scene::clone() const {
+    // Built upright, as its fill expects; restore() turns it as this scene is turned.
+    Scene copy(kind_, flipped_ ? mirroredInY(lowerLayout_) : upperLayout_,
+               flipped_ ? mirroredInY(upperLayout_) : lowerLayout_, upperFill_, settings_);
+    copy.restore(snapshot());
+    return copy;
+}
+
+} // namespace sandcore
