@@ -96,6 +96,13 @@ void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
 
 void GridSweep::wakeAroundEmptied(const CellGrid& grid, int x, int y, int z) {
     if (granular_)
+        wakeAroundEmptiedBy<true>(grid, x, y, z);
+    else
+        wakeAroundEmptiedBy<false>(grid, x, y, z);
+}
+
+template <bool Granular> inline void GridSweep::wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z) {
+    if constexpr (Granular)
         wakeForGranular(grid, x, y, z);
     else
         wakePredecessorsOf(x, y, z);
@@ -142,10 +149,10 @@ int GridSweep::awakeRowsInLayer(int y) const {
 }
 
 // The hot path: `inline` keeps it inside the strip loop, which the compiler otherwise declines
-// at -O3 (a call per visited cell costs about a tenth of a step).
+// at -O3 (a call per visited cell costs about a tenth of a step). The thesis's rules only: the
+// granular ones go through visitGranular, chosen once per sweep, so classic pays no test per grain.
 inline bool GridSweep::visitCell(const SweepContext& context, int x, int y, int z) {
     CellGrid& grid = context.grid;
-    if (granular_) return visitGranular(context, x, y, z);
     const std::uint32_t from = grid.index(x, y, z);
     const CellValue grain = grid[from];
     if (grain < 0) return false;
@@ -162,7 +169,7 @@ inline bool GridSweep::visitCell(const SweepContext& context, int x, int y, int 
     grains.movedAtStep[std::size_t(grain)] = context.step;
 
     if (y - 1 > 0 || bottomIsOutlet_) wakeAt(x + target->dx, y - 1, z + target->dz); // it may move on next step
-    wakeAroundEmptied(grid, x, y, z);                                                // the cell it left is free
+    wakeAroundEmptiedBy<false>(grid, x, y, z);                                       // the cell it left is free
     return true;
 }
 
@@ -178,11 +185,13 @@ bool GridSweep::visitGranular(const SweepContext& context, int x, int y, int z) 
     if (outcome.kind != GranularOutcome::Moved) return false;
     const Int3 to = outcome.to;
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
-    wakeAroundEmptied(context.grid, x, y, z);                  // the cell it left is free
+    wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
     return true;
 }
 
-SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip) {
+// The strip loop, instantiated once per rule set: the classic one is main's loop exactly (each
+// word's awake bits taken at once), with no test of the rule set per word or per grain.
+template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip) {
     SweepResult totals;
     const Int3 size = size_;
     const int zEnd = std::min((strip + 1) * kStripRows, size.z);
@@ -190,23 +199,25 @@ SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip)
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size.z) + std::uint32_t(z);
         if (context.sleeping && !rowAwake_[row]) continue;
         rowAwake_[row] = 0;
-        // Moves only wake cells in the layers above and below, never in this row: take its bits
-        // first. Without sleeping, every cell of the row is visited as if awake.
+        // Classic moves only wake cells in the layers above and below, never in this row: take its
+        // bits first. Without sleeping, every cell of the row is visited as if awake.
         std::uint64_t* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
         for (int w = 0; w < rowWords_; ++w) {
-            if (granular_ && context.sleeping) {
-                // Granular moves also wake cells of their own layer (the paths): a bit set ahead
-                // of the cell being visited is visited in this step, one set behind it in the
-                // next, as a full sweep would see the change. So each bit is taken as it is reached.
-                std::uint64_t ahead = ~std::uint64_t{0};
-                while (const std::uint64_t bits = words[w] & ahead) {
-                    const int bit = __builtin_ctzll(bits);
-                    words[w] &= ~(std::uint64_t{1} << bit);
-                    ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
-                    ++totals.visited;
-                    totals.moves += visitCell(context, w * 64 + bit, y, z) ? 1 : 0;
+            if constexpr (Granular) {
+                if (context.sleeping) {
+                    // Granular moves also wake cells of their own layer (the paths): a bit set ahead
+                    // of the cell being visited is visited in this step, one set behind it in the
+                    // next, as a full sweep would see the change. So each bit is taken as it is reached.
+                    std::uint64_t ahead = ~std::uint64_t{0};
+                    while (const std::uint64_t bits = words[w] & ahead) {
+                        const int bit = __builtin_ctzll(bits);
+                        words[w] &= ~(std::uint64_t{1} << bit);
+                        ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
+                        ++totals.visited;
+                        totals.moves += visitGranular(context, w * 64 + bit, y, z) ? 1 : 0;
+                    }
+                    continue;
                 }
-                continue;
             }
             std::uint64_t bits = context.sleeping ? words[w] : wholeWord(w);
             words[w] = 0;
@@ -214,7 +225,10 @@ SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip)
                 const int x = w * 64 + __builtin_ctzll(bits);
                 bits &= bits - 1;
                 ++totals.visited;
-                totals.moves += visitCell(context, x, y, z) ? 1 : 0;
+                if constexpr (Granular)
+                    totals.moves += visitGranular(context, x, y, z) ? 1 : 0;
+                else
+                    totals.moves += visitCell(context, x, y, z) ? 1 : 0;
             }
         }
     }
@@ -222,6 +236,10 @@ SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip)
 }
 
 SweepResult GridSweep::sweep(const SweepContext& context, WorkerPool* pool) {
+    return granular_ ? sweepBy<true>(context, pool) : sweepBy<false>(context, pool);
+}
+
+template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& context, WorkerPool* pool) {
     SweepResult result;
     const Int3 size = size_;
     const int strips = (size.z + kStripRows - 1) / kStripRows;
@@ -238,13 +256,13 @@ SweepResult GridSweep::sweep(const SweepContext& context, WorkerPool* pool) {
         const bool parallel = threaded && awakeRows >= kMinAwakeRowsForThreads;
         for (int phase = 0; phase < 2; ++phase) {
             if (!parallel) {
-                for (int strip = phase; strip < strips; strip += 2) add(sweepStrip(context, y, strip));
+                for (int strip = phase; strip < strips; strip += 2) add(sweepStrip<Granular>(context, y, strip));
                 continue;
             }
             const int count = (strips - phase + 1) / 2;
             pool->parallelFor(count, [&](int i) {
                 const int strip = phase + 2 * i;
-                const SweepResult t = sweepStrip(context, y, strip);
+                const SweepResult t = sweepStrip<Granular>(context, y, strip);
                 stripTotals[std::size_t(strip)].moves += t.moves;
                 stripTotals[std::size_t(strip)].visited += t.visited;
             });

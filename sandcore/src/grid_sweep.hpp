@@ -98,8 +98,10 @@ public:
     }
 
 private:
-    SweepResult sweepStrip(const SweepContext& context, int y, int strip);
-    bool visitCell(const SweepContext& context, int x, int y, int z); // true when a grain moved
+    template <bool Granular> SweepResult sweepBy(const SweepContext& context, WorkerPool* pool);
+    template <bool Granular> SweepResult sweepStrip(const SweepContext& context, int y, int strip);
+    template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
+    bool visitCell(const SweepContext& context, int x, int y, int z); // classic rules; true when a grain moved
     void clearRow(std::uint32_t row);
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
