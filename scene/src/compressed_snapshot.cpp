@@ -48,6 +48,8 @@ CompressedSnapshot::CompressedSnapshot(const sandcore::Scene& scene) {
     out.putArray(g.movedAtStep);
     out.putArray(g.identity);
     out.putArray(g.color);
+    out.putArray(g.fallSpeed);
+    out.putArray(g.fallFraction);
     out.put<std::uint32_t>(scene.nextIdentity());
     out.put(scene.counters());
     writeBoxes(out, scene.obstacles(GridLevel::Upper));
@@ -66,6 +68,8 @@ sandcore::SceneSnapshot CompressedSnapshot::expand(const sandcore::Scene& scene)
     g.movedAtStep = in.getArray<std::uint64_t>("grains", g.level.size());
     g.identity = in.getArray<std::uint32_t>("grains", g.level.size());
     g.color = in.getArray<std::uint32_t>("grains", g.level.size());
+    g.fallSpeed = in.getArray<std::uint32_t>("grains", g.level.size());
+    g.fallFraction = in.getArray<std::uint16_t>("grains", g.level.size());
     sandcore::SceneSnapshot s{scene.layout(GridLevel::Upper), scene.layout(GridLevel::Lower), std::move(g), 0, {}, {}, {}};
     s.nextIdentity = in.get<std::uint32_t>("next identity");
     s.counters = in.get<sandcore::SceneCounters>("counters");

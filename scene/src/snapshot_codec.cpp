@@ -1,5 +1,6 @@
 #include "snapshot_codec.hpp"
 
+#include <cstdlib>
 #include <string>
 
 namespace sandglass {
@@ -83,6 +84,8 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
     out.putArray(g.movedAtStep);
     out.putArray(g.identity);
     out.putArray(g.color);
+    out.putArray(g.fallSpeed);
+    out.putArray(g.fallFraction);
     const sandcore::SceneCounters& c = scene.counters();
     out.put<std::uint32_t>(scene.nextIdentity());
     out.put<std::int64_t>(c.grainsUpper);
@@ -105,6 +108,8 @@ sandcore::SceneSnapshot readSnapshot(ByteReader& in) {
     g.movedAtStep = in.getArray<std::uint64_t>("grain move steps", grains);
     g.identity = in.getArray<std::uint32_t>("grain identities", grains);
     g.color = in.getArray<std::uint32_t>("grain colours", grains);
+    g.fallSpeed = in.getArray<std::uint32_t>("grain fall speeds", grains);
+    g.fallFraction = in.getArray<std::uint16_t>("grain fall fractions", grains);
     sandcore::SceneSnapshot s{std::move(upper), std::move(lower), std::move(g), 0, {}, {}, {}};
     s.nextIdentity = in.get<std::uint32_t>("next identity");
     s.counters.grainsUpper = in.get<std::int64_t>("counters");
@@ -145,7 +150,11 @@ void requireConsistentSnapshot(const sandcore::SceneSnapshot& s, const CellGrid&
     for (std::uint64_t id = 0; id < grains; ++id) {
         if (g.level[id] != GridLevel::Lower && g.level[id] != GridLevel::Upper)
             throw FormatError("grain " + std::to_string(id) + " lies in no grid");
-        if (g.cameFrom[id] >= 27) throw FormatError("grain " + std::to_string(id) + " has an invalid last move");
+        const sandcore::MoveCode move = g.cameFrom[id];
+        if (std::abs(sandcore::moveDx(move)) > sandcore::kMaxMoveSideways ||
+            std::abs(sandcore::moveDz(move)) > sandcore::kMaxMoveSideways ||
+            std::abs(sandcore::moveDy(move)) > sandcore::kMaxMoveVertical)
+            throw FormatError("grain " + std::to_string(id) + " has an invalid last move");
     }
     // Every cell naming a grain is named back by it (checked above), and the counts match: so
     // every grain sits in exactly one cell.
