@@ -77,15 +77,7 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
         writeSize(out, scene.grid(level).size());
         out.putArray(scene.grid(level).cells());
     }
-    const sandcore::GrainStore& g = scene.grains();
-    out.putArray(g.level);
-    out.putArray(g.cell);
-    out.putArray(g.cameFrom);
-    out.putArray(g.movedAtStep);
-    out.putArray(g.identity);
-    out.putArray(g.color);
-    out.putArray(g.fallSpeed);
-    out.putArray(g.fallFraction);
+    writeGrains(out, scene.grains());
     const sandcore::SceneCounters& c = scene.counters();
     out.put<std::uint32_t>(scene.nextIdentity());
     out.put<std::int64_t>(c.grainsUpper);
@@ -97,9 +89,18 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
     writeBoxes(out, scene.obstacles(GridLevel::Lower));
 }
 
-sandcore::SceneSnapshot readSnapshot(ByteReader& in) {
-    CellGrid upper = readGrid(in, "upper grid size", "upper grid cells");
-    CellGrid lower = readGrid(in, "lower grid size", "lower grid cells");
+void writeGrains(ByteWriter& out, const sandcore::GrainStore& g) {
+    out.putArray(g.level);
+    out.putArray(g.cell);
+    out.putArray(g.cameFrom);
+    out.putArray(g.movedAtStep);
+    out.putArray(g.identity);
+    out.putArray(g.color);
+    out.putArray(g.fallSpeed);
+    out.putArray(g.fallFraction);
+}
+
+sandcore::GrainStore readGrains(ByteReader& in) {
     sandcore::GrainStore g;
     g.level = in.getArray<GridLevel>("grain grids");
     const std::uint64_t grains = g.level.size();
@@ -110,6 +111,13 @@ sandcore::SceneSnapshot readSnapshot(ByteReader& in) {
     g.color = in.getArray<std::uint32_t>("grain colours", grains);
     g.fallSpeed = in.getArray<std::uint32_t>("grain fall speeds", grains);
     g.fallFraction = in.getArray<std::uint16_t>("grain fall fractions", grains);
+    return g;
+}
+
+sandcore::SceneSnapshot readSnapshot(ByteReader& in) {
+    CellGrid upper = readGrid(in, "upper grid size", "upper grid cells");
+    CellGrid lower = readGrid(in, "lower grid size", "lower grid cells");
+    sandcore::GrainStore g = readGrains(in);
     sandcore::SceneSnapshot s{std::move(upper), std::move(lower), std::move(g), 0, {}, {}, {}};
     s.nextIdentity = in.get<std::uint32_t>("next identity");
     s.counters.grainsUpper = in.get<std::int64_t>("counters");
