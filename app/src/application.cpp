@@ -237,10 +237,16 @@ void Application::drawHost(SceneHost& host, const RenderSettings& render) {
         drawnLayout_ = host.layoutRevision();
         drawnContent_ = 0;
     }
-    if (&host != drawnHost_ || host.contentRevision() != drawnContent_) {
-        renderer_.sceneChanged();
-        drawnContent_ = host.contentRevision();
+    // Steps and edits reach the renderer through the host's surface upkeep: a step lists what it
+    // moved, anything else rebuilds it, and the renderer uploads everything after a rebuild.
+    if (render.grainPath == GrainPath::GpuInterpolated) {
+        const bool gradientNormals = render.lighting && render.normals == sandcore::NormalMethod::OccupancyGradient;
+        renderer_.useSurface(&host.surfaceUpkeep(gradientNormals));
+    } else {
+        renderer_.useSurface(nullptr);
+        if (host.contentRevision() != drawnContent_) renderer_.sceneChanged();
     }
+    drawnContent_ = host.contentRevision();
     drawnHost_ = &host;
     bindTarget();
     int width = 0, height = 0;

@@ -1,11 +1,23 @@
 #include "app/frame_benchmark.hpp"
 
+#include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <ostream>
 #include <stdexcept>
 
 namespace sandglass {
+
+double threadCpuMilliseconds() {
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1000.0 + double(now.tv_nsec) / 1.0e6;
+#else
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+#endif
+}
 
 std::vector<BenchmarkCase> thesisBenchmarkCases() {
     std::vector<BenchmarkCase> cases;
@@ -19,11 +31,12 @@ namespace {
 const char* onOff(bool value) { return value ? "on" : "off"; }
 
 void writeRow(std::ostream& out, const BenchmarkRow& row) {
-    char fps[32];
-    std::snprintf(fps, sizeof fps, "%.1f", row.framesPerSecond());
+    char figures[128];
+    std::snprintf(figures, sizeof figures, "%.1f\t%.0f\t%.0f\t%.2f\t%.3f", row.framesPerSecond(), row.uploadBytesPerFrame,
+                  row.movesPerStep, row.cpuMillisecondsPerFrame, row.upkeepMillisecondsPerStep);
     out << onOff(row.simulation) << '\t' << onOff(row.gui) << '\t' << renderModeShortName(row.setup.mode) << '\t'
         << row.setup.grainsPerCell << '\t' << row.filledCells << '\t' << onOff(row.setup.lighting) << '\t'
-        << (row.setup.innerGrains ? "yes" : "no") << '\t' << fps << '\n';
+        << (row.setup.innerGrains ? "yes" : "no") << '\t' << figures << '\n';
 }
 } // namespace
 
@@ -37,19 +50,22 @@ void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& r
         out << "Framebuffer: " << report.width << "x" << report.height << " pixels\n";
         for (bool inner : {true, false}) {
             out << (inner ? "\nWith inner grains:\n\n" : "\nWithout inner grains:\n\n");
-            out << "Sim\tGui\tMode\tPpC\tfilled\tLight\tinner\tFPS\n";
+            out << "Sim\tGui\tMode\tPpC\tfilled\tLight\tinner\tFPS\tB/frame\tmoves\tCPU ms\tupkeep\n";
             for (const BenchmarkRow& row : report.rows)
                 if (row.setup.innerGrains == inner) writeRow(out, row);
         }
     }
     out << "\nColumns: Sim = simulation running, Gui = panels drawn, Mode = P (points), S (sprites),\n"
            "BB (billboards), PBB (pseudo-billboards), PpC = grains drawn per cell, filled = filled cells,\n"
-           "Light = lighting from estimated normals, inner = inner grains drawn, FPS = frames per second.\n";
+           "Light = lighting from estimated normals, inner = inner grains drawn, FPS = frames per second,\n"
+           "B/frame = grain bytes uploaded per frame, moves = grains moved per step, CPU ms = main-thread CPU\n"
+           "time per frame without the steps (with a software GL it includes vertex processing), upkeep = ms per\n"
+           "step of inner-flag and normal upkeep plus grain upload.\n";
 }
 
 void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& reports) {
     out << "scene,gl_renderer,gl_version,width,height,sim,gui,mode,grains_per_cell,filled_cells,light,inner,frames,"
-           "seconds,fps\n";
+           "seconds,fps,upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,upkeep_ms_per_step\n";
     auto quoted = [](const std::string& text) {
         std::string result = "\"";
         for (char c : text) result += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -57,8 +73,10 @@ void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& re
     };
     for (const BenchmarkReport& report : reports)
         for (const BenchmarkRow& row : report.rows) {
-            char numbers[96];
-            std::snprintf(numbers, sizeof numbers, "%d,%.4f,%.2f", row.frames, row.seconds, row.framesPerSecond());
+            char numbers[192];
+            std::snprintf(numbers, sizeof numbers, "%d,%.4f,%.2f,%.1f,%.1f,%.3f,%.4f", row.frames, row.seconds,
+                          row.framesPerSecond(), row.uploadBytesPerFrame, row.movesPerStep, row.cpuMillisecondsPerFrame,
+                          row.upkeepMillisecondsPerStep);
             out << quoted(report.scene) << ',' << quoted(report.glRenderer) << ',' << quoted(report.glVersion) << ','
                 << report.width << ',' << report.height << ',' << onOff(row.simulation) << ',' << onOff(row.gui) << ','
                 << renderModeName(row.setup.mode) << ',' << row.setup.grainsPerCell << ',' << row.filledCells << ','

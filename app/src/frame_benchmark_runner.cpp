@@ -2,6 +2,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -23,12 +24,17 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
     glfwSwapInterval(0);    // measure drawing, not the display's refresh
     auto last = Clock::now();
     RenderSettings render = app.state().render;
+    double cpuMilliseconds = 0.0, uploadBytes = 0.0, uploadMilliseconds = 0.0;
     auto frame = [&] {
         glfwPollEvents();
         const auto now = Clock::now();
+        const double cpuStart = threadCpuMilliseconds();
         app.renderHostFrame(host, render, true, std::chrono::duration<double>(now - last).count());
         last = now;
         app.finishFrame();
+        cpuMilliseconds += threadCpuMilliseconds() - cpuStart;
+        uploadBytes += double(app.renderer().stats().uploadBytes);
+        uploadMilliseconds += app.renderer().stats().uploadMilliseconds;
     };
     for (const BenchmarkCase& setup : cases) {
         render.mode = setup.mode;
@@ -41,6 +47,8 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         for (int i = 0; i < timing.warmupFrames; ++i) frame();
         BenchmarkRow row;
         row.setup = setup;
+        host.takeStepTally();
+        cpuMilliseconds = uploadBytes = uploadMilliseconds = 0.0;
         const auto start = Clock::now();
         double elapsed = 0.0;
         while (row.frames < timing.minFrames || (row.frames < timing.maxFrames && elapsed < timing.maxSeconds)) {
@@ -50,10 +58,17 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         }
         row.seconds = elapsed;
         row.filledCells = host.scene().grainCount();
+        const SceneHost::StepTally tally = host.takeStepTally();
+        const double steps = double(std::max<std::int64_t>(tally.steps, 1));
+        row.uploadBytesPerFrame = uploadBytes / row.frames;
+        row.movesPerStep = double(tally.moves) / steps;
+        row.cpuMillisecondsPerFrame = std::max(0.0, cpuMilliseconds - tally.stepMilliseconds) / row.frames;
+        row.upkeepMillisecondsPerStep = tally.steps > 0 ? (tally.upkeepMilliseconds + uploadMilliseconds) / steps : 0.0;
         report.rows.push_back(row);
-        std::printf("%-4s %2d grains/cell, light %-3s, inner %-3s: %8.1f fps\n", renderModeShortName(setup.mode),
-                    setup.grainsPerCell, setup.lighting ? "on" : "off", setup.innerGrains ? "yes" : "no",
-                    row.framesPerSecond());
+        std::printf("%-4s %2d grains/cell, light %-3s, inner %-3s: %8.1f fps, %10.0f B/frame, %7.2f CPU ms/frame\n",
+                    renderModeShortName(setup.mode), setup.grainsPerCell, setup.lighting ? "on" : "off",
+                    setup.innerGrains ? "yes" : "no", row.framesPerSecond(), row.uploadBytesPerFrame,
+                    row.cpuMillisecondsPerFrame);
         std::fflush(stdout);
     }
     glfwSwapInterval(app.options().window.vsync ? 1 : 0);

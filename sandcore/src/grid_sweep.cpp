@@ -18,6 +18,14 @@ GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
     const std::size_t rows = std::size_t(gridSize.y) * std::size_t(gridSize.z);
     words_.assign(rows * std::size_t(rowWords_), 0);
     rowAwake_.assign(rows, 0);
+    movedByStrip_.resize(std::size_t((gridSize.z + kStripRows - 1) / kStripRows));
+}
+
+void GridSweep::takeMovedGrains(std::vector<std::uint32_t>& out) {
+    for (std::vector<std::uint32_t>& strip : movedByStrip_) {
+        out.insert(out.end(), strip.begin(), strip.end());
+        strip.clear();
+    }
 }
 
 void GridSweep::wakeAt(int x, int y, int z) {
@@ -167,6 +175,7 @@ inline bool GridSweep::visitCell(const SweepContext& context, int x, int y, int 
     grains.cell[std::size_t(grain)] = to;
     grains.cameFrom[std::size_t(grain)] = packMove(-target->dx, 1, -target->dz);
     grains.movedAtStep[std::size_t(grain)] = context.step;
+    movedByStrip_[std::size_t(z / kStripRows)].push_back(std::uint32_t(grain));
 
     if (y - 1 > 0 || bottomIsOutlet_) wakeAt(x + target->dx, y - 1, z + target->dz); // it may move on next step
     wakeAroundEmptiedBy<false>(grid, x, y, z);                                       // the cell it left is free
@@ -184,6 +193,8 @@ bool GridSweep::visitGranular(const SweepContext& context, int x, int y, int z) 
     }
     if (outcome.kind != GranularOutcome::Moved) return false;
     const Int3 to = outcome.to;
+    // Granular moves always go down a layer, so no grain moves twice in one sweep.
+    movedByStrip_[std::size_t(z / kStripRows)].push_back(std::uint32_t(context.grid.at(to.x, to.y, to.z)));
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
     wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
     return true;

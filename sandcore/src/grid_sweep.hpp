@@ -67,6 +67,9 @@ public:
     void applyDeferredWakes();
     /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
     std::int64_t awakeRowCount() const;
+    /// Appends the ids of the grains the last sweep moved to out (strip by strip, so the order is
+    /// the same for any thread count) and forgets them.
+    void takeMovedGrains(std::vector<std::uint32_t>& out);
 
     /// Applies the rules to layers 1..top of context.grid, bottom-up; pool (may be null) shares
     /// busy layers' strips between threads.
@@ -119,6 +122,8 @@ private:
     int rowWords_;                       // 64-bit words per row of awake bits
     std::vector<std::uint64_t> words_;   // awake bits, row = y * sizeZ + z, padded to whole words
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
+    // Ids moved by the current sweep, one list per strip: a strip runs on one thread at a time.
+    std::vector<std::vector<std::uint32_t>> movedByStrip_;
 };
 
 } // namespace sandcore

@@ -104,6 +104,7 @@ void Scene::reset() {
         lower_ = lowerLayout_;
     }
     grains_.clear();
+    movedGrains_.clear();
     nextIdentity_ = 0;
     counters_ = {};
     rebuildCells(GridLevel::Upper);
@@ -142,6 +143,9 @@ void Scene::step() {
         upper = upperSweep_->sweep(upperContext, pool);
     }
     counters_.stepsDone = stepNumber;
+    movedGrains_.clear();
+    lowerSweep_->takeMovedGrains(movedGrains_);
+    upperSweep_->takeMovedGrains(movedGrains_);
     counters_.movesLastStep = lower.moves + upper.moves;
     counters_.visitedLastStep = lower.visited + upper.visited;
     if (granular_)
@@ -171,6 +175,7 @@ void Scene::transition() {
         if (grains_.movedAtStep[std::size_t(grain)] != counters_.stepsDone) {
             grains_.cameFrom[std::size_t(grain)] = kNoMove;
             grains_.movedAtStep[std::size_t(grain)] = counters_.stepsDone;
+            movedGrains_.push_back(std::uint32_t(grain)); // else the sweep listed it already
         }
         lowerSweep_->wakeAt(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
@@ -237,6 +242,7 @@ void Scene::transitionGranular() {
         if (grains_.movedAtStep[grain] != step) {
             grains_.cameFrom[grain] = kNoMove;
             grains_.movedAtStep[grain] = step;
+            movedGrains_.push_back(std::uint32_t(grain)); // else the sweep listed it already
         }
         lowerSweep_->wakeAt(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
@@ -247,6 +253,8 @@ void Scene::transitionGranular() {
     counters_.movesLastStep += moved;
     counters_.visitedLastStep += visited;
 }
+
+std::span<const std::uint32_t> Scene::movedGrains() const { return movedGrains_; }
 
 std::uint64_t Scene::stateHash() const {
     // Fixed constants and explicit widths keep the value the same on every platform.
@@ -298,6 +306,7 @@ void Scene::restore(const SceneSnapshot& saved) {
     std::copy(saved.upper.cells().begin(), saved.upper.cells().end(), upper_.cells().begin());
     std::copy(saved.lower.cells().begin(), saved.lower.cells().end(), lower_.cells().begin());
     grains_ = saved.grains;
+    movedGrains_.clear();
     nextIdentity_ = saved.nextIdentity;
     counters_ = saved.counters;
     upperObstacles_ = saved.upperObstacles;
@@ -323,6 +332,7 @@ bool Scene::removeGrain(GridLevel level, std::uint32_t cell) {
     if (cell >= grid.cellCount() || grid[cell] < 0) return false;
     const std::uint32_t id = std::uint32_t(grid[cell]);
     grid[cell] = kEmpty;
+    movedGrains_.clear(); // the swap renumbers a grain
     const std::uint32_t moved = grains_.removeBySwap(id);
     if (moved != id) gridRef(grains_.level[id])[grains_.cell[id]] = CellValue(id);
     const Int3 c = grid.coordinate(cell);

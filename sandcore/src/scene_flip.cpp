@@ -52,6 +52,7 @@ bool Scene::flip() {
         grains_.cameFrom[id] = kNoMove;
         grains_.movedAtStep[id] = counters_.stepsDone;
     }
+    movedGrains_.clear(); // every grain changed cells, none by a step
     flipLayouts();
     upper_ = std::move(upper);
     lower_ = std::move(lower);

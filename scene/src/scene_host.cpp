@@ -45,6 +45,7 @@ SceneHost::~SceneHost() {
 
 sandcore::Scene& SceneHost::editScene() {
     ++contentRevision_;
+    upkeepStale_ = true;
     return *scene_;
 }
 
@@ -60,6 +61,7 @@ void SceneHost::adopt(sandcore::Scene scene, const SceneSettings& settings) {
     rate_.clear();
     ++contentRevision_;
     ++layoutRevision_;
+    upkeepStale_ = true;
 }
 
 void SceneHost::startBuild(SceneSettings settings) {
@@ -133,8 +135,10 @@ int SceneHost::advance(double elapsedSeconds) {
     rate_.addFrame(elapsedSeconds, double(due) + clock_.stepFraction() - fractionBefore);
     if (due == 0) return 0;
     const auto start = Clock::now();
-    for (int i = 0; i < due; ++i) scene_->step();
-    const double milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count() / due;
+    const double upkeepBefore = tally_.upkeepMilliseconds;
+    for (int i = 0; i < due; ++i) stepOnce();
+    const double upkeep = tally_.upkeepMilliseconds - upkeepBefore;
+    const double milliseconds = (std::chrono::duration<double, std::milli>(Clock::now() - start).count() - upkeep) / due;
     millisecondsPerStep_ = millisecondsPerStep_ == 0.0 ? milliseconds : 0.9 * millisecondsPerStep_ + 0.1 * milliseconds;
     // Paused, the clock's fraction stands still (often at 0): a single step would not show.
     lastStepOutsideClock_ = !clock_.running();
@@ -144,7 +148,7 @@ int SceneHost::advance(double elapsedSeconds) {
 
 void SceneHost::runSteps(int steps) {
     if (steps <= 0) return;
-    for (int i = 0; i < steps; ++i) scene_->step();
+    for (int i = 0; i < steps; ++i) stepOnce();
     lastStepOutsideClock_ = true;
     ++contentRevision_;
 }
@@ -153,14 +157,44 @@ void SceneHost::reset() {
     scene_->reset();
     lastStepOutsideClock_ = false;
     ++contentRevision_;
+    upkeepStale_ = true;
 }
 
 bool SceneHost::flip() {
     if (!scene_->flip()) return false;
     lastStepOutsideClock_ = true; // the grains sit in their new cells; the view turns instead
     ++contentRevision_;
+    upkeepStale_ = true;
     ++layoutRevision_;
     return true;
+}
+
+// One step, then the upkeep around what it moved (timed apart: it is the drawing's cost).
+void SceneHost::stepOnce() {
+    const auto stepStart = Clock::now();
+    scene_->step();
+    tally_.stepMilliseconds += std::chrono::duration<double, std::milli>(Clock::now() - stepStart).count();
+    ++tally_.steps;
+    tally_.moves += scene_->counters().movesLastStep;
+    if (upkeepStale_) return; // rebuilt when next asked for
+    const auto start = Clock::now();
+    upkeep_.update(*scene_);
+    tally_.upkeepMilliseconds += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+sandcore::SurfaceUpkeep& SceneHost::surfaceUpkeep(bool gradientNormals) {
+    if (upkeepStale_ || upkeep_.tracksGradientNormals() != gradientNormals) {
+        upkeep_.setTrackGradientNormals(gradientNormals);
+        upkeep_.rebuild(*scene_);
+        upkeepStale_ = false;
+    }
+    return upkeep_;
+}
+
+SceneHost::StepTally SceneHost::takeStepTally() {
+    const StepTally taken = tally_;
+    tally_ = {};
+    return taken;
 }
 
 float SceneHost::displayStepFraction() const {

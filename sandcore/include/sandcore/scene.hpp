@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace sandcore {
@@ -84,6 +85,9 @@ public:
     std::int64_t grainCount() const { return std::int64_t(grains_.size()); } ///< grains in both grids
     /// True once a step has moved nothing: no later step will move anything until the scene is edited.
     bool settled() const { return counters_.stepsDone > 0 && counters_.movesLastStep == 0; }
+    /// Ids of the grains the last step moved (transitions included), each once, in no particular order.
+    /// Emptied by edits that renumber or rebuild grains (reset, restore, flip, grain removal).
+    std::span<const std::uint32_t> movedGrains() const;
     /// R7: a 64-bit hash of both grids' cell contents, stable across runs and platforms.
     std::uint64_t stateHash() const;
 
@@ -166,6 +170,7 @@ private:
     std::unique_ptr<GranularRules> granular_; // null: classic
     std::unique_ptr<NeckFlow> neckFlow_;      // granular hourglass only
     std::vector<std::uint32_t> transitionReady_; // scratch of transitionGranular
+    std::vector<std::uint32_t> movedGrains_;     // the last step's moves (movedGrains())
 };
 
 } // namespace sandcore

@@ -8,6 +8,7 @@
 
 #include "sandcore/scene.hpp"
 #include "sandcore/sim_clock.hpp"
+#include "sandcore/surface_upkeep.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -104,6 +105,22 @@ public:
     double millisecondsPerStep() const { return millisecondsPerStep_; } ///< smoothed wall time of one step, ms
     double stepsPerSecond() const { return rate_.stepsPerSecond(); }  ///< the true rate of the last second
 
+    /// The inner flags and normals of the running scene (R12, R13), kept by every step around
+    /// the cells it changed and rebuilt after any other change (edit, reset, flip, new scene),
+    /// with the changes since the drawer's last clearChanges(). gradientNormals: keep the
+    /// occupancy-gradient normals too (switching rebuilds).
+    sandcore::SurfaceUpkeep& surfaceUpkeep(bool gradientNormals);
+    /// What the steps since the last call did: how many, the grains they moved, and the wall
+    /// time of the surface upkeep after them (ms; steps before the surface was first asked for
+    /// or after an edit have none).
+    struct StepTally {
+        std::int64_t steps = 0;
+        std::int64_t moves = 0;
+        double upkeepMilliseconds = 0.0;
+        double stepMilliseconds = 0.0; ///< wall time of the steps themselves
+    };
+    StepTally takeStepTally();
+
     /// Changes whenever the grains change (a step, reset, edit or new scene).
     std::uint64_t contentRevision() const { return contentRevision_; }
     /// Changes whenever the cells' layout changes (a new scene, an obstacle edit).
@@ -112,6 +129,7 @@ public:
 private:
     void adopt(sandcore::Scene scene, const SceneSettings& settings);
     void startBuild(SceneSettings settings);
+    void stepOnce();
 
     std::unique_ptr<sandcore::Scene> scene_;
     SceneSettings loaded_;
@@ -124,6 +142,9 @@ private:
     double millisecondsPerStep_ = 0.0;
     StepRateMeter rate_;
     std::uint64_t contentRevision_ = 1, layoutRevision_ = 1;
+    sandcore::SurfaceUpkeep upkeep_;
+    bool upkeepStale_ = true;            // a change other than a step: rebuild before use
+    StepTally tally_;                    // since takeStepTally
 };
 
 } // namespace sandglass

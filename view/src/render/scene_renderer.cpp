@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 
@@ -27,6 +28,10 @@ void hullAttributes(GLuint vertexArray, GLuint buffer) {
                           reinterpret_cast<void*>(offsetof(HullVertex, nx)));
 }
 
+// Texture units of the GPU path (0 and 1 hold the patterns).
+constexpr int kColumnNormalsUnit = 2;
+constexpr int kGrainTexturesUnit = 3; // places, looks, jitters, gradient normals
+
 // Display settings whose change invalidates the uploaded grains even when nothing moved.
 bool sameGrainInputs(const RenderSettings& a, const RenderSettings& b) {
     return a.innerGrains == b.innerGrains && a.lighting == b.lighting && a.normals == b.normals &&
@@ -37,6 +42,7 @@ bool sameGrainInputs(const RenderSettings& a, const RenderSettings& b) {
 
 SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
     : grainProgram_(loadShaderProgram(shaderFolder / "grain.vert", shaderFolder / "grain.frag")),
+      grainGpuProgram_(loadShaderProgram(shaderFolder / "grain_gpu.vert", shaderFolder / "grain.frag", "displayPosition")),
       hullProgram_(loadShaderProgram(shaderFolder / "hull.vert", shaderFolder / "hull.frag")),
       grainArray_(newVertexArray()), hullArray_(newVertexArray()), lineArray_(newVertexArray()),
       grainBuffer_(newBuffer()), hullBuffer_(newBuffer()), lineBuffer_(newBuffer()),
@@ -79,10 +85,15 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
 
-    glUseProgram(grainProgram_.get());
-    glUniform1i(uniform(grainProgram_, "patternOffsets"), 0);
-    glUniform1i(uniform(grainProgram_, "patternColors"), 1);
-    glUniform1i(uniform(grainProgram_, "patternCount"), GLint(patterns.size()));
+    for (const GlProgram* program : {&grainProgram_, &grainGpuProgram_}) {
+        glUseProgram(program->get());
+        glUniform1i(uniform(*program, "patternOffsets"), 0);
+        glUniform1i(uniform(*program, "patternColors"), 1);
+        glUniform1i(uniform(*program, "patternCount"), GLint(patterns.size()));
+    }
+    glUniform1i(uniform(grainGpuProgram_, "columnNormals"), kColumnNormalsUnit);
+    const char* grainTextures[] = {"grainPlaces", "grainLooks", "grainJitters", "grainNormals"};
+    for (int i = 0; i < 4; ++i) glUniform1i(uniform(grainGpuProgram_, grainTextures[i]), kGrainTexturesUnit + i);
     glUseProgram(0);
 }
 
@@ -117,11 +128,32 @@ void SceneRenderer::sceneChanged() {
     grainsStale_ = true;
 }
 
+void SceneRenderer::useSurface(sandcore::SurfaceUpkeep* surface) {
+    if (surface != surface_) sceneChanged();
+    surface_ = surface;
+}
+
+
 void SceneRenderer::uploadGrains(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings) {
+    stats_.uploaded = false;
+    stats_.fullUpload = false;
+    stats_.uploadBytes = 0;
+    stats_.uploadMilliseconds = 0.0;
+    if (path_ == GrainPath::GpuInterpolated) {
+        uploadGpuGrains(scene, settings);
+        return;
+    }
+    // The reference path: the owner's surface lists every change of the grains.
+    if (surface_ != nullptr && (surface_->rebuilt() || !surface_->movedGrains().empty() ||
+                                !surface_->changedInnerFlags().empty())) {
+        builder_.sceneChanged();
+        grainsStale_ = true;
+        surface_->clearChanges();
+    }
     // Grains glide while the last step moved any; otherwise the uploaded positions still hold.
     const bool gliding = scene.counters().movesLastStep > 0;
-    stats_.uploaded = false;
     if (!gliding && !grainsStale_ && sameGrainInputs(settings, uploadedWith_)) return;
+    const auto start = std::chrono::steady_clock::now();
     const std::span<const GrainInstance> instances = builder_.build(scene, stepFraction, settings);
     glBindBuffer(GL_ARRAY_BUFFER, grainBuffer_.get());
     // Orphan the old storage so the driver need not wait for the previous frame's draw.
@@ -132,7 +164,51 @@ void SceneRenderer::uploadGrains(const sandcore::Scene& scene, float stepFractio
     uploadedWith_ = settings;
     grainsStale_ = false;
     stats_.uploaded = true;
+    stats_.fullUpload = true;
+    stats_.uploadBytes = std::int64_t(instances.size_bytes());
     stats_.innerGrains = builder_.innerGrainCount();
+    stats_.uploadMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// V8: everything after a change the surface cannot describe, else only what it lists.
+void SceneRenderer::uploadGpuGrains(const sandcore::Scene& scene, const RenderSettings& settings) {
+    const auto start = std::chrono::steady_clock::now();
+    const bool gradient = settings.lighting && settings.normals == sandcore::NormalMethod::OccupancyGradient;
+    sandcore::SurfaceUpkeep* surface = surface_;
+    if (surface == nullptr) {
+        surface = &ownSurface_;
+        if (grainsStale_ || ownSurface_.tracksGradientNormals() != gradient) {
+            ownSurface_.setTrackGradientNormals(gradient);
+            ownSurface_.rebuild(scene);
+        }
+    }
+    const bool full = grainsStale_ || surface->rebuilt() || !gpuStore_.canUpdate(scene, settings);
+    stats_.uploadBytes = full ? gpuStore_.uploadAll(scene, *surface, settings) : gpuStore_.uploadChanges(scene, *surface);
+    surface->clearChanges();
+    grainsStale_ = false;
+    stats_.uploaded = stats_.uploadBytes > 0;
+    stats_.fullUpload = full;
+    stats_.innerGrains = surface->innerCount();
+    stats_.uploadMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void SceneRenderer::setGpuUniforms(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings) {
+    const GlProgram& program = grainGpuProgram_;
+    const sandcore::Int3 lower = scene.grid(sandcore::GridLevel::Lower).size();
+    const sandcore::Int3 upper = scene.grid(sandcore::GridLevel::Upper).size();
+    const sandcore::Int3 origin = scene.gridOrigin(sandcore::GridLevel::Upper);
+    glUniform3i(uniform(program, "lowerSize"), lower.x, lower.y, lower.z);
+    glUniform3i(uniform(program, "upperSize"), upper.x, upper.y, upper.z);
+    glUniform3i(uniform(program, "upperOrigin"), origin.x, origin.y, origin.z);
+    glUniform1ui(uniform(program, "currentStep"), GLuint(std::uint32_t(scene.counters().stepsDone)));
+    // The same expression as grainDisplayPosition's, so both get the same float.
+    glUniform1f(uniform(program, "stepRemaining"), stepFraction < 1.0f ? 1.0f - stepFraction : 0.0f);
+    glUniform1i(uniform(program, "showInner"), settings.innerGrains ? 1 : 0);
+    const bool gradient = settings.normals == sandcore::NormalMethod::OccupancyGradient;
+    glUniform1i(uniform(program, "normalSource"), gradient ? 1 : 0);
+    gpuStore_.bind(kGrainTexturesUnit, kColumnNormalsUnit);
+    // Every grain an instance, or only the visible list's.
+    instanceCount_ = settings.innerGrains ? gpuStore_.grainCount() : gpuStore_.visibleCount();
 }
 
 void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
@@ -143,8 +219,16 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (width <= 0 || height <= 0) return;
 
+    // Past what this GL's buffer textures hold, the grains go the earlier way.
+    const GrainPath path = gpuStore_.holds(scene) ? settings.grainPath : GrainPath::CpuFullUpload;
+    if (path != path_) sceneChanged(); // the other path's buffers are stale
+    path_ = path;
     uploadGrains(scene, stepFraction, settings);
     const glm::mat4 viewProjection = camera.projection(float(width) / float(height)) * camera.view();
+    if (path_ == GrainPath::GpuInterpolated) {
+        glUseProgram(grainGpuProgram_.get());
+        setGpuUniforms(scene, stepFraction, settings);
+    }
     drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale);
     draft_.draw(draftPlacement_, glm::value_ptr(viewProjection));
     if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
@@ -163,31 +247,35 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glEnable(GL_PROGRAM_POINT_SIZE);
-    glUseProgram(grainProgram_.get());
+    const GlProgram& program = path_ == GrainPath::GpuInterpolated ? grainGpuProgram_ : grainProgram_;
+    glUseProgram(program.get());
     const int mode = int(settings.mode);
-    glUniformMatrix4fv(uniform(grainProgram_, "viewProjection"), 1, GL_FALSE, viewProjection);
-    glUniform1i(uniform(grainProgram_, "mode"), mode);
-    glUniform1f(uniform(grainProgram_, "cellSize"), settings.cellSize);
-    glUniform1f(uniform(grainProgram_, "pointSize"), std::max(1.0f, settings.pointSize * pixelScale));
+    glUniformMatrix4fv(uniform(program, "viewProjection"), 1, GL_FALSE, viewProjection);
+    glUniform1i(uniform(program, "mode"), mode);
+    glUniform1f(uniform(program, "cellSize"), settings.cellSize);
+    glUniform1f(uniform(program, "pointSize"), std::max(1.0f, settings.pointSize * pixelScale));
     // Sub-grains share the cell's volume, so a quad's edge shrinks with the cube root of k.
-    glUniform1f(uniform(grainProgram_, "quadHalfSize"),
+    glUniform1f(uniform(program, "quadHalfSize"),
                 0.5f * settings.quadSize * settings.cellSize / std::cbrt(float(perCell)));
     const glm::vec3 eye = camera.position(), up = camera.up(), right = camera.right();
-    glUniform3fv(uniform(grainProgram_, "cameraPosition"), 1, glm::value_ptr(eye));
-    glUniform3fv(uniform(grainProgram_, "cameraUp"), 1, glm::value_ptr(up));
+    glUniform3fv(uniform(program, "cameraPosition"), 1, glm::value_ptr(eye));
+    glUniform3fv(uniform(program, "cameraUp"), 1, glm::value_ptr(up));
     // Thesis §3.8 pseudo-billboards: one orientation per frame from the camera's rotation.
-    glUniform3fv(uniform(grainProgram_, "pseudoRight"), 1, glm::value_ptr(right));
-    glUniform3fv(uniform(grainProgram_, "pseudoUp"), 1, glm::value_ptr(up));
-    glUniform1i(uniform(grainProgram_, "lighting"), settings.lighting ? 1 : 0);
+    glUniform3fv(uniform(program, "pseudoRight"), 1, glm::value_ptr(right));
+    glUniform3fv(uniform(program, "pseudoUp"), 1, glm::value_ptr(up));
+    glUniform1i(uniform(program, "lighting"), settings.lighting ? 1 : 0);
     // Thesis §3.8: a white point light a little below the camera, so every view is lit.
     const glm::vec3 light = eye - up * (0.15f * camera.distance());
-    glUniform3fv(uniform(grainProgram_, "lightPosition"), 1, glm::value_ptr(light));
+    glUniform3fv(uniform(program, "lightPosition"), 1, glm::value_ptr(light));
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, patternOffsets_.get());
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, patternColors_.get());
     glActiveTexture(GL_TEXTURE0);
-    glBindVertexArray(grainArray_.get());
+    if (path_ == GrainPath::GpuInterpolated)
+        gpuStore_.bind(kGrainTexturesUnit, kColumnNormalsUnit);
+    else
+        glBindVertexArray(grainArray_.get());
     const bool quads = settings.mode == RenderMode::Billboards || settings.mode == RenderMode::PseudoBillboards;
     if (quads)
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * perCell, GLsizei(instanceCount_));

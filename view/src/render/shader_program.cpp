@@ -48,7 +48,8 @@ std::filesystem::path shaderDirectory() {
     return std::filesystem::path(SANDGLASS_SOURCE_DIR) / "shaders";
 }
 
-GlProgram loadShaderProgram(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile) {
+GlProgram loadShaderProgram(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
+                            const char* capturedVarying) {
     const GLuint vertex = compile(GL_VERTEX_SHADER, vertexFile);
     GLuint fragment = 0;
     try {
@@ -60,6 +61,7 @@ GlProgram loadShaderProgram(const std::filesystem::path& vertexFile, const std::
     GlProgram program(glCreateProgram());
     glAttachShader(program.get(), vertex);
     glAttachShader(program.get(), fragment);
+    if (capturedVarying != nullptr) glTransformFeedbackVaryings(program.get(), 1, &capturedVarying, GL_INTERLEAVED_ATTRIBS);
     glLinkProgram(program.get());
     glDeleteShader(vertex); // flagged for deletion; freed with the program
     glDeleteShader(fragment);

@@ -37,6 +37,12 @@ inline constexpr int kMaxGrainsPerCell = 32;
 /// Display settings. Mode, lighting, inner grains and background default to the thesis's
 /// choices (§3.7); beyond the thesis are the glass hull (on) and the normal estimate (the
 /// occupancy gradient, not the thesis's column heights, which are wrong on walls and overhangs).
+/// How grains reach the GPU (V8).
+enum class GrainPath : std::uint8_t {
+    GpuInterpolated, ///< kept on the GPU, only what changed uploaded, positions worked out by the vertex shader
+    CpuFullUpload,   ///< every grain packed on the CPU and uploaded whenever any moved (the earlier path, kept as reference)
+};
+
 struct RenderSettings {
     RenderMode mode = RenderMode::Points; ///< thesis default: points
     int grainsPerCell = 4;                ///< sub-grains drawn per cell, 1..32 (V2)
@@ -49,6 +55,7 @@ struct RenderSettings {
     float jitter = 0.5f;                  ///< R8 jitter 0..1 of a grain inside its cell
     float cellSize = 1.0f;                ///< world units per cell (the thesis's mSize)
     sandcore::NormalMethod normals = sandcore::NormalMethod::OccupancyGradient; ///< R12 estimate used by V3; beyond the thesis (its method is ColumnHeights)
+    GrainPath grainPath = GrainPath::GpuInterpolated; ///< V8 upload path; both draw the same picture
 };
 
 } // namespace sandglass

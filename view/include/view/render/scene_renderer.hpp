@@ -6,10 +6,12 @@
 #include "view/camera.hpp"
 #include "view/render/draft_overlay.hpp"
 #include "view/render/gl_objects.hpp"
+#include "view/render/grain_gpu_store.hpp"
 #include "view/render/grain_instances.hpp"
 #include "view/render/render_settings.hpp"
 
 #include "sandcore/scene.hpp"
+#include "sandcore/surface_upkeep.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -24,7 +26,11 @@ struct RenderStats {
     std::int64_t subGrainsDrawn = 0; ///< grainsDrawn * grains per cell
     std::int64_t innerGrains = 0;   ///< grains hidden by their 6 neighbours (R13)
     bool uploaded = false;          ///< the grain buffer was updated this frame
+    bool fullUpload = false;        ///< everything went up (new scene, edit, settings), not just changes
+    std::int64_t uploadBytes = 0;   ///< bytes sent to the GPU for the grains this frame
+    double uploadMilliseconds = 0;  ///< CPU time of this frame's grain upload (preparation and GL calls)
 };
+
 
 class SceneRenderer {
 public:
@@ -37,8 +43,20 @@ public:
     /// True when the hull was built with exactly the scene's obstacles (same boxes, same order,
     /// both grids); after an edit that may have changed them, false means setScene is due.
     bool hullShowsObstaclesOf(const sandcore::Scene& scene) const;
-    /// The scene's grains moved (a step, reset or edit): normals and inner flags are stale.
+    /// The scene's grains changed in a way the surface upkeep does not show (without a surface
+    /// from useSurface: any change): everything goes up again at the next draw.
     void sceneChanged();
+    /// The flags and normals to draw with, kept by the scene's owner step by step (SceneHost);
+    /// the renderer uploads what it lists as changed and clears its changes. A different
+    /// surface than before means everything goes up. Without one, the renderer keeps its own,
+    /// rebuilt after every sceneChanged().
+    void useSurface(sandcore::SurfaceUpkeep* surface);
+    /// Every grain's display position as the GPU path's vertex shader computes it at stepFraction,
+    /// read back by transform feedback (uploads first, as a draw would). For tests of R8 on the GPU.
+    std::vector<sandcore::Vec3> captureGpuPositions(const sandcore::Scene& scene, float stepFraction,
+                                                    const RenderSettings& settings);
+    /// The GPU's copy of the grains (GpuInterpolated).
+    const GrainGpuStore& gpuStore() const { return gpuStore_; }
 
     /// Clears the bound framebuffer (width x height pixels) and draws the scene at stepFraction
     /// of the current step. pixelScale multiplies point sizes (HiDPI content scale).
@@ -56,15 +74,21 @@ public:
 
 private:
     void uploadGrains(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings);
+    void uploadGpuGrains(const sandcore::Scene& scene, const RenderSettings& settings);
+    void setGpuUniforms(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings);
     void drawGrains(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection,
                     float pixelScale);
     void drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection);
 
-    GlProgram grainProgram_, hullProgram_;
+    GlProgram grainProgram_, grainGpuProgram_, hullProgram_;
     GlVertexArray grainArray_, hullArray_, lineArray_;
     GlBuffer grainBuffer_, hullBuffer_, lineBuffer_;
     GlTexture patternOffsets_, patternColors_;
     GrainInstanceBuilder builder_;
+    GrainGpuStore gpuStore_;
+    GrainPath path_ = GrainPath::GpuInterpolated;
+    sandcore::SurfaceUpkeep* surface_ = nullptr; // the owner's; null: ownSurface_
+    sandcore::SurfaceUpkeep ownSurface_;
     DraftOverlay draft_;
     DraftPlacement draftPlacement_;
     std::int64_t instanceCount_ = 0;

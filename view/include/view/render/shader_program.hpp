@@ -14,6 +14,8 @@ std::filesystem::path shaderDirectory();
 
 /// Compiles and links a vertex and a fragment shader read from files; throws std::runtime_error
 /// with one line naming the file and the compiler's first message on failure.
-GlProgram loadShaderProgram(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile);
+/// capturedVarying: a vertex output that transform feedback records (tests read positions back).
+GlProgram loadShaderProgram(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
+                            const char* capturedVarying = nullptr);
 
 } // namespace sandglass

@@ -1,0 +1,118 @@
+#version 330 core
+// SPEC V8: one sand grain per instance, as the GPU keeps it between frames (grain_gpu_store.hpp):
+// its cell, grid and last move, uploaded only when it moves. The display position is worked out
+// here exactly as sandcore::grainDisplayPosition does (R8): (world cell + 1/2 + jitter + the
+// share of the move still ahead) * cellSize, summed in the same order, never accumulated.
+// gl_VertexID picks the sub-grain (thesis §3.8 "Scribble") and, for quads, the corner; when
+// inner grains are hidden, the instances are the visible list's ids.
+
+layout(location = 0) in uint visibleGrain;  // inner grains hidden: the id of a visible grain
+
+// Per grain id (grain_gpu_store.hpp):
+uniform usamplerBuffer grainPlaces;   // cell, level (0 lower, 1 upper), cameFrom, step of the last move
+uniform usamplerBuffer grainLooks;    // identity (picks the pattern), RGBA8 colour (0 = the pattern's)
+uniform samplerBuffer grainJitters;   // sandcore::jitterOffset, cells
+uniform usamplerBuffer grainNormals;  // occupancy-gradient normal, packed 10:10:10:2
+
+uniform ivec3 lowerSize;         // cells per axis of each grid
+uniform ivec3 upperSize;
+uniform ivec3 upperOrigin;       // world cell of the upper grid's (0, 0, 0)
+uniform uint currentStep;        // low 32 bits of the steps done
+uniform float stepRemaining;     // 1 - step fraction: share of a move still ahead (0: at rest)
+uniform bool showInner;          // every grain is an instance (id = gl_InstanceID); else the visible list
+uniform int normalSource;        // 0 column normals, 1 per-grain gradient normals
+uniform usampler2D columnNormals; // per column, packed 10:10:10:2; row z + level * sizeZ
+
+uniform mat4 viewProjection;
+uniform int mode;                // 0 points, 1 sprites, 2 billboards, 3 pseudo-billboards
+uniform float cellSize;          // world units per cell
+uniform float pointSize;         // points and sprites, pixels
+uniform float quadHalfSize;      // billboards, world units
+uniform vec3 cameraPosition;     // world units
+uniform vec3 cameraUp;           // unit, world space
+uniform vec3 pseudoRight;        // pseudo-billboards: the camera's rotation applied once per frame
+uniform vec3 pseudoUp;
+uniform bool lighting;
+uniform vec3 lightPosition;      // a white point light slightly below the camera (§3.8)
+uniform sampler2D patternOffsets; // x: sub-grain (0..31), y: pattern; xyz in [-1, 1]
+uniform sampler2D patternColors;  // same layout, RGBA8
+uniform int patternCount;
+
+out vec3 displayPosition; // the grain's R8 display point (read back by transform feedback in tests)
+out vec3 shadedColor;
+out vec2 quadCorner;
+
+vec3 unpackNormal(uint packed) {
+    ivec3 bits = ivec3(int(packed & 1023u), int((packed >> 10) & 1023u), int((packed >> 20) & 1023u));
+    bits -= ivec3(greaterThanEqual(bits, ivec3(512))) * 1024;
+    return max(vec3(bits) / 511.0, vec3(-1.0));
+}
+
+const uint kNoMove = 0x80008080u; // sandcore::packMove(0, 0, 0)
+
+const vec2 corners[6] = vec2[6](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
+
+void main() {
+    int id = showInner ? gl_InstanceID : int(visibleGrain);
+    uvec4 grainPlace = texelFetch(grainPlaces, id);
+    uvec2 look = texelFetch(grainLooks, id).xy;
+    uint grainIdentity = look.x;
+    uint grainColor = look.y;
+    vec3 grainJitter = texelFetch(grainJitters, id).xyz;
+    bool upper = (grainPlace.y & 1u) != 0u;
+    ivec3 size = upper ? upperSize : lowerSize;
+    uint cell = grainPlace.x;
+    uint rest = cell / uint(size.x);
+    ivec3 local = ivec3(int(cell % uint(size.x)), int(rest / uint(size.z)), int(rest % uint(size.z)));
+    ivec3 worldCell = local + (upper ? upperOrigin : ivec3(0));
+    vec3 ahead = vec3(0.0);
+    if (grainPlace.w == currentStep && stepRemaining > 0.0 && grainPlace.z != kNoMove) {
+        uint from = grainPlace.z;
+        vec3 offset = vec3(float(int(from & 255u) - 128), float(int(from >> 16) - 32768), float(int((from >> 8) & 255u) - 128));
+        ahead = stepRemaining * offset;
+    }
+    vec3 grainPosition = (vec3(worldCell) + 0.5 + grainJitter + ahead) * cellSize;
+    displayPosition = grainPosition;
+    uint packedNormal = normalSource == 1 ? texelFetch(grainNormals, id).r
+                                          : texelFetch(columnNormals, ivec2(local.x, local.z + (upper ? size.z : 0)), 0).r;
+    vec3 normal = unpackNormal(packedNormal);
+
+    bool quads = mode >= 2;
+    int subGrain = quads ? gl_VertexID / 6 : gl_VertexID;
+    ivec2 texel = ivec2(subGrain, int(grainIdentity % uint(patternCount)));
+    vec3 centre = grainPosition + texelFetch(patternOffsets, texel, 0).xyz * (0.5 * cellSize);
+
+    vec3 base = texelFetch(patternColors, texel, 0).rgb;
+    if (grainColor != 0u) {
+        vec3 own = vec3(float(grainColor & 255u), float((grainColor >> 8) & 255u), float((grainColor >> 16) & 255u)) / 255.0;
+        base = own * (base / vec3(0.90, 0.90, 0.67)); // keep the pattern's small variation
+    }
+    if (lighting) {
+        vec3 n = normalize(normal);
+        vec3 toLight = normalize(lightPosition - centre);
+        float lambert = max(dot(n, toLight), 0.0);
+        base *= 0.45 + 0.65 * lambert; // ambient keeps the side away from the light readable
+    }
+    shadedColor = base;
+
+    vec3 world = centre;
+    quadCorner = vec2(0.0);
+    if (quads) {
+        quadCorner = corners[gl_VertexID % 6];
+        vec3 right, up;
+        if (mode == 2) {
+            // Thesis §3.8 billboard: l = look at this grain, r = C_up x l, u = l x r.
+            vec3 look = normalize(centre - cameraPosition);
+            right = normalize(cross(cameraUp, look));
+            up = cross(look, right);
+            right = -right; // keep the texture's left on the screen's left
+        } else {
+            right = pseudoRight;
+            up = pseudoUp;
+        }
+        world += (quadCorner.x * right + quadCorner.y * up) * quadHalfSize;
+    } else {
+        gl_PointSize = pointSize;
+    }
+    gl_Position = viewProjection * vec4(world, 1.0);
+}

@@ -1,0 +1,168 @@
+// Scene::movedGrains and SurfaceUpkeep (R12, R13 kept by the step): the list of moved grains
+// matches a full comparison of every grain's cell before and after the step, and the flags and
+// column normals kept up to date around the changed cells equal a full recompute after every
+// step, classic and granular, on 1 and 2 threads, across the hourglass's two grids.
+#include "sandcore/inner_grains.hpp"
+#include "sandcore/normals.hpp"
+#include "sandcore/procedural_shapes.hpp"
+#include "sandcore/scenes.hpp"
+#include "sandcore/surface_upkeep.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
+using namespace sandcore;
+
+namespace {
+
+StepSettings stepSettings(std::uint64_t seed, int threads, bool granular) {
+    StepSettings step;
+    step.seed = seed;
+    step.threads = threads;
+    if (granular) {
+        step.physics.level = PhysicsLevel::Granular;
+        step.physics.gravity = 0.3f;
+    }
+    return step;
+}
+
+struct Place {
+    GridLevel level;
+    std::uint32_t cell;
+    friend bool operator==(const Place&, const Place&) = default;
+};
+
+std::vector<Place> placesOf(const Scene& scene) {
+    std::vector<Place> places;
+    for (std::uint32_t id = 0; id < scene.grains().size(); ++id)
+        places.push_back({scene.grains().level[id], scene.grains().cell[id]});
+    return places;
+}
+
+// Moved = changed cell or grid, or (a transition with no glide) moved in this very step.
+void checkMovedGrains(const Scene& scene, const std::vector<Place>& before) {
+    const std::span<const std::uint32_t> moved = scene.movedGrains();
+    const std::set<std::uint32_t> listed(moved.begin(), moved.end());
+    REQUIRE(listed.size() == moved.size()); // each once
+    CHECK(std::int64_t(moved.size()) == scene.counters().movesLastStep);
+    const std::vector<Place> after = placesOf(scene);
+    for (std::uint32_t id = 0; id < after.size(); ++id) {
+        const bool changed = !(after[id] == before[id]);
+        const bool listedHere = listed.count(id) > 0;
+        if (changed) REQUIRE_MESSAGE(listedHere, "grain " << id << " changed cells but is not listed");
+        if (listedHere) REQUIRE_MESSAGE(changed, "grain " << id << " is listed but kept its cell");
+    }
+}
+
+void checkUpkeepMatchesFullRecompute(const Scene& scene, const SurfaceUpkeep& upkeep) {
+    std::vector<std::uint8_t> inner(scene.grains().size());
+    const std::int64_t innerCount = flagInnerGrains(scene, inner);
+    REQUIRE(upkeep.innerCount() == innerCount);
+    REQUIRE(std::equal(inner.begin(), inner.end(), upkeep.innerFlags().begin(), upkeep.innerFlags().end()));
+    std::vector<Vec3> normals(scene.grains().size());
+    estimateGrainNormals(scene, NormalMethod::ColumnHeights, normals);
+    for (std::uint32_t id = 0; id < scene.grains().size(); ++id) {
+        const GridLevel level = scene.grains().level[id];
+        const Vec3 kept = upkeep.columnNormals(level)[scene.grains().cell[id] % scene.grid(level).layerSize()];
+        REQUIRE_MESSAGE((kept.x == normals[id].x && kept.y == normals[id].y && kept.z == normals[id].z),
+                        "normal of grain " << id);
+    }
+    if (upkeep.tracksGradientNormals()) {
+        estimateGrainNormals(scene, NormalMethod::OccupancyGradient, normals);
+        for (std::uint32_t id = 0; id < scene.grains().size(); ++id) {
+            const Vec3 kept = upkeep.gradientNormals()[id];
+            REQUIRE_MESSAGE((kept.x == normals[id].x && kept.y == normals[id].y && kept.z == normals[id].z),
+                            "gradient normal of grain " << id);
+        }
+    }
+    for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
+        const std::vector<int> heights = columnHeights(scene.grid(level));
+        REQUIRE(std::equal(heights.begin(), heights.end(), upkeep.heights(level).begin(), upkeep.heights(level).end()));
+    }
+}
+
+// Steps the scene, checking movedGrains and the upkeep after every step; the changed lists name
+// every flag and column that differs from the previous step's.
+int runAndCheck(Scene& scene, int steps) {
+    SurfaceUpkeep upkeep;
+    upkeep.setTrackGradientNormals(true);
+    upkeep.rebuild(scene);
+    int moves = 0;
+    for (int i = 0; i < steps; ++i) {
+        CAPTURE(i);
+        const std::vector<Place> before = placesOf(scene);
+        const std::vector<std::uint8_t> flagsBefore(upkeep.innerFlags().begin(), upkeep.innerFlags().end());
+        upkeep.clearChanges();
+        scene.step();
+        checkMovedGrains(scene, before);
+        moves += int(scene.movedGrains().size());
+        upkeep.update(scene);
+        checkUpkeepMatchesFullRecompute(scene, upkeep);
+        const std::set<std::uint32_t> changed(upkeep.changedInnerFlags().begin(), upkeep.changedInnerFlags().end());
+        REQUIRE(changed.size() == upkeep.changedInnerFlags().size());
+        for (std::uint32_t id = 0; id < flagsBefore.size(); ++id)
+            REQUIRE((flagsBefore[id] != upkeep.innerFlags()[id]) == (changed.count(id) > 0));
+        CHECK(upkeep.movedGrains().size() == scene.movedGrains().size());
+    }
+    return moves;
+}
+
+} // namespace
+
+TEST_CASE("moved grains and the kept flags and normals match a full recompute: hourglass, classic, 1 and 2 threads") {
+    for (int threads : {1, 2}) {
+        CAPTURE(threads);
+        Scene scene = makeHourglassScene(makeHourglassMask({28, 2.0f, 0.0f}), {}, stepSettings(7, threads, false));
+        // Long enough for sand to pass the neck into the lower grid and pile up there.
+        CHECK(runAndCheck(scene, 120) > 0);
+        CHECK(scene.counters().grainsLower > 0);
+    }
+}
+
+TEST_CASE("moved grains and the kept flags and normals match a full recompute: granular hourglass and sculpture") {
+    for (int threads : {1, 2}) {
+        CAPTURE(threads);
+        Scene hourglass = makeHourglassScene(makeHourglassMask({28, 2.0f, 0.0f}), {}, stepSettings(3, threads, true));
+        CHECK(runAndCheck(hourglass, 100) > 0);
+        CHECK(hourglass.counters().grainsLower > 0);
+        Scene sculpture = makeSculptureScene(makeSphereMask(16), stepSettings(5, threads, true));
+        CHECK(runAndCheck(sculpture, 60) > 0);
+    }
+}
+
+TEST_CASE("moved grains: the same list for 1 and 2 threads, empty once settled and after edits") {
+    Scene one = makeSculptureScene(makeSphereMask(18), stepSettings(11, 1, false));
+    Scene two = makeSculptureScene(makeSphereMask(18), stepSettings(11, 2, false));
+    for (int i = 0; i < 40; ++i) {
+        one.step();
+        two.step();
+        std::vector<std::uint32_t> a(one.movedGrains().begin(), one.movedGrains().end());
+        std::vector<std::uint32_t> b(two.movedGrains().begin(), two.movedGrains().end());
+        std::sort(a.begin(), a.end());
+        std::sort(b.begin(), b.end());
+        REQUIRE(a == b);
+        REQUIRE(one.stateHash() == two.stateHash());
+    }
+    CHECK(!one.movedGrains().empty());
+    one.removeGrain(one.grains().level[0], one.grains().cell[0]); // renumbers the last grain
+    CHECK(one.movedGrains().empty());
+    while (!two.settled()) two.step();
+    CHECK(two.movedGrains().empty());
+    two.reset();
+    CHECK(two.movedGrains().empty());
+}
+
+TEST_CASE("surface upkeep: a painted grain is caught by rebuild, and update rebuilds when the count changed") {
+    Scene scene = makeCanvasScene({{12, 4, 12}, {12, 8, 12}});
+    SurfaceUpkeep upkeep;
+    upkeep.rebuild(scene);
+    for (int i = 0; i < 30; ++i) {
+        scene.addGrain(GridLevel::Upper, pourCell(scene));
+        scene.step();
+        upkeep.update(scene); // the count changed: a rebuild, still exact
+        checkUpkeepMatchesFullRecompute(scene, upkeep);
+    }
+}

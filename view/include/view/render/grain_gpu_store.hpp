@@ -1,0 +1,83 @@
+#pragma once
+// SPEC V8: the grains as the GPU keeps them between frames, in buffer textures indexed by grain
+// id: its cell, grid, last move (cameFrom) and the step of that move (16 bytes, "place"); its
+// identity and colour (8 bytes) and jitter (16 bytes), changed only by edits; its gradient normal
+// (4 bytes, when lit by that method); per column the thesis's column normal (a 2D texture); and
+// the list of visible (not inner) grain ids, the instances drawn when inner grains are hidden.
+// After a step only what changed goes up, each run of consecutive entries with one call: the
+// moved grains' places, the changed entries of the visible list, the changed normals. The vertex
+// shader (grain_gpu.vert) works out the display position from the place and the step fraction,
+// as sandcore::grainDisplayPosition does on the CPU.
+
+#include "view/render/gl_objects.hpp"
+#include "view/render/render_settings.hpp"
+
+#include "sandcore/scene.hpp"
+#include "sandcore/surface_upkeep.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace sandglass {
+
+/// A grain's place as the vertex shader reads it (RGBA32UI).
+struct GrainPlace {
+    std::uint32_t cell = 0;      ///< cell index in its grid
+    std::uint32_t level = 0;     ///< 0 lower grid, 1 upper grid
+    std::uint32_t cameFrom = 0;  ///< sandcore::MoveCode of its last move
+    std::uint32_t movedStep = 0; ///< low 32 bits of the step of its last move
+};
+static_assert(sizeof(GrainPlace) == 16);
+
+class GrainGpuStore {
+public:
+    /// Buffers and textures; needs a current GL 3.3 context.
+    GrainGpuStore();
+
+    /// Uploads everything from the scene and its upkeep. Returns the bytes sent.
+    std::int64_t uploadAll(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface,
+                           const RenderSettings& settings);
+    /// Uploads only what the upkeep lists as changed since its last clearChanges(). Returns the bytes sent.
+    std::int64_t uploadChanges(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface);
+    /// True when uploadChanges can follow the last upload under these settings (same grains, same
+    /// jitter, the normals the lighting needs already there).
+    bool canUpdate(const sandcore::Scene& scene, const RenderSettings& settings) const;
+    /// False when the scene has more grains than this GL's buffer textures hold (draw another way).
+    bool holds(const sandcore::Scene& scene) const { return std::int64_t(scene.grains().size()) <= maxTexels_; }
+
+    /// Binds the buffer textures to units firstUnit.. (places, looks, jitters, gradient normals)
+    /// and the column normals to columnUnit, and the vertex array of the visible list.
+    void bind(int firstUnit, int columnUnit) const;
+    std::int64_t grainCount() const { return std::int64_t(places_.size()); }   ///< all grains
+    std::int64_t visibleCount() const { return std::int64_t(visible_.size()); } ///< grains not inner
+    /// The places as uploaded (tests compare them with the scene).
+    std::span<const GrainPlace> places() const { return places_; }
+
+private:
+    struct BufferTexture {
+        GlBuffer buffer;
+        GlTexture texture;
+    };
+    void makeVisibleList(std::span<const std::uint8_t> inner);
+    void setVisible(std::uint32_t grain, bool visible);
+    std::int64_t uploadColumns(const sandcore::SurfaceUpkeep& surface);
+
+    BufferTexture places_gpu_, looks_gpu_, jitters_gpu_, normals_gpu_;
+    GlBuffer visibleBuffer_;
+    GlVertexArray visibleArray_;
+    GlTexture columnNormals_;
+    std::int64_t maxTexels_ = 0;
+    std::vector<GrainPlace> places_;
+    std::vector<std::uint32_t> packedNormals_;  // gradient normals as uploaded
+    std::vector<std::uint32_t> packedColumns_;  // column normals as uploaded, texel order
+    std::vector<std::uint32_t> visible_;        // ids of the visible grains, as uploaded
+    std::vector<std::uint32_t> slotOf_;         // per grain: its index in visible_, or kNotListed
+    std::vector<std::uint32_t> changedSlots_;   // scratch
+    std::vector<std::uint32_t> sortedIds_;      // scratch
+    int columnsX_ = 0, columnsZ_ = 0;
+    float uploadedJitter_ = -1.0f;
+    bool gradientUploaded_ = false;
+};
+
+} // namespace sandglass
