@@ -42,8 +42,8 @@ out vec3 displayPosition; // the grain's R8 display point (read back by transfor
 out vec3 shadedColor;
 out vec2 quadCorner;
 
-vec3 unpackNormal(uint packed) {
-    ivec3 bits = ivec3(int(packed & 1023u), int((packed >> 10) & 1023u), int((packed >> 20) & 1023u));
+vec3 unpackNormal(uint word) {
+    ivec3 bits = ivec3(int(word & 1023u), int((word >> 10) & 1023u), int((word >> 20) & 1023u));
     bits -= ivec3(greaterThanEqual(bits, ivec3(512))) * 1024;
     return max(vec3(bits) / 511.0, vec3(-1.0));
 }

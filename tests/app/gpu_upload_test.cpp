@@ -159,7 +159,7 @@ TEST_CASE("V8: mid-drain on the res-96 hourglass a frame uploads at most 32 byte
             app->runSteps(1);
             app->renderFrame(0.0);
             const RenderStats& stats = app->renderer().stats();
-            const std::int64_t moves = app->scene().counters().movesLastStep;
+            const auto moves = std::int64_t(app->scene().movedGrains().size());
             CAPTURE(moves);
             REQUIRE(!stats.fullUpload);
             CHECK(stats.uploadBytes <= 32 * moves + 4096);

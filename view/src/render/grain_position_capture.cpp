@@ -11,7 +11,7 @@ std::vector<sandcore::Vec3> SceneRenderer::captureGpuPositions(const sandcore::S
     uploadGrains(scene, stepFraction, settings);
     path_ = path;
     const std::int64_t count = gpuStore_.grainCount();
-    std::vector<sandcore::Vec3> positions(std::size_t(count));
+    std::vector<sandcore::Vec3> positions(static_cast<std::size_t>(count));
     if (count == 0) return positions;
 
     GlBuffer captured(newBuffer());
