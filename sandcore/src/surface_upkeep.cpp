@@ -26,6 +26,8 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
         columnListed_[index(level)].assign(heights.size(), 0);
     }
     listed_.assign(scene.grains().size(), 0);
+    grainStamp_.assign(scene.grains().size(), 0);
+    gradientStamp_.assign(trackGradient_ ? scene.grains().size() : 0, 0);
     gradient_.clear();
     if (trackGradient_) {
         gradient_.resize(scene.grains().size());
@@ -72,6 +74,10 @@ void SurfaceUpkeep::markWorldCell(const Scene& scene, Int3 world) {
 void SurfaceUpkeep::refreshFlag(const Scene& scene, GridLevel level, std::uint32_t cell) {
     const CellValue grain = scene.grid(level)[cell];
     if (grain < 0) return;
+    // Neighbouring changed cells share grains: look at each once per update.
+    std::uint32_t& seen = grainStamp_[std::size_t(grain)];
+    if (seen == updateNumber_) return;
+    seen = updateNumber_;
     const std::uint8_t now = isInnerGrain(scene, level, cell) ? 1 : 0;
     std::uint8_t& flag = inner_[std::size_t(grain)];
     if (flag == now) return;
@@ -109,6 +115,9 @@ void SurfaceUpkeep::refreshGradientAround(const Scene& scene, GridLevel level, s
                 const std::uint32_t n = grid.index(x, y, z);
                 const CellValue grain = grid[n];
                 if (grain < 0) continue;
+                std::uint32_t& seen = gradientStamp_[std::size_t(grain)];
+                if (seen == updateNumber_) continue;
+                seen = updateNumber_;
                 const Vec3 now = gradientNormal(grid, n);
                 Vec3& normal = gradient_[std::size_t(grain)];
                 if (now.x == normal.x && now.y == normal.y && now.z == normal.z) continue;
@@ -136,6 +145,7 @@ void SurfaceUpkeep::update(const Scene& scene) {
         markWorldCell(scene, world);
         if (from != kNoMove) markWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
     }
+    ++updateNumber_;
     for (const auto& [level, cell] : changedCells_) {
         refreshInnerAround(scene, level, cell);
         if (trackGradient_) refreshGradientAround(scene, level, cell);

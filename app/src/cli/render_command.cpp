@@ -37,6 +37,7 @@ struct SteppedFrames {
     double frameMilliseconds = 0.0;       // wall time of the frame, step excluded
     double stepMilliseconds = 0.0;        // wall time of the step itself
     double upkeepMillisecondsPerStep = 0.0; // surface upkeep + the frame's grain upload, per step
+    double surfaceMillisecondsPerStep = 0.0; // of which the inner flags and normals
 };
 
 SteppedFrames drawSteppedFrames(Application& application, int frames) {
@@ -68,6 +69,7 @@ SteppedFrames drawSteppedFrames(Application& application, int frames) {
     result.frameMilliseconds = wall / frames;
     result.stepMilliseconds = stepWall / frames - tally.upkeepMilliseconds / steps;
     result.upkeepMillisecondsPerStep = (tally.upkeepMilliseconds + uploadMilliseconds) / steps;
+    result.surfaceMillisecondsPerStep = tally.upkeepMilliseconds / steps;
     return result;
 }
 
@@ -116,6 +118,7 @@ int runRender(const RenderOptions& options) {
             out["moves_per_step"] = stepped.movesPerStep;
             out["cpu_ms_per_frame"] = stepped.cpuMillisecondsPerFrame;
             out["upkeep_ms_per_step"] = stepped.upkeepMillisecondsPerStep;
+            out["surface_upkeep_ms_per_step"] = stepped.surfaceMillisecondsPerStep;
             out["stepped_frame_ms"] = stepped.frameMilliseconds;
             out["step_ms"] = stepped.stepMilliseconds;
         }

@@ -75,7 +75,8 @@ private:
     std::array<std::vector<int>, 2> heights_;
     std::array<std::vector<Vec3>, 2> normals_;
     std::array<std::vector<std::uint32_t>, 2> columnStamp_; // last update that looked at a column
-    std::uint32_t updateNumber_ = 0;
+    std::uint32_t updateNumber_ = 0;                    // stamps: which update last looked at a grain or column
+    std::vector<std::uint32_t> grainStamp_, gradientStamp_;
     bool rebuilt_ = true;
     std::vector<std::uint8_t> listed_;                  // per grain: bits of the change lists naming it
     std::array<std::vector<std::uint8_t>, 2> columnListed_; // per column: in changedColumns_
