@@ -35,7 +35,8 @@ TEST_CASE("cli: bad render, gui and bench input gives one line and a non-zero ex
          {"render --out " + x + " --mode voxels", "render --out " + x + " --grains-per-cell 40",
           std::string("render --mode points"), "render --out " + x + " --size 12", "render --out " + x + " --scene teapot",
           "gui --screenshot " + x, std::string("gui --res 3 --frames 1"), std::string("bench --out"),
-          std::string("bench --render --res 2"), "render --out " + x + " --zoom 0"}) {
+          std::string("bench --render --res 2"), "render --out " + x + " --zoom 0",
+          "render --out " + x + " --grain-path both", "render --out " + x + " --frames -1"}) {
         CAPTURE(arguments);
         const Result result = runWithStderr(arguments);
         CHECK(result.exitCode != 0);
@@ -57,6 +58,28 @@ TEST_CASE("cli: render writes a PNG and reports fps and frame_ms as JSON") {
     FILE* png = std::fopen(file.c_str(), "rb");
     REQUIRE(png != nullptr);
     std::fclose(png);
+}
+
+TEST_CASE("cli: render --frames reports upload bytes, moves, CPU and upkeep time per frame, on both paths") {
+    if (!sandglass::testing::requireDisplay("sandglass render --frames")) return;
+    const sandglass::TemporaryFolder folder;
+    const std::string file = (folder / "render-frames.png").string();
+    for (const char* path : {"gpu", "cpu"}) {
+        CAPTURE(path);
+        const cli::ProcessResult run =
+            cli::runSandglassArgs({"render", "--res", "24", "--steps", "40", "--frames", "4", "--size", "64x64",
+                                   "--timed-frames", "1", "--grain-path", path, "--json", "--out", file});
+        INFO(run.err);
+        REQUIRE(run.exitCode == 0);
+        for (const char* key : {"\"upload_bytes_per_frame\":", "\"moves_per_step\":", "\"cpu_ms_per_frame\":",
+                                "\"upkeep_ms_per_step\":", "\"steps\":44"}) {
+            CAPTURE(key);
+            CHECK(run.out.find(key) != std::string::npos);
+        }
+        // Sand flows at step 40: both paths upload something, and moves are counted.
+        CHECK(run.out.find("\"upload_bytes_per_frame\":0.0") == std::string::npos);
+        CHECK(run.out.find("\"moves_per_step\":0.0") == std::string::npos);
+    }
 }
 
 TEST_CASE("cli: render to a full device or a missing folder fails and keeps an existing PNG") {

@@ -10,6 +10,11 @@ std::vector<sandcore::Vec3> SceneRenderer::captureGpuPositions(const sandcore::S
     path_ = GrainPath::GpuInterpolated;
     uploadGrains(scene, stepFraction, settings);
     path_ = path;
+    return readBackGpuPositions(scene, stepFraction, settings);
+}
+
+std::vector<sandcore::Vec3> SceneRenderer::readBackGpuPositions(const sandcore::Scene& scene, float stepFraction,
+                                                                const RenderSettings& settings) const {
     const std::int64_t count = gpuStore_.grainCount();
     std::vector<sandcore::Vec3> positions(static_cast<std::size_t>(count));
     if (count == 0) return positions;

@@ -192,7 +192,8 @@ void SceneRenderer::uploadGpuGrains(const sandcore::Scene& scene, const RenderSe
     stats_.uploadMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void SceneRenderer::setGpuUniforms(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings) {
+std::int64_t SceneRenderer::setGpuUniforms(const sandcore::Scene& scene, float stepFraction,
+                                           const RenderSettings& settings) const {
     const GlProgram& program = grainGpuProgram_;
     const sandcore::Int3 lower = scene.grid(sandcore::GridLevel::Lower).size();
     const sandcore::Int3 upper = scene.grid(sandcore::GridLevel::Upper).size();
@@ -208,7 +209,7 @@ void SceneRenderer::setGpuUniforms(const sandcore::Scene& scene, float stepFract
     glUniform1i(uniform(program, "normalSource"), gradient ? 1 : 0);
     gpuStore_.bind(kGrainTexturesUnit, kColumnNormalsUnit);
     // Every grain an instance, or only the visible list's.
-    instanceCount_ = settings.innerGrains ? gpuStore_.grainCount() : gpuStore_.visibleCount();
+    return settings.innerGrains ? gpuStore_.grainCount() : gpuStore_.visibleCount();
 }
 
 void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
@@ -227,7 +228,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     const glm::mat4 viewProjection = camera.projection(float(width) / float(height)) * camera.view();
     if (path_ == GrainPath::GpuInterpolated) {
         glUseProgram(grainGpuProgram_.get());
-        setGpuUniforms(scene, stepFraction, settings);
+        instanceCount_ = setGpuUniforms(scene, stepFraction, settings);
     }
     drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale);
     draft_.draw(draftPlacement_, glm::value_ptr(viewProjection));

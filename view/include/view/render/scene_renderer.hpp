@@ -55,6 +55,9 @@ public:
     /// read back by transform feedback (uploads first, as a draw would). For tests of R8 on the GPU.
     std::vector<sandcore::Vec3> captureGpuPositions(const sandcore::Scene& scene, float stepFraction,
                                                     const RenderSettings& settings);
+    /// As captureGpuPositions without uploading: what the GPU holds since the last draw.
+    std::vector<sandcore::Vec3> readBackGpuPositions(const sandcore::Scene& scene, float stepFraction,
+                                                     const RenderSettings& settings) const;
     /// The GPU's copy of the grains (GpuInterpolated).
     const GrainGpuStore& gpuStore() const { return gpuStore_; }
 
@@ -75,7 +78,8 @@ public:
 private:
     void uploadGrains(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings);
     void uploadGpuGrains(const sandcore::Scene& scene, const RenderSettings& settings);
-    void setGpuUniforms(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings);
+    /// Sets the GPU path's uniforms, binds its grains; returns the instances to draw.
+    std::int64_t setGpuUniforms(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings) const;
     void drawGrains(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection,
                     float pixelScale);
     void drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection);
