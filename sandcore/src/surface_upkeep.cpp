@@ -65,7 +65,7 @@ void SurfaceUpkeep::list(std::uint32_t grain, std::uint8_t bit, std::vector<std:
 void SurfaceUpkeep::markWorldCell(const Scene& scene, Int3 world) {
     for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
         const CellGrid& grid = scene.grid(level);
-        const Int3 origin = scene.gridOrigin(level);
+        const Int3 origin = origins_[index(level)];
         const int x = world.x - origin.x, y = world.y - origin.y, z = world.z - origin.z;
         if (grid.contains(x, y, z)) changedCells_.emplace_back(level, grid.index(x, y, z));
     }
@@ -92,13 +92,13 @@ void SurfaceUpkeep::refreshFlag(const Scene& scene, GridLevel level, std::uint32
 // neighbours, in either grid.
 void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std::uint32_t cell) {
     const Int3 c = scene.grid(level).coordinate(cell);
-    const Int3 o = scene.gridOrigin(level);
+    const Int3 o = origins_[index(level)];
     const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
     static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
     for (const Int3& d : kAround)
         for (GridLevel other : {GridLevel::Lower, GridLevel::Upper}) {
             const CellGrid& grid = scene.grid(other);
-            const Int3 origin = scene.gridOrigin(other);
+            const Int3 origin = origins_[index(other)];
             const int x = world.x + d.x - origin.x, y = world.y + d.y - origin.y, z = world.z + d.z - origin.z;
             if (grid.contains(x, y, z)) refreshFlag(scene, other, grid.index(x, y, z));
         }
@@ -133,13 +133,14 @@ void SurfaceUpkeep::update(const Scene& scene) {
         return;
     }
     changedCells_.clear();
+    origins_ = {scene.gridOrigin(GridLevel::Lower), scene.gridOrigin(GridLevel::Upper)};
     // Each moved grain filled its cell and emptied the one it came from (for a transition with
     // no glide, the same world cell in the other grid).
     for (std::uint32_t id : scene.movedGrains()) {
         list(id, kPlaceListed, changedPlace_);
         const GridLevel level = grains.level[id];
         const Int3 c = scene.grid(level).coordinate(grains.cell[id]);
-        const Int3 o = scene.gridOrigin(level);
+        const Int3 o = origins_[index(level)];
         const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
         const MoveCode from = grains.cameFrom[id];
         markWorldCell(scene, world);

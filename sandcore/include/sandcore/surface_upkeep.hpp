@@ -68,6 +68,7 @@ private:
     void list(std::uint32_t grain, std::uint8_t bit, std::vector<std::uint32_t>& into);
 
     bool trackGradient_ = false;
+    std::array<Int3, 2> origins_{};                     // Scene::gridOrigin of both grids, this update
     std::vector<Vec3> gradient_;
     std::vector<std::uint32_t> changedGradient_;
     std::vector<std::uint8_t> inner_;
