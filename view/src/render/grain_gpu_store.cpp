@@ -15,16 +15,18 @@ namespace {
 constexpr std::uint32_t kNotListed = std::numeric_limits<std::uint32_t>::max();
 
 // Sends the elements named by `indices` (sorted here) from `all`, one glBufferSubData per run of
-// consecutive indices. Returns the bytes sent.
+// indices at most maxGap apart (the gaps go up too, unchanged: fewer calls for a few bytes more).
+// Returns the bytes sent.
 template <class T>
-std::int64_t uploadRuns(GLenum target, GLuint buffer, std::span<const T> all, std::vector<std::uint32_t>& indices) {
+std::int64_t uploadRuns(GLenum target, GLuint buffer, std::span<const T> all, std::vector<std::uint32_t>& indices,
+                        std::uint32_t maxGap) {
     if (indices.empty()) return 0;
     std::sort(indices.begin(), indices.end());
     glBindBuffer(target, buffer);
     std::int64_t bytes = 0;
     for (std::size_t first = 0; first < indices.size();) {
         std::size_t last = first;
-        while (last + 1 < indices.size() && indices[last + 1] <= indices[last] + 1) ++last;
+        while (last + 1 < indices.size() && indices[last + 1] <= indices[last] + 1 + maxGap) ++last;
         const auto count = std::size_t(indices[last] - indices[first] + 1);
         glBufferSubData(target, GLintptr(std::size_t(indices[first]) * sizeof(T)), GLsizeiptr(count * sizeof(T)),
                         all.data() + indices[first]);
@@ -225,17 +227,17 @@ std::int64_t GrainGpuStore::uploadChanges(const sandcore::Scene& scene, const sa
     std::int64_t bytes = 0;
     sortedIds_.assign(surface.movedGrains().begin(), surface.movedGrains().end());
     for (std::uint32_t id : sortedIds_) places_[id] = placeOf(grains, id);
-    bytes += uploadRuns(GL_TEXTURE_BUFFER, places_gpu_.buffer.get(), std::span<const GrainPlace>(places_), sortedIds_);
+    bytes += uploadRuns(GL_TEXTURE_BUFFER, places_gpu_.buffer.get(), std::span<const GrainPlace>(places_), sortedIds_, 0);
     changedSlots_.clear();
     for (std::uint32_t id : surface.changedInnerFlags()) setVisible(id, surface.innerFlags()[id] == 0);
     // Slots past the end were vacated: nothing draws them.
     std::erase_if(changedSlots_, [&](std::uint32_t slot) { return slot >= visible_.size(); });
-    bytes += uploadRuns(GL_ARRAY_BUFFER, visibleBuffer_.get(), std::span<const std::uint32_t>(visible_), changedSlots_);
+    bytes += uploadRuns(GL_ARRAY_BUFFER, visibleBuffer_.get(), std::span<const std::uint32_t>(visible_), changedSlots_, 2);
     if (gradientUploaded_) {
         sortedIds_.assign(surface.changedGradientNormals().begin(), surface.changedGradientNormals().end());
         for (std::uint32_t id : sortedIds_) packedNormals_[id] = packNormal(surface.gradientNormals()[id]);
         bytes += uploadRuns(GL_TEXTURE_BUFFER, normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_),
-                            sortedIds_);
+                            sortedIds_, 4);
     }
     bytes += uploadColumns(surface);
     return bytes;
