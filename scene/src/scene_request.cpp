@@ -120,6 +120,10 @@ void applySceneDefaults(SceneSettings& settings) {
     if (!request.shape.empty()) requireKnownShape(request.shape);
     if (request.kind == SceneKind::Canvas && (!request.modelPath.empty() || !request.shape.empty()))
         throw std::invalid_argument("the canvas takes no model or shape (they are for the hourglass and the sculpture)");
+    if (!request.upAxis.empty() && !sandcore::parseUpAxis(request.upAxis))
+        throw std::invalid_argument("--up must be one of +x, -x, +y, -y, +z, -z, got '" + request.upAxis + "'");
+    if (request.modelPath.empty() && (!request.upAxis.empty() || !request.partRoles.empty()))
+        throw std::invalid_argument(std::string(request.upAxis.empty() ? "--part" : "--up") + " applies to a model file (--model)");
 }
 
 BuiltScene buildSceneWithReport(const SceneSettings& requested) {
@@ -134,7 +138,7 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
         requireMemory("the canvas is", resolution, sandcore::estimateSceneBytes(SceneKind::Canvas, width),
                       request.memoryLimit);
         const sandcore::CanvasSettings canvas = sandcore::canvasSettingsForWidth(resolution);
-        return {sandcore::makeCanvasScene(canvas, step), std::nullopt, 0};
+        return BuiltScene(sandcore::makeCanvasScene(canvas, step));
     }
     const bool hourglass = request.kind == SceneKind::Hourglass;
     sandcore::HourglassSettings settings;
@@ -148,29 +152,41 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
         requireMemory("the " + shape + " is", resolution, sandcore::estimateSceneBytes(request.kind, size),
                       request.memoryLimit);
         const sandcore::InsideMask mask = makeProceduralMask(shape, resolution, request.neckRadius);
-        if (!hourglass) return {sandcore::makeSculptureScene(mask, step), std::nullopt, 0};
-        return {sandcore::makeHourglassScene(mask, settings, step), std::nullopt, 0};
+        if (!hourglass) return BuiltScene(sandcore::makeSculptureScene(mask, step));
+        return BuiltScene(sandcore::makeHourglassScene(mask, settings, step));
     }
     sandcore::VoxelizeSettings voxelize;
     voxelize.resolution = resolution;
     voxelize.stretch = request.stretch;
     voxelize.robust = request.robust;
     voxelize.threads = std::max(1, step.threads);
-    ModelVoxelization model = voxelizeModelFile(request.modelPath, voxelize,
-                                                hourglass ? ModelUse::Hourglass : ModelUse::Sculpture,
-                                                request.memoryLimit);
-    sandcore::InsideMask mask = model.voxels.mask;
+    ModelShapeRequest shape;
+    shape.kind = request.kind;
+    shape.roles = request.partRoles;
+    if (!request.upAxis.empty()) shape.up = sandcore::parseUpAxis(request.upAxis);
+    SandSpace space = loadSandSpace(request.modelPath, voxelize, hourglass ? ModelUse::Hourglass : ModelUse::Sculpture,
+                                    shape, request.memoryLimit);
+    sandcore::InsideMask mask = std::move(space.space);
     // thesis §3.4 noNoise: single cells and spikes left by discretisation; the hourglass split then
     // carves the upper bulb with noSharpEdges (makeHourglassScene).
     const std::int64_t removed = request.noiseThreshold >= 0 ? sandcore::removeNoise(mask, request.noiseThreshold) : 0;
     if (mask.countInside() == 0)
         throw ModelError(request.modelPath, "no cell lies inside the model at resolution " +
                                                 std::to_string(resolution) +
-                                                (model.voxels.closedness.closed ? "" : " (the mesh is open; try --robust)"));
+                                                (space.model.voxels.closedness.closed ? "" : " (the mesh is open; try --robust)"));
     try {
         sandcore::Scene scene = hourglass ? sandcore::makeHourglassScene(mask, settings, step)
                                           : sandcore::makeSculptureScene(mask, step);
-        return {std::move(scene), std::move(model), removed};
+        BuiltScene built(std::move(scene));
+        built.model = std::move(space.model);
+        built.noiseCellsRemoved = removed;
+        built.parts = summarize(space.parts);
+        built.vessel = space.vessel;
+        built.upAxis = space.up;
+        built.upAxisFound = space.upFound;
+        built.cavityMilliseconds = space.cavityMilliseconds;
+        built.sandSpaceCells = mask.countInside();
+        return built;
     } catch (const std::invalid_argument& e) {
         throw ModelError(request.modelPath, e.what());
     }

@@ -2,6 +2,7 @@
 // and the speed, as text or one JSON object.
 #include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
+#include "app/cli/model_shape_json.hpp"
 #include "app/cli/scene_options.hpp"
 #include "scene/file_io.hpp"
 #include "scene/hex.hpp"
@@ -46,15 +47,16 @@ struct SimulateOptions {
 };
 
 // The scene to run: a loaded state (the file's seed and settings, unless given here) or a new build.
-sandcore::Scene sceneFor(const SimulateOptions& options, const CLI::App& command, SceneSettings& settings) {
-    if (options.load.empty()) return buildScene(settings);
+// A built scene carries the model's report (S7-S9); a loaded state has none.
+BuiltScene sceneFor(const SimulateOptions& options, const CLI::App& command, SceneSettings& settings) {
+    if (options.load.empty()) return buildSceneWithReport(settings);
     LoadedState loaded = loadState(options.load);
     if (command.count("--threads")) loaded.scene.setThreads(settings.step.threads);
     if (command.count("--seed")) loaded.scene.setSeed(settings.step.seed);
     if (options.fullSweep) loaded.scene.setSleeping(false);
     settings = loaded.settings;
     settings.step = loaded.scene.settings();
-    return std::move(loaded.scene);
+    return BuiltScene(std::move(loaded.scene));
 }
 
 int runSimulate(const SimulateOptions& options, const CLI::App& command) {
@@ -67,7 +69,8 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         exportFormatOf(options.exportFile);
         requireWritableFileTarget(options.exportFile);
     }
-    sandcore::Scene scene = sceneFor(options, command, settings);
+    BuiltScene built = sceneFor(options, command, settings);
+    sandcore::Scene& scene = built.scene;
     const bool canvas = settings.request.kind == sandcore::SceneKind::Canvas;
     if (options.pour > 0 && !canvas)
         throw std::invalid_argument("--pour releases sand on the canvas; use it with --scene canvas");
@@ -152,6 +155,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         if (!options.load.empty()) out["loaded"] = options.load;
         if (!options.save.empty()) out["saved"] = options.save;
         if (!options.exportFile.empty()) out["exported"] = options.exportFile;
+        addModelShapeJson(out, built);
         std::cout << out.dump() << "\n";
         return 0;
     }
