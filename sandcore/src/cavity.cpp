@@ -40,26 +40,26 @@ bool triangleTouchesBox(const Vec& a, const Vec& b, const Vec& c, double h) {
 CavitySearch findCavities(const InsideMask& solid) {
     const Int3 s = solid.size;
     const std::size_t layer = std::size_t(s.x) * std::size_t(s.z);
-    // 0 = not yet reached, 1 = wall, 2 = outside; cavities are 3, 4, ...
-    std::vector<std::int32_t> label(solid.inside.size(), 0);
-    for (std::size_t n = 0; n < label.size(); ++n)
-        if (solid.inside[n]) label[n] = 1;
+    // One byte per cell (wall 1, outside 2, a cavity 3): a label per cavity would cost four.
+    constexpr std::uint8_t kUnvisited = 0, kOutside = 2, kCavity = 3;
+    std::vector<std::uint8_t> state = solid.inside;
     std::vector<std::uint32_t> queue;
-    auto fill = [&](std::size_t seed, std::int32_t id) {
-        std::int64_t cells = 0;
+    // Marks every unvisited cell 6-connected to seed with `mark`; returns how many.
+    auto fill = [&](std::size_t seed, std::uint8_t mark, std::uint8_t from, std::vector<std::uint8_t>& cells) {
+        std::int64_t count = 0;
         queue.clear();
         queue.push_back(std::uint32_t(seed));
-        label[seed] = id;
+        cells[seed] = mark;
         while (!queue.empty()) {
             const std::size_t n = queue.back();
             queue.pop_back();
-            ++cells;
+            ++count;
             const int x = int(n % std::size_t(s.x));
             const int z = int((n / std::size_t(s.x)) % std::size_t(s.z));
             const int y = int(n / layer);
             auto visit = [&](bool inGrid, std::size_t m) {
-                if (inGrid && label[m] == 0) {
-                    label[m] = id;
+                if (inGrid && cells[m] == from) {
+                    cells[m] = mark;
                     queue.push_back(std::uint32_t(m));
                 }
             };
@@ -70,7 +70,7 @@ CavitySearch findCavities(const InsideMask& solid) {
             visit(y > 0, n - layer);
             visit(y + 1 < s.y, n + layer);
         }
-        return cells;
+        return count;
     };
     CavitySearch result;
     for (int y = 0; y < s.y; ++y)
@@ -78,23 +78,26 @@ CavitySearch findCavities(const InsideMask& solid) {
             for (int x = 0; x < s.x; ++x) {
                 const bool border = x == 0 || y == 0 || z == 0 || x == s.x - 1 || y == s.y - 1 || z == s.z - 1;
                 const std::size_t n = solid.indexOf(x, y, z);
-                if (border && label[n] == 0) result.outsideCells += fill(n, 2);
+                if (border && state[n] == kUnvisited) result.outsideCells += fill(n, kOutside, kUnvisited, state);
             }
-    std::int32_t next = 3, largestId = 0;
-    for (std::size_t n = 0; n < label.size(); ++n) {
-        if (label[n] != 0) continue;
-        const std::int64_t cells = fill(n, next);
+    std::size_t largestSeed = state.size();
+    for (std::size_t n = 0; n < state.size(); ++n) {
+        if (state[n] != kUnvisited) continue;
+        const std::int64_t cells = fill(n, kCavity, kUnvisited, state);
         ++result.cavities;
         result.cavityCells += cells;
         if (cells > result.largestCells) {
             result.largestCells = cells;
-            largestId = next;
+            largestSeed = n;
         }
-        ++next;
     }
     result.largest = InsideMask::empty(s);
-    if (largestId != 0)
-        for (std::size_t n = 0; n < label.size(); ++n) result.largest.inside[n] = label[n] == largestId ? 1 : 0;
+    // The largest cavity once more, from its seed, into the result (walls and outside stay 0).
+    if (largestSeed < state.size()) {
+        for (std::size_t n = 0; n < state.size(); ++n) result.largest.inside[n] = state[n] == kCavity ? 0 : 1;
+        fill(largestSeed, 2, 0, result.largest.inside);
+        for (std::uint8_t& cell : result.largest.inside) cell = cell == 2 ? 1 : 0;
+    }
     return result;
 }
 
