@@ -54,7 +54,8 @@ std::string defaultModelPath() { return std::string(SANDGLASS_SOURCE_DIR) + "/mo
 
 std::string defaultModelFor(SceneKind kind) {
     switch (kind) {
-    case SceneKind::Hourglass: return defaultModelPath();
+    // SPEC S12: the default scene shows a glass with thickness in its frame (S7-S10).
+    case SceneKind::Hourglass: return std::string(SANDGLASS_SOURCE_DIR) + "/models/framed_hourglass.obj";
     case SceneKind::Sculpture: return std::string(SANDGLASS_SOURCE_DIR) + "/models/snowman.obj";
     case SceneKind::Canvas: return {};
     }

@@ -10,6 +10,8 @@ namespace sandglass {
 void addViewOptions(CLI::App& command, ViewOptions& options) {
     addSceneOptions(command, options.scene);
     command.add_option("--mode", options.mode, "points, sprites, billboards or pseudo")->capture_default_str();
+    command.add_option("--palette", options.palette, "sand colours: desert, beach, white, volcanic or layers")
+        ->capture_default_str();
     addNumberOption(command, "--grains-per-cell", options.grainsPerCell, 1, kMaxGrainsPerCell,
                     "grains drawn per cell (default 4)");
     command.add_flag("--light", options.light, "lighting from estimated normals");
@@ -33,6 +35,10 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
     const std::optional<RenderMode> mode = parseRenderMode(options.mode);
     if (!mode) throw std::invalid_argument("--mode: unknown mode '" + options.mode + "' (points, sprites, billboards or pseudo)");
     state.render.mode = *mode;
+    const std::optional<SandPalette> palette = parseSandPalette(options.palette);
+    if (!palette)
+        throw std::invalid_argument("--palette: unknown palette '" + options.palette + "' (desert, beach, white, volcanic or layers)");
+    state.render.palette = *palette;
     state.render.grainsPerCell = options.grainsPerCell;
     state.render.lighting = options.light;
     state.render.innerGrains = !options.hideInner;

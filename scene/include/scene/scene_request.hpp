@@ -99,10 +99,10 @@ BuiltScene buildSceneWithReport(const SceneSettings& settings);
 /// The resolution a scene gets when none is asked for: 64 cells, the canvas 60 (R10's 60x10x60 over 60x40x60).
 int defaultResolution(sandcore::SceneKind kind);
 
-/// The bundled default vessel, models/hourglass.obj in the source tree.
+/// The bundled one-surface vessel, models/hourglass.obj in the source tree (the voxelizer's benchmark shape).
 std::string defaultModelPath();
 
-/// The model a scene shows when the user names none: models/hourglass.obj for the hourglass,
+/// The model a scene shows when the user names none: models/framed_hourglass.obj for the hourglass,
 /// models/snowman.obj for the sculpture, none (empty) for the canvas.
 std::string defaultModelFor(sandcore::SceneKind kind);
 

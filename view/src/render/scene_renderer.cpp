@@ -30,7 +30,7 @@ void hullAttributes(GLuint vertexArray, GLuint buffer) {
 // Display settings whose change invalidates the uploaded grains even when nothing moved.
 bool sameGrainInputs(const RenderSettings& a, const RenderSettings& b) {
     return a.innerGrains == b.innerGrains && a.lighting == b.lighting && a.normals == b.normals &&
-           a.jitter == b.jitter && a.cellSize == b.cellSize;
+           a.jitter == b.jitter && a.cellSize == b.cellSize && a.palette == b.palette;
 }
 
 } // namespace
@@ -62,28 +62,35 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
     // The Scribble patterns as two small textures: 32 sub-grains wide, one row per pattern.
     const std::vector<SandPattern> patterns = makeSandPatterns();
     std::vector<float> offsets;
-    std::vector<std::uint32_t> colors;
     for (const SandPattern& pattern : patterns)
-        for (std::size_t i = 0; i < pattern.offsets.size(); ++i) {
+        for (std::size_t i = 0; i < pattern.offsets.size(); ++i)
             offsets.insert(offsets.end(), {pattern.offsets[i][0], pattern.offsets[i][1], pattern.offsets[i][2], 0.0f});
-            colors.push_back(pattern.colors[i]);
-        }
     const auto rows = GLsizei(patterns.size());
     glBindTexture(GL_TEXTURE_2D, patternOffsets_.get());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kMaxGrainsPerCell, rows, 0, GL_RGBA, GL_FLOAT, offsets.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D, patternColors_.get());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kMaxGrainsPerCell, rows, 0, GL_RGBA, GL_UNSIGNED_BYTE, colors.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
+    uploadPatternColors(SandPalette::Desert);
 
     glUseProgram(grainProgram_.get());
     glUniform1i(uniform(grainProgram_, "patternOffsets"), 0);
     glUniform1i(uniform(grainProgram_, "patternColors"), 1);
     glUniform1i(uniform(grainProgram_, "patternCount"), GLint(patterns.size()));
     glUseProgram(0);
+}
+
+void SceneRenderer::uploadPatternColors(SandPalette palette) {
+    const std::vector<SandPattern> patterns = makeSandPatterns(kSandPatternCount, palette);
+    std::vector<std::uint32_t> colors;
+    for (const SandPattern& pattern : patterns) colors.insert(colors.end(), pattern.colors.begin(), pattern.colors.end());
+    glBindTexture(GL_TEXTURE_2D, patternColors_.get());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kMaxGrainsPerCell, GLsizei(patterns.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 colors.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    patternPalette_ = palette;
 }
 
 void SceneRenderer::setScene(const sandcore::Scene& scene, float cellSize) {
@@ -143,6 +150,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (width <= 0 || height <= 0) return;
 
+    if (settings.palette != patternPalette_) uploadPatternColors(settings.palette);
     uploadGrains(scene, stepFraction, settings);
     const glm::mat4 viewProjection = camera.projection(float(width) / float(height)) * camera.view();
     drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale);

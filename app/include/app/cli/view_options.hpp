@@ -15,6 +15,7 @@ namespace sandglass {
 struct ViewOptions {
     SceneOptions scene;               ///< scene, model or shape, resolution, seed, threads
     std::string mode = "points";      ///< points, sprites, billboards or pseudo
+    std::string palette = "desert";   ///< S12: desert, beach, white, volcanic or layers
     int grainsPerCell = 4;            ///< 1..32
     bool light = false;               ///< lighting from estimated normals
     bool hideInner = false;           ///< skip inner grains

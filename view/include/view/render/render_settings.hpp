@@ -2,6 +2,8 @@
 // How grains are drawn (SPEC V1-V6): the display half of the application state. The panels
 // change it; the renderer reads it every frame.
 
+#include "view/render/sand_palette.hpp"
+
 #include "sandcore/normals.hpp"
 
 #include <cstdint>
@@ -48,6 +50,7 @@ struct RenderSettings {
     float quadSize = 0.9f;                ///< billboards: quad edge in cells at 1 grain per cell (shrinks with k)
     float jitter = 0.5f;                  ///< R8 jitter 0..1 of a grain inside its cell
     float cellSize = 1.0f;                ///< world units per cell (the thesis's mSize)
+    SandPalette palette = SandPalette::Desert; ///< S12: the sand's colours; default warm desert sand
     sandcore::NormalMethod normals = sandcore::NormalMethod::OccupancyGradient; ///< R12 estimate used by V3; beyond the thesis (its method is ColumnHeights)
 };
 

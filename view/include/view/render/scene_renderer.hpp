@@ -59,6 +59,7 @@ private:
     void drawGrains(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection,
                     float pixelScale);
     void drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection);
+    void uploadPatternColors(SandPalette palette); // S12: the pattern colours of a palette
 
     GlProgram grainProgram_, hullProgram_;
     GlVertexArray grainArray_, hullArray_, lineArray_;
@@ -70,6 +71,7 @@ private:
     std::int64_t instanceCount_ = 0;
     std::int64_t hullVertices_ = 0, lineVertices_ = 0;
     std::vector<sandcore::CellBox> hullUpperObstacles_, hullLowerObstacles_; // what the hull shows
+    SandPalette patternPalette_ = SandPalette::Desert; // the palette the colour texture holds
     bool grainsStale_ = true;
     RenderSettings uploadedWith_;
     RenderStats stats_;
