@@ -1,5 +1,7 @@
 #include "gui/panels.hpp"
 
+#include "gui/model_shape_panel.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -140,6 +142,7 @@ void drawDisplaySection(AppState& state) {
     else
         ImGui::SliderFloat("grain size (cells)", &render.quadSize, 0.2f, 2.0f, "%.2f");
     ImGui::SliderFloat("jitter", &render.jitter, 0.0f, 1.0f, "%.2f");
+    drawPaletteChoice(state);
 }
 
 void drawSceneSection(AppState& state) {
@@ -220,6 +223,7 @@ void drawModelOptions(AppState& state) {
     ImGui::BeginDisabled(request.kind != sandcore::SceneKind::Hourglass);
     if (ImGui::Checkbox("carve the upper bulb to drain", &request.drainCompletely)) state.commands.push(Command::Rebuild);
     ImGui::EndDisabled();
+    drawModelShapeOptions(state);
     ImGui::TreePop();
 }
 

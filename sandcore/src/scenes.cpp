@@ -81,7 +81,13 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const HourglassSettings& h
 }
 
 Scene makeSculptureScene(const InsideMask& model, const StepSettings& step) {
+    return makeSculptureScene(model, InsideMask{}, step);
+}
+
+Scene makeSculptureScene(const InsideMask& model, const InsideMask& obstacles, const StepSettings& step) {
     requireInside(model, "the model");
+    if (!obstacles.inside.empty() && !(obstacles.size == model.size))
+        throw std::invalid_argument("the obstacles' mask differs in size from the model's");
     const Int3 m = model.size;
     const SceneGridSizes sizes = sceneGridSizes(SceneKind::Sculpture, m);
     CellGrid upper(sizes.upper, kEmpty);
@@ -93,6 +99,8 @@ Scene makeSculptureScene(const InsideMask& model, const StepSettings& step) {
         for (int z = 0; z < m.z; ++z)
             for (int x = 0; x < m.x; ++x)
                 if (model.at(x, y, z)) fill.push_back(upper.index(x + offsetX, y, z + offsetZ));
+                else if (!obstacles.inside.empty() && obstacles.at(x, y, z))
+                    upper[upper.index(x + offsetX, y, z + offsetZ)] = kInvalid;
     return Scene(SceneKind::Sculpture, std::move(upper), std::move(lower), std::move(fill), step);
 }
 

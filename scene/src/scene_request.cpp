@@ -177,7 +177,7 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
                                                 (space.model.voxels.closedness.closed ? "" : " (the mesh is open; try --robust)"));
     try {
         sandcore::Scene scene = hourglass ? sandcore::makeHourglassScene(mask, settings, step)
-                                          : sandcore::makeSculptureScene(mask, step);
+                                          : sandcore::makeSculptureScene(mask, space.obstacles, step);
         BuiltScene built(std::move(scene));
         built.model = std::move(space.model);
         built.noiseCellsRemoved = removed;

@@ -7,6 +7,7 @@
 #include "support/temporary_folder.hpp"
 
 #include "sandcore/cell_grid.hpp"
+#include "sandcore/mesh_shapes.hpp"
 #include "sandcore/scene.hpp"
 
 #include <doctest/doctest.h>
@@ -133,4 +134,42 @@ TEST_CASE("a glass whose ends are open and no frame encloses nothing: it stays a
     const SandSpace space = loadSandSpace((folder / "tube.obj").string(), settings, ModelUse::MaskOnly, {});
     CHECK(space.vessel == VesselKind::Solid);
     CHECK(space.cavities == 0);
+}
+
+TEST_CASE("a sculpture on a pedestal: the pedestal stays as an obstacle and sand rests on it (S11)") {
+    TemporaryFolder folder;
+    std::ofstream obj(folder / "statue.obj");
+    auto write = [&](const char* name, const sandcore::TriangleMesh& mesh, std::size_t base) {
+        obj << "o " << name << '\n';
+        for (const auto& v : mesh.vertices) obj << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
+        for (const auto& t : mesh.triangles) obj << "f " << t[0] + base << ' ' << t[1] + base << ' ' << t[2] + base << '\n';
+    };
+    const sandcore::TriangleMesh pedestal = sandcore::makeBoxMesh({-1.0f, 0.0f, -1.0f}, {1.0f, 0.5f, 1.0f});
+    sandcore::TriangleMesh statue = sandcore::makeIcosphereMesh(2, 0.6f);
+    for (auto& v : statue.vertices) v.y += 1.1f;
+    write("pedestal", pedestal, 1);
+    write("statue", statue, 1 + pedestal.vertices.size());
+    obj.close();
+    SceneRequest request;
+    request.kind = sandcore::SceneKind::Sculpture;
+    request.modelPath = (folder / "statue.obj").string();
+    request.resolution = 24;
+    BuiltScene built = buildSceneWithReport({request, {}});
+    REQUIRE(built.parts.size() == 2);
+    CHECK(built.parts[0].role == PartRole::Static);
+    CHECK(built.parts[1].role == PartRole::Sand);
+    const sandcore::CellGrid& upper = built.scene.grid(sandcore::GridLevel::Upper);
+    const auto invalid = std::count(upper.cells().begin(), upper.cells().end(), sandcore::kInvalid);
+    CHECK(invalid > 24 * 5 * 24 / 2); // the pedestal's cells
+    const std::int64_t grains = built.scene.grainCount();
+    for (int i = 0; i < 100000 && !built.scene.settled(); ++i) built.scene.step();
+    REQUIRE(built.scene.settled());
+    CHECK(built.scene.grainCount() == grains);
+    CHECK(built.scene.counters().grainsUpper > 0); // a heap on top of the pedestal
+    // Made sand by the user, the pedestal collapses with the rest.
+    request.partRoles = {{"pedestal", PartRole::Sand}};
+    BuiltScene allSand = buildSceneWithReport({request, {}});
+    const sandcore::CellGrid& open = allSand.scene.grid(sandcore::GridLevel::Upper);
+    CHECK(std::count(open.cells().begin(), open.cells().end(), sandcore::kInvalid) == 0);
+    CHECK(allSand.scene.grainCount() > grains);
 }

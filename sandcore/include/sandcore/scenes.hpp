@@ -29,6 +29,11 @@ Scene makeHourglassScene(const InsideMask& vessel, const HourglassSettings& hour
 /// high as the model. Throws std::invalid_argument for an empty mask.
 Scene makeSculptureScene(const InsideMask& model, const StepSettings& step = {});
 
+/// S11: as makeSculptureScene, with the cells of `obstacles` (the model's static parts, a mask of
+/// the model's size, or an empty mask for none) INVALID where the model is not: the sand
+/// collapses onto and around them. Throws std::invalid_argument for a mask of another size.
+Scene makeSculptureScene(const InsideMask& model, const InsideMask& obstacles, const StepSettings& step);
+
 /// The cell of the upper grid's top row over the grid's centre, where `simulate --pour` releases sand.
 std::uint32_t pourCell(const Scene& scene);
 

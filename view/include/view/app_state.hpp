@@ -127,6 +127,8 @@ struct AppState {
     std::string glVersion;          ///< GL_VERSION
     std::string statusLine;         ///< the last message (error or confirmation) for the user
     std::vector<std::string> modelFiles; ///< files found in models/, for the model list
+    std::string partsListPath;      ///< S7: the model file partsList was read from; empty = not read
+    std::vector<PartSummary> partsList; ///< S7: that model's parts with their roles, for the checklist
     FrameStatistics stats;          ///< numbers shown in the statistics panel
     CommandQueue commands;          ///< requests to serve after the panels are built
     bool building = false;          ///< a scene is being built in the background

@@ -30,7 +30,7 @@ PaletteTint paletteTint(SandPalette palette) {
     case SandPalette::Layers: break;
     }
     // Within V2's range: green 220-240 below red, blue 150-190 well below green.
-    return {232, 240, 6, 12, 36, 70, 220, 150, 190};
+    return {236, 240, 12, 18, 40, 66, 220, 150, 190};
 }
 
 std::uint32_t layerColor(SandPalette palette, std::uint32_t identity, std::uint32_t grainsPerBand) {
