@@ -13,8 +13,8 @@ namespace sandglass {
 /// `parts` as a list of {name, triangles, closed, role}.
 nlohmann::ordered_json partsJson(const std::vector<PartSummary>& parts);
 
-/// Adds `parts`, `vessel`, `up_axis`, `up_axis_found`, `sand_space_cells` and
-/// `cavity_milliseconds` of a built scene (an empty list, "solid" and "+y" without a model).
+/// Adds `parts`, `vessel`, `up_axis`, `up_axis_found`, `sand_space_cells`, `upper_cells` (cells of
+/// the upper grid sand may take) and `cavity_milliseconds` of a built scene (an empty list, "solid" and "+y" without a model).
 void addModelShapeJson(nlohmann::ordered_json& out, const BuiltScene& built);
 
 } // namespace sandglass
