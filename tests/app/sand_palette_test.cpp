@@ -5,8 +5,8 @@
 
 #include "app/application.hpp"
 #include "scene/scene_request.hpp"
-#include "view/render/sand_palette.hpp"
-#include "view/render/sand_patterns.hpp"
+#include "scene/sand_palette.hpp"
+#include "scene/sand_patterns.hpp"
 
 #include "sandcore/display_positions.hpp"
 

@@ -5,7 +5,7 @@
 // Pure CPU code in the scene layer: the renderer uploads the patterns, the exporters (E2) take
 // their colours for grains that have none of their own.
 
-#include "view/render/sand_palette.hpp"
+#include "scene/sand_palette.hpp"
 
 #include <array>
 #include <cstdint>

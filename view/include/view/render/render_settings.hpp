@@ -2,7 +2,7 @@
 // How grains are drawn (SPEC V1-V6): the display half of the application state. The panels
 // change it; the renderer reads it every frame.
 
-#include "view/render/sand_palette.hpp"
+#include "scene/sand_palette.hpp"
 
 #include "sandcore/normals.hpp"
 

@@ -1,4 +1,4 @@
-#include "view/render/sand_palette.hpp"
+#include "scene/sand_palette.hpp"
 
 #include <algorithm>
 
