@@ -156,17 +156,19 @@ void Application::bindTarget() const {
 
 int Application::run() {
     auto last = Clock::now();
+    int exitCode = 0;
     while (!window_.shouldClose()) {
         glfwPollEvents();
         const auto now = Clock::now();
         renderFrame(std::chrono::duration<double>(now - last).count());
         last = now;
         const bool lastFrame = options_.frameLimit > 0 && framesDrawn_ >= options_.frameLimit;
-        if (lastFrame && !options_.screenshotFile.empty()) saveScreenshot(options_.screenshotFile);
+        // A screenshot asked for on the command line that cannot be written fails the run.
+        if (lastFrame && !options_.screenshotFile.empty() && !saveScreenshot(options_.screenshotFile)) exitCode = 1;
         // Commands that need a whole frame drawn first, or that end the loop.
         bool quit = false, benchmark = false;
         for (Command command : state_.commands.take()) {
-            if (command == Command::Screenshot) saveScreenshot("sandglass-" + std::to_string(++screenshotsTaken_) + ".png");
+            if (command == Command::Screenshot) saveScreenshot(nextScreenshotName());
             quit = quit || command == Command::Quit;
             benchmark = benchmark || command == Command::Benchmark;
         }
@@ -177,7 +179,16 @@ int Application::run() {
         }
         if (lastFrame || quit) break;
     }
-    return 0;
+    return exitCode;
+}
+
+std::filesystem::path Application::nextScreenshotName() {
+    // Never over an earlier screenshot, of this run or of an earlier one.
+    std::error_code error;
+    std::filesystem::path file;
+    do file = "sandglass-" + std::to_string(++screenshotsTaken_) + ".png";
+    while (std::filesystem::exists(file, error) && screenshotsTaken_ < 1'000'000);
+    return file;
 }
 
 void Application::finishFrame() {
@@ -568,16 +579,20 @@ RgbImage Application::captureFrame() const {
     return readPixels(width, height);
 }
 
-void Application::saveScreenshot(const std::filesystem::path& file) {
+bool Application::saveScreenshot(const std::filesystem::path& file) {
     try {
         writePng(file, captureFrame());
-        state_.statusLine = "saved " + file.string();
+        std::error_code error;
+        const std::filesystem::path shown = std::filesystem::absolute(file, error);
+        state_.statusLine = "saved " + (error ? file : shown).string();
         std::printf("screenshot %s\n", file.string().c_str());
+        std::fflush(stdout);
+        return true;
     } catch (const std::exception& error) {
         state_.statusLine = error.what();
         std::fprintf(stderr, "sandglass: %s\n", error.what());
+        return false;
     }
-    std::fflush(stdout);
 }
 
 void Application::runInteractiveBenchmark() {

@@ -1,5 +1,6 @@
 #include "bench/speed_error_report.hpp"
 
+#include "bench/granular_report.hpp"
 #include "bench/plausibility.hpp"
 #include "bench/report_files.hpp"
 #include "bench/simulation_bench.hpp"
@@ -246,13 +247,14 @@ bool writeSpeedErrorReport(const ReportOptions& options, std::ostream& log) {
     const Section voxelization = voxelizationSection(options, log);
     const Section simulation = simulationSection(options, log);
     const Section plausibility = plausibilitySection(options, log);
+    const GranularSection granular = granularSection(options, log);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const bool passed = voxelization.passed && simulation.passed && plausibility.passed;
+    const bool passed = voxelization.passed && simulation.passed && plausibility.passed && granular.passed;
     std::string text = "# sandglass: speed against error\n\n"
                        "Produced by `" + options.commandLine + "` on " + today() + " on " + machineDescription() +
                        " in " + fixed(seconds, 1) + " s" + (options.quick ? " (quick: small resolutions)" : "") +
                        ". Times are medians of whole runs on a shared machine: compare ratios within one report.\n\n" +
-                       voxelization.markdown + simulation.markdown + plausibility.markdown +
+                       voxelization.markdown + simulation.markdown + plausibility.markdown + granular.markdown +
                        "Checks: " + (passed ? "all passed." : "**some FAILED** (see above).") + "\n";
     writeText(options.outDir / "README.md", text);
     return passed;

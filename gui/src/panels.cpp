@@ -204,6 +204,19 @@ void drawSceneSection(AppState& state) {
     if (ImGui::InputScalar("seed", ImGuiDataType_U64, &scene.step.seed)) state.commands.push(Command::ApplyStepSettings);
     if (ImGui::SliderInt("threads", &scene.step.threads, kThreadsRange.min, 16))
         state.commands.push(Command::ApplyStepSettings);
+    // PH1: the rules, from the next step on; the scene is not rebuilt.
+    sandcore::PhysicsSettings& physics = scene.step.physics;
+    int level = int(physics.level);
+    if (ImGui::Combo("physics", &level, "classic\0granular\0")) {
+        physics.level = sandcore::PhysicsLevel(level);
+        state.commands.push(Command::ApplyStepSettings);
+    }
+    ImGui::BeginDisabled(physics.level != sandcore::PhysicsLevel::Granular);
+    ImGui::SliderFloat("repose angle", &physics.reposeDegrees, float(kReposeRange.min), float(kReposeRange.max), "%.0f deg");
+    if (ImGui::IsItemDeactivatedAfterEdit()) state.commands.push(Command::ApplyStepSettings);
+    ImGui::SliderFloat("gravity", &physics.gravity, 0.005f, 4.0f, "%.3f cells/step^2", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemDeactivatedAfterEdit()) state.commands.push(Command::ApplyStepSettings);
+    ImGui::EndDisabled();
     if (ImGui::Button("Rebuild scene")) state.commands.push(Command::Rebuild);
     ImGui::SameLine();
     if (ImGui::Button("Frame camera")) state.commands.push(Command::FrameCamera);

@@ -9,6 +9,8 @@ void GrainStore::clear() {
     movedAtStep.clear();
     identity.clear();
     color.clear();
+    fallSpeed.clear();
+    fallFraction.clear();
 }
 
 std::uint32_t GrainStore::add(GridLevel where, std::uint32_t cellIndex, std::uint32_t grainIdentity,
@@ -19,6 +21,8 @@ std::uint32_t GrainStore::add(GridLevel where, std::uint32_t cellIndex, std::uin
     movedAtStep.push_back(0);
     identity.push_back(grainIdentity);
     color.push_back(rgba);
+    fallSpeed.push_back(0);
+    fallFraction.push_back(0);
     return std::uint32_t(cell.size() - 1);
 }
 
@@ -30,12 +34,16 @@ std::uint32_t GrainStore::removeBySwap(std::uint32_t id) {
     movedAtStep[id] = movedAtStep[last];
     identity[id] = identity[last];
     color[id] = color[last];
+    fallSpeed[id] = fallSpeed[last];
+    fallFraction[id] = fallFraction[last];
     level.pop_back();
     cell.pop_back();
     cameFrom.pop_back();
     movedAtStep.pop_back();
     identity.pop_back();
     color.pop_back();
+    fallSpeed.pop_back();
+    fallFraction.pop_back();
     return last;
 }
 

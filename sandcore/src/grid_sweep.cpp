@@ -1,5 +1,6 @@
 #include "grid_sweep.hpp"
 
+#include "granular_rules.hpp"
 #include "sand_rules.hpp"
 #include "sandcore/worker_pool.hpp"
 
@@ -32,7 +33,7 @@ void GridSweep::wake(std::uint32_t cell) {
     wakeAt(int(x), y, int(rest % std::uint32_t(size_.z)));
 }
 
-// Sets the awake bits x0..x1 (at most 3 apart) of one row with one or two word operations.
+// Sets the awake bits x0..x1 (at most 63 apart) of one row with one or two word operations.
 void GridSweep::wakeSpan(std::size_t row, int x0, int x1) {
     std::uint64_t* words = words_.data() + row * std::size_t(rowWords_);
     const int first = x0 >> 6, last = x1 >> 6;
@@ -54,8 +55,57 @@ void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
 }
 
-void GridSweep::wakeAroundEmptied(int x, int y, int z) {
-    wakePredecessorsOf(x, y, z);
+// Wakes the grains of layer y at the cells of `mask` (GranularRules::wakeMask) around (x, z);
+// EMPTY cells stay asleep. That is exact: when this runs, during the sweep of layer y or below,
+// no grain can enter those cells before they are visited in this step (grains only move down,
+// and layer y and those above have not been swept yet), and one that enters later is woken by
+// its move.
+void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, std::uint64_t mask) {
+    constexpr int reach = kGranularReach, window = 2 * kGranularReach + 1;
+    const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, size_.x - 1);
+    const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
+    const std::size_t layerRow = std::size_t(y) * std::size_t(size_.z);
+    for (int zz = z0; zz <= z1; ++zz) {
+        const auto rowMask = std::uint32_t(mask >> ((zz - z + reach) * window)) & ((1u << window) - 1);
+        if (!rowMask) continue;
+        const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
+        std::uint64_t* words = words_.data() + (layerRow + std::size_t(zz)) * std::size_t(rowWords_);
+        bool any = false;
+        for (int xx = x0; xx <= x1; ++xx)
+            if ((rowMask >> (xx - x + reach) & 1u) && cells[xx] >= 0) {
+                words[xx >> 6] |= std::uint64_t{1} << (xx & 63);
+                any = true;
+            }
+        if (any) rowAwake_[layerRow + std::size_t(zz)] = 1;
+    }
+}
+
+// The grains whose granular options an EMPTY (x, y, z) can widen (granular_rules.hpp says what a
+// grain reads): in layer y, those within 3 columns whose sideways path may cross it; in layer
+// y+1, those within 3 columns that may now fall or slide into it; in each higher layer up to
+// maxDrop above, those whose look down this column may now reach further, which needs every
+// cell of the column between them and (x, y, z) EMPTY.
+void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
+    if (y > 0) wakeGrainsAround(grid, x, y, z, granular_->wakeMask(0)); // layer 0 only falls or transitions
+    const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
+    for (int layer = y + 1; layer <= top; ++layer) {
+        if (layer > y + 1 && grid.at(x, layer - 1, z) != kEmpty) break;
+        wakeGrainsAround(grid, x, layer, z, granular_->wakeMask(layer - y));
+    }
+}
+
+void GridSweep::wakeAroundEmptied(const CellGrid& grid, int x, int y, int z) {
+    if (granular_)
+        wakeAroundEmptiedBy<true>(grid, x, y, z);
+    else
+        wakeAroundEmptiedBy<false>(grid, x, y, z);
+}
+
+template <bool Granular> inline void GridSweep::wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z) {
+    if constexpr (Granular)
+        wakeForGranular(grid, x, y, z);
+    else
+        wakePredecessorsOf(x, y, z);
     if (!above_ || y != size_.y - 1) return;
     if (deferWakesAbove_)
         deferredWakesAbove_.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
@@ -99,7 +149,8 @@ int GridSweep::awakeRowsInLayer(int y) const {
 }
 
 // The hot path: `inline` keeps it inside the strip loop, which the compiler otherwise declines
-// at -O3 (a call per visited cell costs about a tenth of a step).
+// at -O3 (a call per visited cell costs about a tenth of a step). The thesis's rules only: the
+// granular ones go through visitGranular, chosen once per sweep, so classic pays no test per grain.
 inline bool GridSweep::visitCell(const SweepContext& context, int x, int y, int z) {
     CellGrid& grid = context.grid;
     const std::uint32_t from = grid.index(x, y, z);
@@ -118,11 +169,29 @@ inline bool GridSweep::visitCell(const SweepContext& context, int x, int y, int 
     grains.movedAtStep[std::size_t(grain)] = context.step;
 
     if (y - 1 > 0 || bottomIsOutlet_) wakeAt(x + target->dx, y - 1, z + target->dz); // it may move on next step
-    wakeAroundEmptied(x, y, z);                                                      // the cell it left is free
+    wakeAroundEmptiedBy<false>(grid, x, y, z);                                       // the cell it left is free
     return true;
 }
 
-SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip) {
+bool GridSweep::visitGranular(const SweepContext& context, int x, int y, int z) {
+    const GranularOutcome outcome = granular_->visit(context.grid, context.grains, context.seed, context.step,
+                                                     std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
+    if (outcome.kind == GranularOutcome::Waiting) {
+        wakeAt(x, y, z); // in motion: visited again next step
+        // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
+        // speed changed without a cell emptying, so the grain above must look again.
+        if (y + 1 < size_.y && context.grid.at(x, y + 1, z) >= 0) wakeAt(x, y + 1, z);
+    }
+    if (outcome.kind != GranularOutcome::Moved) return false;
+    const Int3 to = outcome.to;
+    if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
+    wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
+    return true;
+}
+
+// The strip loop, instantiated once per rule set: the classic one is main's loop exactly (each
+// word's awake bits taken at once), with no test of the rule set per word or per grain.
+template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip) {
     SweepResult totals;
     const Int3 size = size_;
     const int zEnd = std::min((strip + 1) * kStripRows, size.z);
@@ -130,17 +199,36 @@ SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip)
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size.z) + std::uint32_t(z);
         if (context.sleeping && !rowAwake_[row]) continue;
         rowAwake_[row] = 0;
-        // Moves only wake cells in the layers above and below, never in this row: take its bits
-        // first. Without sleeping, every cell of the row is visited as if awake.
+        // Classic moves only wake cells in the layers above and below, never in this row: take its
+        // bits first. Without sleeping, every cell of the row is visited as if awake.
         std::uint64_t* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
         for (int w = 0; w < rowWords_; ++w) {
+            if constexpr (Granular) {
+                if (context.sleeping) {
+                    // Granular moves also wake cells of their own layer (the paths): a bit set ahead
+                    // of the cell being visited is visited in this step, one set behind it in the
+                    // next, as a full sweep would see the change. So each bit is taken as it is reached.
+                    std::uint64_t ahead = ~std::uint64_t{0};
+                    while (const std::uint64_t bits = words[w] & ahead) {
+                        const int bit = __builtin_ctzll(bits);
+                        words[w] &= ~(std::uint64_t{1} << bit);
+                        ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
+                        ++totals.visited;
+                        totals.moves += visitGranular(context, w * 64 + bit, y, z) ? 1 : 0;
+                    }
+                    continue;
+                }
+            }
             std::uint64_t bits = context.sleeping ? words[w] : wholeWord(w);
             words[w] = 0;
             while (bits) {
                 const int x = w * 64 + __builtin_ctzll(bits);
                 bits &= bits - 1;
                 ++totals.visited;
-                totals.moves += visitCell(context, x, y, z) ? 1 : 0;
+                if constexpr (Granular)
+                    totals.moves += visitGranular(context, x, y, z) ? 1 : 0;
+                else
+                    totals.moves += visitCell(context, x, y, z) ? 1 : 0;
             }
         }
     }
@@ -148,6 +236,10 @@ SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip)
 }
 
 SweepResult GridSweep::sweep(const SweepContext& context, WorkerPool* pool) {
+    return granular_ ? sweepBy<true>(context, pool) : sweepBy<false>(context, pool);
+}
+
+template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& context, WorkerPool* pool) {
     SweepResult result;
     const Int3 size = size_;
     const int strips = (size.z + kStripRows - 1) / kStripRows;
@@ -164,13 +256,13 @@ SweepResult GridSweep::sweep(const SweepContext& context, WorkerPool* pool) {
         const bool parallel = threaded && awakeRows >= kMinAwakeRowsForThreads;
         for (int phase = 0; phase < 2; ++phase) {
             if (!parallel) {
-                for (int strip = phase; strip < strips; strip += 2) add(sweepStrip(context, y, strip));
+                for (int strip = phase; strip < strips; strip += 2) add(sweepStrip<Granular>(context, y, strip));
                 continue;
             }
             const int count = (strips - phase + 1) / 2;
             pool->parallelFor(count, [&](int i) {
                 const int strip = phase + 2 * i;
-                const SweepResult t = sweepStrip(context, y, strip);
+                const SweepResult t = sweepStrip<Granular>(context, y, strip);
                 stripTotals[std::size_t(strip)].moves += t.moves;
                 stripTotals[std::size_t(strip)].visited += t.visited;
             });

@@ -5,8 +5,8 @@
 // Canonical visiting order, the same for every thread count: layers from the bottom up; within
 // a layer, strips of kStripRows rows in two phases (even strips, then odd strips); within a strip,
 // rows by ascending z and cells by ascending x. A grain in row z only reads and writes rows
-// z-1..z+1 of the layers next to it, so strips of one phase never touch each other's cells and
-// may run on different threads in any order.
+// z-1..z+1 of the layers next to it (granular: z-3..z+3, still less than a strip), so strips of
+// one phase never touch each other's cells and may run on different threads in any order.
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
@@ -17,6 +17,7 @@
 namespace sandcore {
 
 class WorkerPool;
+class GranularRules;
 
 inline constexpr int kStripRows = 8;
 
@@ -43,12 +44,16 @@ public:
     /// transition (the upper grid). The grid itself is passed to each sweep, so a Scene can move.
     GridSweep(Int3 gridSize, bool bottomIsOutlet);
 
+    /// The rules to apply: the granular ones (PH1), or the thesis's when null. Not owned.
+    void setGranular(const GranularRules* granular) { granular_ = granular; }
+
     void wake(std::uint32_t cell);              ///< the cell is visited in its layer's next turn
     void wakeAt(int x, int y, int z);           ///< as wake, by coordinate
     void wakePredecessorsOf(int x, int y, int z); ///< the 9 cells above (x, y, z)
-    /// A grain left (x, y, z): wakes the 9 cells above it, and the outlet cell of the grid above
+    /// A grain left (x, y, z) of grid: wakes every grain whose options that can widen (classic:
+    /// the 9 cells above; granular: see wakeForGranular), and the outlet cell of the grid above
     /// when (x, y, z) lies in the top layer. Every way a cell empties goes through here (R5).
-    void wakeAroundEmptied(int x, int y, int z);
+    void wakeAroundEmptied(const CellGrid& grid, int x, int y, int z);
     void wakeEveryGrain(const CellGrid& grid); ///< after edits that bypass the rules
     void clear();                               ///< nothing awake
 
@@ -93,16 +98,22 @@ public:
     }
 
 private:
-    SweepResult sweepStrip(const SweepContext& context, int y, int strip);
-    bool visitCell(const SweepContext& context, int x, int y, int z); // true when a grain moved
+    template <bool Granular> SweepResult sweepBy(const SweepContext& context, WorkerPool* pool);
+    template <bool Granular> SweepResult sweepStrip(const SweepContext& context, int y, int strip);
+    template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
+    bool visitCell(const SweepContext& context, int x, int y, int z); // classic rules; true when a grain moved
     void clearRow(std::uint32_t row);
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
+    void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, std::uint64_t mask);
+    void wakeForGranular(const CellGrid& grid, int x, int y, int z);
+    bool visitGranular(const SweepContext& context, int x, int y, int z); // true when a grain moved
     int awakeRowsInLayer(int y) const;
 
     Int3 size_;
     bool bottomIsOutlet_;
     GridSweep* above_ = nullptr;
+    const GranularRules* granular_ = nullptr;
     bool deferWakesAbove_ = false;
     std::vector<std::uint32_t> deferredWakesAbove_; // x + sizeX * z of the outlet cells to wake
     int rowWords_;                       // 64-bit words per row of awake bits

@@ -1,6 +1,8 @@
 #include "sandcore/scene.hpp"
 
+#include "granular_rules.hpp"
 #include "grid_sweep.hpp"
+#include "neck_flow.hpp"
 #include "sandcore/counter_random.hpp"
 #include "sandcore/worker_pool.hpp"
 
@@ -48,6 +50,31 @@ Scene::Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::ve
     reset();
 }
 
+void Scene::configurePhysics() {
+    const PhysicsSettings& physics = settings_.physics;
+    validatePhysics(physics);
+    const bool granular = physics.level == PhysicsLevel::Granular;
+    granular_ = granular ? std::make_unique<GranularRules>(physics) : nullptr;
+    // Model only what a scene needs: the neck's discharge belongs to the hourglass.
+    neckFlow_ = granular && kind_ == SceneKind::Hourglass
+                    ? std::make_unique<NeckFlow>(openCellsOfBottomLayer(upperLayout_), double(physics.gravity))
+                    : nullptr;
+    upperSweep_->setGranular(granular_.get());
+    lowerSweep_->setGranular(granular_.get());
+}
+
+void Scene::setPhysics(const PhysicsSettings& physics) {
+    validatePhysics(physics);
+    settings_.physics = physics;
+    configurePhysics();
+    std::fill(grains_.fallSpeed.begin(), grains_.fallSpeed.end(), 0u);
+    std::fill(grains_.fallFraction.begin(), grains_.fallFraction.end(), std::uint16_t{0});
+    // The new rules read further than the old ones: every grain looks again (a superset of the awake set).
+    markEverythingAwake();
+}
+
+double Scene::neckFlowRate() const { return neckFlow_ ? neckFlow_->rate() : 0.0; }
+
 Scene::~Scene() = default;
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
@@ -56,6 +83,7 @@ void Scene::makeSweeps() {
     upperSweep_ = std::make_unique<GridSweep>(upperLayout_.size(), true);
     lowerSweep_ = std::make_unique<GridSweep>(lowerLayout_.size(), false);
     lowerSweep_->setGridAbove(upperSweep_.get());
+    configurePhysics(); // the new sweeps get the rules; a turned hourglass's neck is measured again
 }
 
 GridSweep& Scene::sweepOf(GridLevel level) { return level == GridLevel::Upper ? *upperSweep_ : *lowerSweep_; }
@@ -116,7 +144,10 @@ void Scene::step() {
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;
     counters_.visitedLastStep = lower.visited + upper.visited;
-    transition();
+    if (granular_)
+        transitionGranular();
+    else
+        transition();
 }
 
 // thesis §3.3.3 transition/insert: a grain in the upper grid's bottom row moves into the cell of
@@ -142,9 +173,75 @@ void Scene::transition() {
             grains_.movedAtStep[std::size_t(grain)] = counters_.stepsDone;
         }
         lowerSweep_->wakeAt(c.x, lowerTop, c.z);
-        upperSweep_->wakeAroundEmptied(c.x, 0, c.z);
+        upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
         ++moved;
     });
+    counters_.grainsUpper -= moved;
+    counters_.grainsLower += moved;
+    counters_.movesLastStep += moved;
+    counters_.visitedLastStep += visited;
+}
+
+// The granular transition: as the thesis's, except that in an hourglass the neck lets through
+// only the grains Beverloo's rate allows this step (neck_flow.hpp), chosen by a counter hash so
+// no part of the neck is favoured; the others wait, awake, in the flow.
+// A grain that cannot pass because the cell below is full stops.
+void Scene::transitionGranular() {
+    const int lowerTop = lower_.size().y - 1;
+    const std::uint64_t step = counters_.stepsDone;
+    std::vector<std::uint32_t>& ready = transitionReady_;
+    ready.clear();
+    std::int64_t visited = 0;
+    upperSweep_->forEachInBottomLayer(settings_.sleeping, [&](std::uint32_t cell) {
+        ++visited;
+        const CellValue grain = upper_[cell];
+        if (grain < 0) return;
+        const Int3 c = upper_.coordinate(cell);
+        if (lower_.at(c.x, lowerTop, c.z) == kEmpty) {
+            ready.push_back(cell);
+            return;
+        }
+        grains_.fallSpeed[std::size_t(grain)] = 0; // woken again when that cell empties
+        grains_.fallFraction[std::size_t(grain)] = 0;
+    });
+    std::size_t passing = ready.size();
+    if (neckFlow_) {
+        passing = std::min(passing, std::size_t(neckFlow_->allowance(step)));
+        if (passing < ready.size()) {
+            auto key = [&](std::uint32_t cell) { return counterRandom(settings_.seed, step, 2, cell); };
+            std::sort(ready.begin(), ready.end(), [&](std::uint32_t a, std::uint32_t b) {
+                const std::uint64_t ka = key(a), kb = key(b);
+                return ka != kb ? ka < kb : a < b;
+            });
+        }
+    }
+    for (std::size_t i = 0; i < ready.size(); ++i) {
+        const std::uint32_t cell = ready[i];
+        const auto grain = std::size_t(upper_[cell]);
+        const Int3 c = upper_.coordinate(cell);
+        // Grains in the neck row, let through or waiting, move at the flow's speed: a cell a step,
+        // so the cell below the neck is free again by the next step and the column above refills
+        // the neck row at once. The neck, not the supply around it, sets the rate.
+        if (neckFlow_) grains_.fallSpeed[grain] = NeckFlow::kFlowSpeed;
+        if (i >= passing) {
+            upperSweep_->wakeAt(c.x, 0, c.z); // waits for a later step
+            // Its speed may have changed without a move: the grain resting on it looks again.
+            if (upper_.size().y > 1 && upper_.at(c.x, 1, c.z) >= 0) upperSweep_->wakeAt(c.x, 1, c.z);
+            continue;
+        }
+        const std::uint32_t below = lower_.index(c.x, lowerTop, c.z);
+        lower_[below] = CellValue(grain);
+        upper_[cell] = kEmpty;
+        grains_.level[grain] = GridLevel::Lower;
+        grains_.cell[grain] = below;
+        if (grains_.movedAtStep[grain] != step) {
+            grains_.cameFrom[grain] = kNoMove;
+            grains_.movedAtStep[grain] = step;
+        }
+        lowerSweep_->wakeAt(c.x, lowerTop, c.z);
+        upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
+    }
+    const auto moved = std::int64_t(passing);
     counters_.grainsUpper -= moved;
     counters_.grainsLower += moved;
     counters_.movesLastStep += moved;
@@ -229,7 +326,7 @@ bool Scene::removeGrain(GridLevel level, std::uint32_t cell) {
     const std::uint32_t moved = grains_.removeBySwap(id);
     if (moved != id) gridRef(grains_.level[id])[grains_.cell[id]] = CellValue(id);
     const Int3 c = grid.coordinate(cell);
-    sweepOf(level).wakeAroundEmptied(c.x, c.y, c.z);
+    sweepOf(level).wakeAroundEmptied(grid, c.x, c.y, c.z);
     (level == GridLevel::Upper ? counters_.grainsUpper : counters_.grainsLower) -= 1;
     return true;
 }
@@ -257,7 +354,7 @@ void Scene::clearObstacles(GridLevel level) {
             if (grid[n] != kInvalid || layout[n] != kEmpty) return;
             grid[n] = kEmpty;
             const Int3 c = grid.coordinate(n);
-            sweepOf(level).wakeAroundEmptied(c.x, c.y, c.z);
+            sweepOf(level).wakeAroundEmptied(grid, c.x, c.y, c.z);
         });
 }
 

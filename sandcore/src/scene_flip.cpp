@@ -56,6 +56,9 @@ bool Scene::flip() {
     upper_ = std::move(upper);
     lower_ = std::move(lower);
     std::swap(counters_.grainsUpper, counters_.grainsLower);
+    // Turning over stops every fall (granular): what fell down would now fall up.
+    std::fill(grains_.fallSpeed.begin(), grains_.fallSpeed.end(), 0u);
+    std::fill(grains_.fallFraction.begin(), grains_.fallFraction.end(), std::uint16_t{0});
     // Every grain changed its cell, so the scene is no longer settled.
     counters_.movesLastStep = grains_.size();
     markEverythingAwake();

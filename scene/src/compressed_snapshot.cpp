@@ -2,6 +2,7 @@
 
 #include "byte_codec.hpp"
 #include "compression.hpp"
+#include "snapshot_codec.hpp"
 
 #include <algorithm>
 
@@ -40,14 +41,8 @@ void rebuildGrid(sandcore::CellGrid& grid, const std::vector<CellBox>& obstacles
 } // namespace
 
 CompressedSnapshot::CompressedSnapshot(const sandcore::Scene& scene) {
-    const sandcore::GrainStore& g = scene.grains();
     ByteWriter out;
-    out.putArray(g.level);
-    out.putArray(g.cell);
-    out.putArray(g.cameFrom);
-    out.putArray(g.movedAtStep);
-    out.putArray(g.identity);
-    out.putArray(g.color);
+    writeGrains(out, scene.grains());
     out.put<std::uint32_t>(scene.nextIdentity());
     out.put(scene.counters());
     writeBoxes(out, scene.obstacles(GridLevel::Upper));
@@ -59,13 +54,7 @@ CompressedSnapshot::CompressedSnapshot(const sandcore::Scene& scene) {
 sandcore::SceneSnapshot CompressedSnapshot::expand(const sandcore::Scene& scene) const {
     const std::vector<std::uint8_t> raw = decompressBytes(compressed_, rawBytes_);
     ByteReader in(raw);
-    sandcore::GrainStore g;
-    g.level = in.getArray<GridLevel>("grains");
-    g.cell = in.getArray<std::uint32_t>("grains", g.level.size());
-    g.cameFrom = in.getArray<sandcore::MoveCode>("grains", g.level.size());
-    g.movedAtStep = in.getArray<std::uint64_t>("grains", g.level.size());
-    g.identity = in.getArray<std::uint32_t>("grains", g.level.size());
-    g.color = in.getArray<std::uint32_t>("grains", g.level.size());
+    sandcore::GrainStore g = readGrains(in);
     sandcore::SceneSnapshot s{scene.layout(GridLevel::Upper), scene.layout(GridLevel::Lower), std::move(g), 0, {}, {}, {}};
     s.nextIdentity = in.get<std::uint32_t>("next identity");
     s.counters = in.get<sandcore::SceneCounters>("counters");

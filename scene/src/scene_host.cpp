@@ -117,6 +117,8 @@ void SceneHost::applyStepSettings(const sandcore::StepSettings& step) {
     scene_->setSeed(step.seed);
     scene_->setThreads(std::clamp(step.threads, kThreadsRange.min, kThreadsRange.max));
     scene_->setSleeping(step.sleeping);
+    // The rules change only when asked: switching wakes every grain and stops every fall.
+    if (!(step.physics == scene_->settings().physics)) scene_->setPhysics(step.physics);
     loaded_.step = scene_->settings();
 }
 

@@ -117,6 +117,8 @@ void applySceneDefaults(SceneSettings& settings) {
     requireInRange(kNeckRadiusRange, double(request.neckRadius));
     requireInRange(kFillRange, double(request.fillFraction));
     requireInRange(kNoiseRange, request.noiseThreshold);
+    requireInRange(kReposeRange, double(settings.step.physics.reposeDegrees));
+    requireInRange(kGravityRange, double(settings.step.physics.gravity));
     if (!request.modelPath.empty() && !request.shape.empty()) throw std::invalid_argument("choose either --model or --shape");
     if (!request.shape.empty()) requireKnownShape(request.shape);
     if (request.kind == SceneKind::Canvas && (!request.modelPath.empty() || !request.shape.empty()))

@@ -1,5 +1,6 @@
 #include "snapshot_codec.hpp"
 
+#include <cstdlib>
 #include <string>
 
 namespace sandglass {
@@ -76,13 +77,7 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
         writeSize(out, scene.grid(level).size());
         out.putArray(scene.grid(level).cells());
     }
-    const sandcore::GrainStore& g = scene.grains();
-    out.putArray(g.level);
-    out.putArray(g.cell);
-    out.putArray(g.cameFrom);
-    out.putArray(g.movedAtStep);
-    out.putArray(g.identity);
-    out.putArray(g.color);
+    writeGrains(out, scene.grains());
     const sandcore::SceneCounters& c = scene.counters();
     out.put<std::uint32_t>(scene.nextIdentity());
     out.put<std::int64_t>(c.grainsUpper);
@@ -94,9 +89,18 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
     writeBoxes(out, scene.obstacles(GridLevel::Lower));
 }
 
-sandcore::SceneSnapshot readSnapshot(ByteReader& in) {
-    CellGrid upper = readGrid(in, "upper grid size", "upper grid cells");
-    CellGrid lower = readGrid(in, "lower grid size", "lower grid cells");
+void writeGrains(ByteWriter& out, const sandcore::GrainStore& g) {
+    out.putArray(g.level);
+    out.putArray(g.cell);
+    out.putArray(g.cameFrom);
+    out.putArray(g.movedAtStep);
+    out.putArray(g.identity);
+    out.putArray(g.color);
+    out.putArray(g.fallSpeed);
+    out.putArray(g.fallFraction);
+}
+
+sandcore::GrainStore readGrains(ByteReader& in) {
     sandcore::GrainStore g;
     g.level = in.getArray<GridLevel>("grain grids");
     const std::uint64_t grains = g.level.size();
@@ -105,6 +109,15 @@ sandcore::SceneSnapshot readSnapshot(ByteReader& in) {
     g.movedAtStep = in.getArray<std::uint64_t>("grain move steps", grains);
     g.identity = in.getArray<std::uint32_t>("grain identities", grains);
     g.color = in.getArray<std::uint32_t>("grain colours", grains);
+    g.fallSpeed = in.getArray<std::uint32_t>("grain fall speeds", grains);
+    g.fallFraction = in.getArray<std::uint16_t>("grain fall fractions", grains);
+    return g;
+}
+
+sandcore::SceneSnapshot readSnapshot(ByteReader& in) {
+    CellGrid upper = readGrid(in, "upper grid size", "upper grid cells");
+    CellGrid lower = readGrid(in, "lower grid size", "lower grid cells");
+    sandcore::GrainStore g = readGrains(in);
     sandcore::SceneSnapshot s{std::move(upper), std::move(lower), std::move(g), 0, {}, {}, {}};
     s.nextIdentity = in.get<std::uint32_t>("next identity");
     s.counters.grainsUpper = in.get<std::int64_t>("counters");
@@ -145,7 +158,11 @@ void requireConsistentSnapshot(const sandcore::SceneSnapshot& s, const CellGrid&
     for (std::uint64_t id = 0; id < grains; ++id) {
         if (g.level[id] != GridLevel::Lower && g.level[id] != GridLevel::Upper)
             throw FormatError("grain " + std::to_string(id) + " lies in no grid");
-        if (g.cameFrom[id] >= 27) throw FormatError("grain " + std::to_string(id) + " has an invalid last move");
+        const sandcore::MoveCode move = g.cameFrom[id];
+        if (std::abs(sandcore::moveDx(move)) > sandcore::kMaxMoveSideways ||
+            std::abs(sandcore::moveDz(move)) > sandcore::kMaxMoveSideways ||
+            std::abs(sandcore::moveDy(move)) > sandcore::kMaxMoveVertical)
+            throw FormatError("grain " + std::to_string(id) + " has an invalid last move");
     }
     // Every cell naming a grain is named back by it (checked above), and the counts match: so
     // every grain sits in exactly one cell.

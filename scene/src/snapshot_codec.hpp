@@ -11,6 +11,11 @@ namespace sandglass {
 /// from the scene without copying its grids first.
 void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene);
 
+/// Every per-grain array of a GrainStore, in one order; shared by state files and undo snapshots.
+void writeGrains(ByteWriter& out, const sandcore::GrainStore& grains);
+/// Reads what writeGrains wrote; throws FormatError when the data ends early or the arrays disagree.
+sandcore::GrainStore readGrains(ByteReader& in);
+
 /// Reads what writeSnapshot wrote. Sizes are checked (grid sizes valid, arrays no
 /// longer than the input) but not the content: see requireConsistentSnapshot. Throws FormatError.
 sandcore::SceneSnapshot readSnapshot(ByteReader& in);

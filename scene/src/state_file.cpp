@@ -170,6 +170,9 @@ std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const
     out.put<std::int32_t>(scene.settings().threads);
     out.put<std::uint8_t>(scene.settings().sleeping ? 1 : 0);
     out.put<std::uint8_t>(scene.flipped() ? 1 : 0);
+    out.put<std::uint8_t>(std::uint8_t(scene.settings().physics.level));
+    out.put<float>(scene.settings().physics.reposeDegrees);
+    out.put<float>(scene.settings().physics.gravity);
     const Fields fields = requestFields(request);
     out.put<std::uint64_t>(fields.size());
     for (const auto& [key, value] : fields) {
@@ -254,6 +257,16 @@ LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std:
         settings.sleeping = sleeping == 1;
         const auto flipped = in.get<std::uint8_t>("turned over");
         if (flipped > 1) throw FormatError("the turned-over flag is neither on nor off");
+        const auto level = in.get<std::uint8_t>("physics level");
+        if (level > std::uint8_t(sandcore::PhysicsLevel::Granular)) throw FormatError("unknown physics level");
+        settings.physics.level = sandcore::PhysicsLevel(level);
+        settings.physics.reposeDegrees = in.get<float>("repose angle");
+        settings.physics.gravity = in.get<float>("gravity");
+        try {
+            sandcore::validatePhysics(settings.physics);
+        } catch (const std::invalid_argument& e) {
+            throw FormatError(e.what());
+        }
         const auto fieldCount = in.get<std::uint64_t>("scene options");
         if (fieldCount > kMaxRequestFields) throw FormatError(std::to_string(fieldCount) + " scene options cannot be right");
         Fields fields;

@@ -56,3 +56,12 @@ TEST_CASE("window: --screenshot writes the last frame") {
     CHECK(signature[2] == 'N');
     CHECK(signature[3] == 'G');
 }
+
+TEST_CASE("window: a screenshot that cannot be written fails the run with one line, before the window opens") {
+    const sandglass::TemporaryFolder folder;
+    const std::string file = (folder / "missing-folder" / "shot.png").string();
+    const cli::ProcessResult run = cli::runSandglassArgs({"gui", "--res", "16", "--frames", "2", "--screenshot", file});
+    CHECK(run.exitCode == 1);
+    CHECK(cli::lineCount(run.err) == 1);
+    CHECK(run.err.find("missing-folder") != std::string::npos);
+}

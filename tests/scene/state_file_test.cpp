@@ -277,3 +277,26 @@ TEST_CASE("state file fuzz: damaged payloads with a valid checksum are refused b
     CHECK(refused > 100);
     MESSAGE("damaged payloads: " << refused << " refused, " << loaded << " loaded as a consistent scene");
 }
+
+TEST_CASE("state file: a granular scene keeps its physics and falling speeds through save and load") {
+    TemporaryFolder folder;
+    sandcore::StepSettings step;
+    step.physics.level = sandcore::PhysicsLevel::Granular;
+    step.physics.reposeDegrees = 28.0f;
+    step.physics.gravity = 0.5f;
+    sandcore::Scene straight = support::build(support::hourglassRequest(), step);
+    sandcore::Scene saved = support::build(support::hourglassRequest(), step);
+    for (int i = 0; i < 40; ++i) {
+        straight.step();
+        saved.step();
+    }
+    saveState(folder / "granular.sand", saved, support::hourglassRequest());
+    LoadedState loaded = loadState(folder / "granular.sand");
+    CHECK(loaded.scene.settings().physics == step.physics);
+    CHECK(loaded.scene.grains().fallSpeed == saved.grains().fallSpeed);
+    for (int i = 0; i < 60; ++i) {
+        straight.step();
+        loaded.scene.step();
+    }
+    CHECK(loaded.scene.stateHash() == straight.stateHash());
+}

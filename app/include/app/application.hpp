@@ -107,7 +107,8 @@ private:
     void updateTurnAnimation();
     void drawOverlays();
     void drawBrushOutline();
-    void saveScreenshot(const std::filesystem::path& file);
+    bool saveScreenshot(const std::filesystem::path& file);
+    std::filesystem::path nextScreenshotName();
     void runInteractiveBenchmark();
 
     ApplicationOptions options_;

@@ -23,7 +23,7 @@ struct BenchOptions {
     std::vector<int> resolutions{37, 248};
     std::string size = "1024x768";
     BenchmarkTiming timing;
-    sandcore::StepSettings step{1, 2, true};
+    sandcore::StepSettings step{1, 2, true, {}};
 };
 
 int runRenderBenchmark(const BenchOptions& options, const std::string& commandLine) {
@@ -58,6 +58,7 @@ int runSpeedErrorReport(const BenchOptions& options) {
     report.commandLine = std::string("sandglass bench") + (options.quick ? " --quick" : "") + " --out " + options.out;
     if (options.step.threads != 2) report.commandLine += " --threads " + std::to_string(options.step.threads);
     if (options.step.seed != 1) report.commandLine += " --seed " + std::to_string(options.step.seed);
+    if (options.step.physics.level != sandcore::PhysicsLevel::Classic) report.commandLine += " --physics granular";
     const bool passed = sandbench::writeSpeedErrorReport(report, std::cerr);
     std::cout << "report written to " << (report.outDir / "README.md").string() << "\n";
     if (!passed) std::cerr << "sandglass: some checks of the report failed (see the report)\n";
@@ -86,7 +87,18 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
                     "seed of every simulated scene (default 1)");
     addNumberOption(*cmd, "--threads", options->step.threads, kThreadsRange.min, kThreadsRange.max,
                     "threads compared with one thread in the report; threads of the scene with --render (default 2)");
-    cmd->callback([options, &exitCode] {
+    auto physics = std::make_shared<std::string>("classic");
+    cmd->add_option("--physics", *physics, "rules of the simulated scenes: classic or granular (the report's "
+                                           "granular section measures both either way)")
+        ->capture_default_str();
+    addNumberOption(*cmd, "--repose", options->step.physics.reposeDegrees, float(kReposeRange.min),
+                    float(kReposeRange.max), "granular: angle of repose in degrees (default 33)");
+    addNumberOption(*cmd, "--gravity", options->step.physics.gravity, float(kGravityRange.min),
+                    float(kGravityRange.max), "granular: gravity in cells per step squared (default 0.02)");
+    cmd->callback([options, physics, &exitCode] {
+        const auto level = sandcore::parsePhysicsLevel(*physics);
+        if (!level) throw std::invalid_argument("--physics must be classic or granular, got '" + *physics + "'");
+        options->step.physics.level = *level;
         if (!options->render) {
             exitCode = runSpeedErrorReport(*options);
             return;

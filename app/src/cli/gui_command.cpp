@@ -2,6 +2,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/checked_options.hpp"
 #include "app/cli/view_options.hpp"
+#include "scene/file_io.hpp"
 #include "app/paint_demo.hpp"
 
 #include <cstdio>
@@ -76,6 +77,8 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
             throw std::invalid_argument("--paint-demo needs --scene canvas and --draft FILE");
         if (!options->screenshot.empty() && options->frames == 0)
             throw std::invalid_argument("--screenshot needs --frames N (the key P saves screenshots interactively)");
+        // Checked before the window opens, so a run does not end in a failed write.
+        if (!options->screenshot.empty()) requireWritableFileTarget(options->screenshot);
         exitCode = runGui(*options);
     });
 }

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 
 namespace sandglass {
 
@@ -31,12 +32,22 @@ void addSceneOptions(CLI::App& command, SceneOptions& options) {
                     "seed of the slip randomness (default 1)");
     addNumberOption(command, "--threads", step.threads, kThreadsRange.min, kThreadsRange.max,
                     "worker threads of a step (default 1; the result does not depend on it)");
+    command.add_option("--physics", options.physics,
+                       "classic (the thesis's rules) or granular (repose angle, gravity, Beverloo discharge)")
+        ->capture_default_str();
+    addNumberOption(command, "--repose", step.physics.reposeDegrees, float(kReposeRange.min), float(kReposeRange.max),
+                    "granular: angle of repose of a poured cone in degrees (default 33)");
+    addNumberOption(command, "--gravity", step.physics.gravity, float(kGravityRange.min), float(kGravityRange.max),
+                    "granular: gravity in cells per step squared (default 0.02; 1 mm cells at 60 steps/s: 2.7)");
 }
 
 SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     SceneSettings settings = options.settings;
     settings.request.kind = parseSceneKind(options.scene);
     for (const std::string& part : options.parts) settings.request.partRoles.push_back(parsePartRoleChoice(part));
+    const auto physics = sandcore::parsePhysicsLevel(options.physics);
+    if (!physics) throw std::invalid_argument("--physics must be classic or granular, got '" + options.physics + "'");
+    settings.step.physics.level = *physics;
     applySceneDefaults(settings);
     return settings;
 }

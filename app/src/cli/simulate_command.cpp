@@ -44,6 +44,7 @@ struct SimulateOptions {
     std::string load;       ///< E1: a state file to go on from instead of building a scene
     std::string save;       ///< E1: where to save the state after the run
     std::string exportFile; ///< E2: where to export the sand after the run (.ply .vox .obj .stl .glb)
+    std::string trace; // CSV file: one row per step (SPEC PH7)
 };
 
 // The scene to run: a loaded state (the file's seed and settings, unless given here) or a new build.
@@ -107,6 +108,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     const std::uint32_t pourAt = sandcore::pourCell(scene);
     StreamingMedian stepMilliseconds;
     std::int64_t moves = 0, visited = 0, done = 0, poured = 0;
+    std::string trace = options.trace.empty() ? std::string() : "step,grains_upper,grains_lower,moves\n";
     const auto start = Clock::now();
     while (done < stepLimit) {
         // A pour waits while its cell is still taken, so every grain asked for is released.
@@ -117,10 +119,16 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         moves += scene.counters().movesLastStep;
         visited += scene.counters().visitedLastStep;
         ++done;
+        if (!options.trace.empty()) {
+            const sandcore::SceneCounters& c = scene.counters();
+            trace += std::to_string(c.stepsDone) + ',' + std::to_string(c.grainsUpper) + ',' +
+                     std::to_string(c.grainsLower) + ',' + std::to_string(c.movesLastStep) + '\n';
+        }
         flipDue(done);
         if (options.untilSettled && poured >= options.pour && scene.settled()) break;
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (!options.trace.empty()) writeFileAtomically(options.trace, trace);
     const double stepsPerSecond = seconds > 0 ? double(done) / seconds : 0.0;
     const std::string hash = toHex16(scene.stateHash());
     const std::string sceneName = sceneKindName(settings.request.kind);
@@ -142,6 +150,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         out["threads"] = threads;
         out["settled"] = scene.settled();
         out["sleeping"] = !options.fullSweep;
+        out["physics"] = std::string(sandcore::physicsLevelName(settings.step.physics.level));
         out["median_ms_per_step"] = stepMilliseconds.median();
         out["grains_upper"] = scene.counters().grainsUpper;
         out["grains_lower"] = scene.counters().grainsLower;
@@ -168,6 +177,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
                 scene.settled() ? "settled" : "still moving");
     std::printf("%.3f s, %.1f steps/s, median %.3f ms per step, %d thread(s), %s\n", seconds, stepsPerSecond,
                 stepMilliseconds.median(), threads, options.fullSweep ? "full sweep" : "sleeping grains skipped");
+    std::printf("physics %s\n", std::string(sandcore::physicsLevelName(settings.step.physics.level)).c_str());
     if (options.duration > 0.0)
         std::printf("timer %.1f s: the drain takes %lld steps, so %.3f steps/s; these %lld steps last %.2f s\n",
                     options.duration, (long long)drainSteps, stepsPerSecondSet, (long long)done,
@@ -205,6 +215,7 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     for (const char* sceneOption : {"--scene", "--model", "--shape", "--res"}) load->excludes(sceneOption);
     cmd->add_option("--save", options->save, "after the run, save the whole state to this .sand file");
     cmd->add_option("--export", options->exportFile, "after the run, export the sand: .ply points, .vox voxels, .obj/.stl/.glb surface");
+    cmd->add_option("--trace", options->trace, "write FILE.csv with one row per step: step,grains_upper,grains_lower,moves");
     cmd->callback([options, cmd, &exitCode] { exitCode = runSimulate(*options, *cmd); });
 }
 

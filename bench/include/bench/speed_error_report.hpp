@@ -13,7 +13,7 @@ struct ReportOptions {
     bool quick = false;                         ///< small resolutions: finishes in under a minute
     std::filesystem::path outDir = "bench-report"; ///< folder for README.md, *.csv and *.png
     std::string commandLine;                    ///< how the report was produced, quoted in it
-    sandcore::StepSettings step{1, 2, true};    ///< seed of every drain; threads compared with 1 (default 2)
+    sandcore::StepSettings step{1, 2, true, {}}; ///< seed of every drain; threads compared with 1 (default 2)
 };
 
 /// Measures everything and writes the report; progress goes to log. Returns true when every

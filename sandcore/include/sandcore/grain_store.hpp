@@ -13,15 +13,23 @@ enum class GridLevel : std::uint8_t {
     Upper = 1, ///< the upper grid (upper bulb, sculpture, release layer)
 };
 
-/// The offset of the previous cell from the current one, packed as (dx+1) + 3(dy+1) + 9(dz+1).
-using MoveCode = std::uint8_t;
-inline constexpr MoveCode kNoMove = 13; ///< dx = dy = dz = 0
+/// The offset of the previous cell from the current one: x and z in 8 bits each (the granular
+/// rules move grains up to 3 cells sideways), y in 16 bits (a fast grain falls many cells a step).
+using MoveCode = std::uint32_t;
 
-/// Packs a cell offset with components in {-1, 0, 1}.
-constexpr MoveCode packMove(int dx, int dy, int dz) { return MoveCode((dx + 1) + 3 * (dy + 1) + 9 * (dz + 1)); }
-constexpr int moveDx(MoveCode m) { return m % 3 - 1; }       ///< x component of a packed offset
-constexpr int moveDy(MoveCode m) { return (m / 3) % 3 - 1; } ///< y component of a packed offset
-constexpr int moveDz(MoveCode m) { return m / 9 - 1; }       ///< z component of a packed offset
+/// Largest |dx| and |dz| a MoveCode holds, cells.
+inline constexpr int kMaxMoveSideways = 127;
+/// Largest |dy| a MoveCode holds, cells: the granular rules cap a fall per step below this.
+inline constexpr int kMaxMoveVertical = 32767;
+
+/// Packs a cell offset with |dx|, |dz| <= kMaxMoveSideways and |dy| <= kMaxMoveVertical.
+constexpr MoveCode packMove(int dx, int dy, int dz) {
+    return MoveCode(dx + 128) | MoveCode(dz + 128) << 8 | MoveCode(dy + 32768) << 16;
+}
+constexpr int moveDx(MoveCode m) { return int(m & 0xffu) - 128; }         ///< x component of a packed offset
+constexpr int moveDy(MoveCode m) { return int(m >> 16) - 32768; }         ///< y component of a packed offset
+constexpr int moveDz(MoveCode m) { return int((m >> 8) & 0xffu) - 128; }  ///< z component of a packed offset
+inline constexpr MoveCode kNoMove = packMove(0, 0, 0); ///< dx = dy = dz = 0
 
 /// Every grain's place, last move and look, one array per field (ids index all of them).
 struct GrainStore {
@@ -31,6 +39,10 @@ struct GrainStore {
     std::vector<std::uint64_t> movedAtStep;  ///< step number of its last move (0 = never moved)
     std::vector<std::uint32_t> identity;     ///< stable per grain: picks its jitter and pattern
     std::vector<std::uint32_t> color;        ///< RGBA8 (R in the low byte); 0 = the default sand colours
+    /// granular: downward speed, cells per step in 16.16 fixed point (0 = at rest; classic keeps 0)
+    std::vector<std::uint32_t> fallSpeed;
+    /// granular: the part of a cell fallen beyond the grain's cell, 1/65536 cells (no display effect)
+    std::vector<std::uint16_t> fallFraction;
 
     std::uint32_t size() const { return std::uint32_t(cell.size()); } ///< number of grains
     void clear();                                                      ///< removes every grain

@@ -4,6 +4,7 @@
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
+#include "sandcore/physics_settings.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -13,6 +14,8 @@ namespace sandcore {
 
 class WorkerPool;
 class GridSweep;
+class GranularRules;
+class NeckFlow;
 
 /// The three scenes of R10.
 enum class SceneKind : std::uint8_t {
@@ -21,11 +24,12 @@ enum class SceneKind : std::uint8_t {
     Canvas,    ///< MODE_PAINT: the user pours sand into an empty box
 };
 
-/// How a step runs; none of these change the result except seed.
+/// How a step runs; threads and sleeping never change the result, seed and physics do.
 struct StepSettings {
     std::uint64_t seed = 1;  ///< feeds the counter-based randomness of slips (R3)
     int threads = 1;         ///< threads that share a step (R6); the result is the same for any count
     bool sleeping = true;    ///< R5: visit only awake grains; false = sweep every cell (same result, slower)
+    PhysicsSettings physics; ///< PH1: classic or granular rules, repose angle, gravity
 };
 
 /// An axis-aligned box of cells, min inclusive, max exclusive, in one grid's coordinates.
@@ -91,6 +95,11 @@ public:
     void setSeed(std::uint64_t seed);   ///< changes the randomness of later steps
     void setThreads(int threads);       ///< 1 or more; the result does not change
     void setSleeping(bool sleeping);    ///< R5 on or off; the result does not change
+    /// PH1: switches the rules (level, repose angle, gravity) from the next step on; every grain
+    /// starts at rest. Throws std::invalid_argument for settings validatePhysics refuses.
+    void setPhysics(const PhysicsSettings& physics);
+    /// Granular hourglass only: grains per step the neck lets through (PH4), else 0.
+    double neckFlowRate() const;
 
     /// Turns the hourglass over (T1): the sand becomes the exact mirror in y of what it was,
     /// the lower grid becomes the upper and the upper the lower, every grain keeps its identity
@@ -137,6 +146,8 @@ private:
     void transition();
     void rebuildCells(GridLevel level);
     void markEverythingAwake();
+    void configurePhysics();
+    void transitionGranular();
     void flipLayouts();
     void makeSweeps();
 
@@ -152,6 +163,9 @@ private:
     bool flipped_ = false;
     std::unique_ptr<GridSweep> upperSweep_, lowerSweep_;
     std::unique_ptr<WorkerPool> pool_;
+    std::unique_ptr<GranularRules> granular_; // null: classic
+    std::unique_ptr<NeckFlow> neckFlow_;      // granular hourglass only
+    std::vector<std::uint32_t> transitionReady_; // scratch of transitionGranular
 };
 
 } // namespace sandcore

@@ -29,6 +29,10 @@ inline constexpr SettingRange<int> kThreadsRange{1, 256, "--threads"};      ///<
 inline constexpr SettingRange<double> kNeckRadiusRange{0.0, 1024.0, "--neck"}; ///< cells; 0 = automatic
 inline constexpr SettingRange<double> kFillRange{0.001, 1.0, "--fill"};     ///< share of the upper bulb filled
 inline constexpr SettingRange<int> kNoiseRange{-1, 5, "--noise"};           ///< noNoise threshold; -1 = off
+/// Granular angle of repose, degrees (SPEC PH2).
+inline constexpr SettingRange<double> kReposeRange{sandcore::kMinReposeDegrees, sandcore::kMaxReposeDegrees, "--repose"};
+/// Granular gravity, cells per step squared (SPEC PH3).
+inline constexpr SettingRange<double> kGravityRange{sandcore::kMinGravity, sandcore::kMaxGravity, "--gravity"};
 
 /// A scene as the user describes it.
 struct SceneRequest {

@@ -46,7 +46,7 @@ struct FileSettings {
 enum class Command {
     Reset,             ///< refill the scene
     Rebuild,           ///< build a new scene from AppState::scene
-    ApplyStepSettings, ///< seed and threads of AppState::scene.step take effect on the next step
+    ApplyStepSettings, ///< seed, threads and physics of AppState::scene.step take effect on the next step
     SingleStep,        ///< one step while paused
     Screenshot,        ///< save this frame as PNG
     Benchmark,         ///< run the frame-rate benchmark

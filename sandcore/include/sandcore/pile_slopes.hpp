@@ -1,0 +1,33 @@
+#pragma once
+// Measuring a heap (SPEC PH2): the angle of its flanks along evenly spaced directions out of its
+// peak, from the grid's column heights, as one would measure a real pile from a height map.
+
+#include "sandcore/cell_grid.hpp"
+
+#include <vector>
+
+namespace sandcore {
+
+/// What the measurement fits.
+struct PileSlopeSettings {
+    int directions = 16;      ///< evenly spaced directions out of the peak (the first along +x)
+    double fromShare = 0.15;  ///< fit only heights at or above this share of the peak's (skips the toe)
+    double toShare = 0.85;    ///< ... and at or below this share (skips the rounded top)
+};
+
+/// Angles of a heap's flanks.
+struct PileSlopes {
+    double peakX = 0, peakZ = 0;  ///< centre of the highest columns, cells (column centres at +0.5)
+    int peakHeight = 0;           ///< filled cells in the highest column
+    std::vector<double> degrees;  ///< per direction: least-squares angle of height over distance, degrees (0 if too few points)
+    double meanDegrees() const;   ///< mean over the directions
+    double minDegrees() const;    ///< smallest of the directions
+    double maxDegrees() const;    ///< largest of the directions
+};
+
+/// The flanks of the heap in `grid`: column heights are sampled every half cell along each
+/// direction (bilinear between column centres) and a line is fitted over the heights between
+/// fromShare and toShare of the peak's.
+PileSlopes measurePileSlopes(const CellGrid& grid, const PileSlopeSettings& settings = {});
+
+} // namespace sandcore

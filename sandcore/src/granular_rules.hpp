@@ -1,0 +1,99 @@
+#pragma once
+// The granular rules (SPEC PH2, PH3), private to sandcore. Applied to a grain at (x, y, z):
+//
+// 1. fall: if the cell below is EMPTY the grain falls with a 16.16 fixed-point speed that grows
+//    by g each step, as far as its speed carries it this step, checking every cell of the path
+//    (a one-cell obstacle stops it at any speed, as The Powder Toy does). On contact it takes the
+//    speed of a moving grain it lands on, or stops. A grain resting on a moving grain moves with
+//    it: it takes its speed and gathers up to a cell of progress, so a column flows as one.
+// 2. slide: a grain resting on something at rest may move to the cell one layer down in any
+//    column up to 3 cells away (48 offsets e) when the sideways path at its own level is clear
+//    and the column there is at least `need` cells deep, need = floor(T|e| + u): T a calibrated
+//    slope and u in [0, 1) a hash of (seed, cell, offset) that never changes with the step, so a
+//    grain that wakes up draws the same threshold and piles do not creep (PH2). The dither makes
+//    the angle continuous in T instead of locked to integer heights. Every move goes down at
+//    least one layer, so grains never swap back and forth. One of the possible moves is chosen
+//    by a counter hash of (seed, step, grid, cell) (R3).
+//
+// What a grain reads, so the sweep can keep threads apart and wake exactly the grains whose
+// options a change can widen (R5, R6): its own column downwards and the speed of the grain
+// below it; cells of its own layer within 3 columns (the paths); and the 7x7 columns of the
+// layers up to maxDrop() below it.
+
+#include "sandcore/cell_grid.hpp"
+#include "sandcore/grain_store.hpp"
+#include "sandcore/physics_settings.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sandcore {
+
+/// How far sideways a granular grain may slide, cells (Chebyshev distance).
+inline constexpr int kGranularReach = 3;
+
+/// What a visit did, so the sweep knows whom to wake.
+struct GranularOutcome {
+    enum Kind : std::uint8_t {
+        Resting, ///< nothing can move it: it sleeps until a cell it reads empties
+        Waiting, ///< it did not change cells but is in motion (speed or fraction grew): keep it awake
+        Moved,   ///< it moved to `to`
+    } kind = Resting;
+    Int3 to{};   ///< the cell it moved to (Moved only)
+};
+
+/// The tables the granular rules need, computed once from PhysicsSettings.
+class GranularRules {
+public:
+    explicit GranularRules(const PhysicsSettings& physics);
+
+    /// Applies the rules to the grain at (x, y, z), y >= 1, of `grid`, for step `step`; `stream`
+    /// tells the grids apart in the random draws. bottomIsOutlet: the grid's layer 0 is open
+    /// below (the upper grid), so a grain falling onto it keeps its speed.
+    GranularOutcome visit(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step,
+                          std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z) const;
+
+    /// Deepest column a slide ever looks into, cells below the grain's layer.
+    int maxDrop() const { return maxDrop_; }
+    /// The grains that an EMPTY cell c may let move, `layersAbove` (0..maxDrop()) layers above c:
+    /// bit (dz + 3) * 7 + (dx + 3) stands for the grain at c + (dx, dz) in that layer.
+    std::uint64_t wakeMask(int layersAbove) const { return wakeMasks_[std::size_t(layersAbove)]; }
+    /// g in cells per step squared, 16.16 fixed point.
+    std::uint32_t gravity() const { return gravity_; }
+    /// The slope T the thresholds use for the asked angle (after calibration).
+    double thresholdSlope() const { return slope_; }
+
+    /// Cells per side of the window a slide looks at.
+    static constexpr int kWindow = 2 * kGranularReach + 1;
+    /// One sideways move: the offset, and the cells of the grain's layer its path crosses.
+    struct Offset {
+        int dx = 0, dz = 0;            ///< column offset, cells
+        std::uint32_t thresholdQ8 = 0; ///< T|e| in 1/256 cells
+        std::uint64_t pathMask = 0;    ///< the path's cells in the 7x7 window, bit (dz + 3) * 7 + (dx + 3)
+    };
+    static constexpr int kOffsets = kWindow * kWindow - 1; ///< 48
+
+private:
+    GranularOutcome fall(CellGrid& grid, GrainStore& grains, std::uint64_t step, bool bottomIsOutlet, int x, int y, int z,
+                         std::uint32_t from, CellValue grain) const;
+    GranularOutcome slide(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, std::uint64_t stream,
+                          int x, int y, int z, std::uint32_t from, CellValue grain) const;
+
+    std::array<Offset, kOffsets> offsets_{};
+    double slope_ = 0;
+    int maxDrop_ = 1;
+    std::uint32_t gravity_ = 0;
+    std::vector<std::uint64_t> wakeMasks_;
+};
+
+/// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the
+/// grains find the low-threshold paths, so T lies above tan of the angle).
+double calibratedThresholdSlope(double reposeDegrees);
+
+/// Places `grain`, which left cell `from`, in cell `to` of the same grid; records the move for
+/// display (offset from `to` back to `from`, in cells).
+void moveGrain(CellGrid& grid, GrainStore& grains, CellValue grain, std::uint32_t from, std::uint32_t to, Int3 back,
+               std::uint64_t step);
+
+} // namespace sandcore

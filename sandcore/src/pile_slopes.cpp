@@ -1,0 +1,78 @@
+#include "sandcore/pile_slopes.hpp"
+
+#include "sandcore/normals.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace sandcore {
+
+double PileSlopes::meanDegrees() const {
+    return degrees.empty() ? 0.0 : std::accumulate(degrees.begin(), degrees.end(), 0.0) / double(degrees.size());
+}
+double PileSlopes::minDegrees() const { return degrees.empty() ? 0.0 : *std::min_element(degrees.begin(), degrees.end()); }
+double PileSlopes::maxDegrees() const { return degrees.empty() ? 0.0 : *std::max_element(degrees.begin(), degrees.end()); }
+
+PileSlopes measurePileSlopes(const CellGrid& grid, const PileSlopeSettings& settings) {
+    const Int3 s = grid.size();
+    const std::vector<int> heights = columnHeights(grid);
+    auto heightAt = [&](int x, int z) {
+        x = std::clamp(x, 0, s.x - 1);
+        z = std::clamp(z, 0, s.z - 1);
+        return double(heights[std::size_t(x) + std::size_t(s.x) * std::size_t(z)]);
+    };
+    PileSlopes result;
+    result.peakHeight = *std::max_element(heights.begin(), heights.end());
+    if (result.peakHeight == 0) return result;
+    double sumX = 0, sumZ = 0;
+    int count = 0;
+    for (int z = 0; z < s.z; ++z)
+        for (int x = 0; x < s.x; ++x)
+            if (int(heightAt(x, z)) == result.peakHeight) {
+                sumX += x + 0.5;
+                sumZ += z + 0.5;
+                ++count;
+            }
+    result.peakX = sumX / count;
+    result.peakZ = sumZ / count;
+    // Bilinear between column centres, so a direction between the grid's axes sees a smooth flank.
+    auto sample = [&](double px, double pz) {
+        const double fx = px - 0.5, fz = pz - 0.5;
+        const int x0 = int(std::floor(fx)), z0 = int(std::floor(fz));
+        const double tx = fx - x0, tz = fz - z0;
+        return (1 - tx) * (1 - tz) * heightAt(x0, z0) + tx * (1 - tz) * heightAt(x0 + 1, z0) +
+               (1 - tx) * tz * heightAt(x0, z0 + 1) + tx * tz * heightAt(x0 + 1, z0 + 1);
+    };
+    const double low = settings.fromShare * result.peakHeight, high = settings.toShare * result.peakHeight;
+    for (int d = 0; d < settings.directions; ++d) {
+        const double phi = 2.0 * M_PI * d / settings.directions;
+        const double ux = std::cos(phi), uz = std::sin(phi);
+        std::vector<double> distance, height;
+        for (double r = 0.5;; r += 0.5) {
+            const double px = result.peakX + r * ux, pz = result.peakZ + r * uz;
+            if (px < 0 || pz < 0 || px > s.x || pz > s.z) break;
+            const double h = sample(px, pz);
+            if (h < low) break;
+            if (h > high) continue;
+            distance.push_back(r);
+            height.push_back(h);
+        }
+        double angle = 0.0;
+        if (distance.size() >= 3) {
+            const double n = double(distance.size());
+            const double meanD = std::accumulate(distance.begin(), distance.end(), 0.0) / n;
+            const double meanH = std::accumulate(height.begin(), height.end(), 0.0) / n;
+            double covariance = 0, variance = 0;
+            for (std::size_t i = 0; i < distance.size(); ++i) {
+                covariance += (distance[i] - meanD) * (height[i] - meanH);
+                variance += (distance[i] - meanD) * (distance[i] - meanD);
+            }
+            angle = std::atan(std::abs(covariance / variance)) * 180.0 / M_PI;
+        }
+        result.degrees.push_back(angle);
+    }
+    return result;
+}
+
+} // namespace sandcore

@@ -1,0 +1,126 @@
+// Measures the granular level from the command line while it is being tuned: the angle of a
+// poured cone in 16 directions, the fall time, the discharge through hourglass necks and the
+// cost against classic. Not part of the product; the bench report has the final figures.
+//   granular_probe pour DEG GRAINS [WIDTH]    cone poured at one column of a canvas
+//   granular_probe drain NECK [HEIGHT] [g]    discharge of a granular hourglass
+//   granular_probe cost HEIGHT THREADS        ms per step, classic vs granular drain
+#include "sandcore/pile_slopes.hpp"
+#include "sandcore/procedural_shapes.hpp"
+#include "sandcore/scenes.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+#include <string>
+#include <vector>
+
+using namespace sandcore;
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+int pour(double degrees, int grains, int width, int height, std::uint64_t seed, double gravity) {
+    StepSettings step;
+    step.physics.gravity = float(gravity);
+    step.seed = seed;
+    step.physics.level = PhysicsLevel::Granular;
+    step.physics.reposeDegrees = float(degrees);
+    Scene scene = makeCanvasScene({{width, 4, width}, {width, height, width}}, step);
+    const auto start = std::chrono::steady_clock::now();
+    for (int added = 0; added < grains;) {
+        added += scene.addGrain(GridLevel::Upper, pourCell(scene)) >= 0 ? 1 : 0;
+        scene.step();
+    }
+    while (!scene.settled()) scene.step();
+    const PileSlopes slopes = measurePileSlopes(scene.grid(GridLevel::Lower));
+    std::printf("asked %.1f  grains %lld  steps %llu  %.1fs  peak %d at (%.1f, %.1f)\n", degrees,
+                (long long)scene.grainCount(), (unsigned long long)scene.counters().stepsDone, seconds(start),
+                slopes.peakHeight, slopes.peakX, slopes.peakZ);
+    for (double d : slopes.degrees) std::printf(" %.1f", d);
+    std::printf("\nmean %.2f min %.2f max %.2f\n", slopes.meanDegrees(), slopes.minDegrees(), slopes.maxDegrees());
+    return 0;
+}
+
+int drain(double neck, int height, double gravity, int threads) {
+    StepSettings step;
+    step.threads = threads;
+    step.physics.level = PhysicsLevel::Granular;
+    step.physics.gravity = float(gravity);
+    Scene scene = makeHourglassScene(makeHourglassMask({height, float(neck), 0.0f}), {}, step);
+    const std::int64_t total = scene.counters().grainsUpper;
+    std::vector<std::int64_t> passed;
+    const auto start = std::chrono::steady_clock::now();
+    while (scene.counters().grainsUpper > 0 && passed.size() < 200000) {
+        const std::int64_t before = scene.counters().grainsLower;
+        scene.step();
+        passed.push_back(scene.counters().grainsLower - before);
+    }
+    // CV over windows of 10 steps while 10% to 90% of the sand has passed.
+    std::vector<double> rates;
+    std::int64_t drained = 0, windowGrains = 0;
+    int windowSteps = 0;
+    for (std::int64_t p : passed) {
+        drained += p;
+        const double share = double(drained) / double(total);
+        if (share < 0.1) continue;
+        if (share > 0.9) break;
+        windowGrains += p;
+        if (++windowSteps == 10) {
+            rates.push_back(double(windowGrains) / 10.0);
+            windowGrains = 0;
+            windowSteps = 0;
+        }
+    }
+    const double mean = std::accumulate(rates.begin(), rates.end(), 0.0) / double(rates.size());
+    double sq = 0;
+    for (double r : rates) sq += (r - mean) * (r - mean);
+    const double cv = std::sqrt(sq / double(rates.size() - 1)) / mean;
+    std::printf("neck %.2f height %d g %.3f grains %lld steps %zu  rate %.3f (model %.3f)  CV %.2f%%  %.1fs\n", neck,
+                height, gravity, (long long)total, passed.size(), mean, scene.neckFlowRate(), 100 * cv, seconds(start));
+    return 0;
+}
+
+double drainMsPerStep(int height, int threads, PhysicsLevel level, std::uint64_t& steps, std::uint64_t& hash) {
+    StepSettings step;
+    step.threads = threads;
+    step.physics.level = level;
+    Scene scene = makeHourglassScene(makeHourglassMask({height, defaultNeckRadius(height), 0.0f}), {}, step);
+    const auto start = std::chrono::steady_clock::now();
+    double visited = 0, moves = 0;
+    while (!scene.settled() && scene.counters().stepsDone < 100000) {
+        scene.step();
+        visited += double(scene.counters().visitedLastStep);
+        moves += double(scene.counters().movesLastStep);
+    }
+    steps = scene.counters().stepsDone;
+    std::printf("  visited/step %.0f moves/step %.0f\n", visited / double(steps), moves / double(steps));
+    hash = scene.stateHash();
+    return 1000.0 * seconds(start) / double(steps);
+}
+
+int cost(int height, int threads) {
+    for (PhysicsLevel level : {PhysicsLevel::Classic, PhysicsLevel::Granular}) {
+        std::uint64_t steps = 0, hash = 0;
+        const double ms = drainMsPerStep(height, threads, level, steps, hash);
+        std::printf("%s: %llu steps, %.3f ms/step, hash %016llx\n", std::string(physicsLevelName(level)).c_str(),
+                    (unsigned long long)steps, ms, (unsigned long long)hash);
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const std::string what = argc > 1 ? argv[1] : "";
+    auto arg = [&](int i, double fallback) { return argc > i ? std::atof(argv[i]) : fallback; };
+    if (what == "pour") return pour(arg(2, 33), int(arg(3, 40000)), int(arg(4, 120)), int(arg(5, 50)), std::uint64_t(arg(6, 1)), arg(7, 1.0));
+    if (what == "drain") return drain(arg(2, 4), int(arg(3, 96)), arg(4, 0.05), int(arg(5, 1)));
+    if (what == "cost") return cost(int(arg(2, 248)), int(arg(3, 2)));
+    std::fprintf(stderr, "usage: granular_probe pour|drain|cost ...\n");
+    return 2;
+}
