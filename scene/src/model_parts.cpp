@@ -1,19 +1,15 @@
 #include "scene/model_parts.hpp"
 
+#include "checked_import.hpp"
 #include "scene/mesh_loader.hpp"
-
-#include <assimp/Importer.hpp>
-#include <assimp/material.h>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace sandglass {
 
@@ -42,45 +38,6 @@ PartRoleChoice parsePartRoleChoice(std::string_view text) {
 
 namespace {
 
-struct PartCollector {
-    const aiScene& scene;
-    const std::string& path;
-    std::vector<ModelPart> parts;
-
-    void visit(const aiNode& node, const aiMatrix4x4& parent) {
-        const aiMatrix4x4 transform = parent * node.mTransformation;
-        if (node.mNumMeshes > 0) {
-            ModelPart part;
-            part.name = node.mName.length > 0 ? node.mName.C_Str() : "";
-            for (unsigned m = 0; m < node.mNumMeshes; ++m) {
-                const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
-                if (part.name.empty() && mesh.mName.length > 0) part.name = mesh.mName.C_Str();
-                const auto base = std::uint32_t(part.mesh.vertices.size());
-                for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-                    const aiVector3D p = transform * mesh.mVertices[v];
-                    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-                        throw ModelError(path, "vertex " + std::to_string(v) + " has a NaN or infinite coordinate");
-                    part.mesh.vertices.push_back({p.x, p.y, p.z});
-                }
-                for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-                    const aiFace& face = mesh.mFaces[f];
-                    if (face.mNumIndices != 3) continue; // points and lines enclose nothing
-                    part.mesh.triangles.push_back({base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
-                }
-                aiColor4D diffuse;
-                if (!part.hasColour && mesh.mMaterialIndex < scene.mNumMaterials &&
-                    (scene.mMaterials[mesh.mMaterialIndex]->Get(AI_MATKEY_BASE_COLOR, diffuse) == AI_SUCCESS ||
-                     scene.mMaterials[mesh.mMaterialIndex]->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS)) {
-                    part.hasColour = true;
-                    part.colour = {diffuse.r, diffuse.g, diffuse.b};
-                }
-            }
-            if (!part.mesh.triangles.empty()) parts.push_back(std::move(part));
-        }
-        for (unsigned c = 0; c < node.mNumChildren; ++c) visit(*node.mChildren[c], transform);
-    }
-};
-
 // Names as a user types them after --part: unique, never empty.
 void nameUniquely(std::vector<ModelPart>& parts, const std::string& path) {
     std::map<std::string, int> seen;
@@ -105,29 +62,33 @@ bool nameHasAny(const std::string& name, std::initializer_list<const char*> word
 
 } // namespace
 
-std::vector<ModelPart> loadModelParts(const std::string& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) throw ModelError(path, "no such file");
-    if (std::filesystem::is_directory(path, error)) throw ModelError(path, "is a directory, not a model file");
-    if (!std::ifstream(path).good()) throw ModelError(path, "cannot be read (permission denied?)");
-    Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
-    if (scene == nullptr) {
-        std::string cause = importer.GetErrorString();
-        if (cause.empty()) cause = "unknown import error";
-        for (char& c : cause)
-            if (c == '\n' || c == '\r') c = ' ';
-        throw ModelError(path, "cannot be read as a model: " + cause);
+std::vector<ModelPart> loadModelParts(const std::string& path, const MeshLoadOptions& options) {
+    // The same child process and checks as loadMesh: no model is read by assimp in this process.
+    const CheckedImport checked = importChecked(path, options);
+    const ImportedTriangles& imported = checked.imported;
+    std::vector<ModelPart> parts;
+    std::size_t next = 0;
+    for (const ImportedPart& piece : imported.parts) {
+        ModelPart part;
+        part.name = piece.name;
+        part.hasColour = piece.hasColour;
+        part.colour = piece.colour;
+        // The part's own vertices, in the order its triangles first use them.
+        std::unordered_map<std::uint32_t, std::uint32_t> local;
+        for (std::size_t t = next; t < next + std::size_t(piece.triangleCount); ++t) {
+            std::array<std::uint32_t, 3> triangle{};
+            for (std::size_t c = 0; c < 3; ++c) {
+                const std::uint32_t global = imported.triangles[t][c];
+                const auto [it, added] = local.emplace(global, std::uint32_t(part.mesh.vertices.size()));
+                if (added) part.mesh.vertices.push_back(checked.centred(global));
+                triangle[c] = it->second;
+            }
+            part.mesh.triangles.push_back(triangle);
+        }
+        next += std::size_t(piece.triangleCount);
+        part.mesh = sandcore::weldVertices(part.mesh);
+        parts.push_back(std::move(part));
     }
-    PartCollector collector{*scene, path, {}};
-    if (scene->mRootNode != nullptr) collector.visit(*scene->mRootNode, aiMatrix4x4());
-    std::vector<ModelPart> parts = std::move(collector.parts);
-    if (parts.empty()) throw ModelError(path, "contains no triangles (only points or lines, or nothing)");
-    const sandcore::MeshBounds bounds = sandcore::boundsOf(mergedMesh(parts));
-    const char* axes[3] = {"x", "y", "z"};
-    for (int a = 0; a < 3; ++a)
-        if (!(bounds.extent(a) > 0.0))
-            throw ModelError(path, std::string("has zero extent along ") + axes[a] + " (a flat model encloses no volume)");
     nameUniquely(parts, path);
     for (ModelPart& part : parts) part.closed = sandcore::closednessOf(part.mesh).closed;
     return parts;

@@ -2,6 +2,8 @@
 // SPEC S7: a model file as artists make it, several named objects (assimp nodes), each a part
 // with a role in the scene. A file without objects (a binary STL) is one part.
 
+#include "scene/mesh_loader.hpp"
+
 #include "sandcore/scene.hpp"
 #include "sandcore/triangle_mesh.hpp"
 
@@ -54,10 +56,14 @@ struct PartSummary {
 };
 
 /// Reads every object of a model file as a part, in the order of assimp's node tree (the order
-/// loadMesh merges them). Throws ModelError ("FILE: cause") for every S1 bad input.
-std::vector<ModelPart> loadModelParts(const std::string& path);
+/// loadMesh merges them), through the same importer child process and checks as loadMesh (a
+/// corrupt file that crashes or hangs assimp, or a FIFO, costs one line of error, never the
+/// process). Vertices are moved as loadMesh moves them (bounding-box centre at the origin) and
+/// joined within each part. Throws ModelError ("FILE: cause") for every S1 bad input.
+std::vector<ModelPart> loadModelParts(const std::string& path, const MeshLoadOptions& options = {});
 
-/// All parts as one mesh, in order; with the same file this is loadMesh's mesh.
+/// All parts as one mesh, in order: loadMesh's triangles at loadMesh's positions (vertices shared
+/// by two parts are not joined).
 sandcore::TriangleMesh mergedMesh(const std::vector<ModelPart>& parts);
 
 /// Gives every part its role. Automatic for the hourglass: names with glass/vessel/bulb are the
