@@ -132,6 +132,7 @@ Application::~Application() { glfwSetWindowUserPointer(window_.handle(), nullptr
 void Application::frameCamera() {
     sandcore::Vec3 lo, hi;
     sandcore::sceneBounds(host_.scene(), {state_.render.cellSize, state_.render.jitter}, lo, hi);
+    if (const auto& model = host_.modelDrawing()) includeInBounds(*model, scene().flipped(), state_.render.cellSize, lo, hi);
     camera_.frame(lo, hi);
     // The canvas is painted from above and a little from the front, so sand lands where the
     // cursor points and the piles still show their height.
@@ -233,7 +234,7 @@ void Application::renderHostFrame(SceneHost& host, const RenderSettings& render,
 void Application::drawHost(SceneHost& host, const RenderSettings& render) {
     // The renderer hears only of real changes: a new layout rebuilds the hull, new grains re-upload.
     if (&host != drawnHost_ || host.layoutRevision() != drawnLayout_) {
-        renderer_.setScene(host.scene(), render.cellSize);
+        renderer_.setScene(host.scene(), render.cellSize, host.modelDrawing().get());
         drawnLayout_ = host.layoutRevision();
         drawnContent_ = 0;
     }

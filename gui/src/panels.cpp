@@ -132,6 +132,8 @@ void drawDisplaySection(AppState& state) {
     ImGui::Checkbox("inner grains", &render.innerGrains);
     ImGui::SameLine();
     ImGui::Checkbox("glass", &render.hull);
+    ImGui::SameLine();
+    ImGui::Checkbox("voxel hull", &render.voxelHull); // S10: the model's cells, not its triangles
     if (render.lighting) {
         int method = int(render.normals);
         const char* methods[] = {"column heights (thesis)", "occupancy gradient"};

@@ -104,6 +104,24 @@ Scene makeSculptureScene(const InsideMask& model, const InsideMask& obstacles, c
     return Scene(SceneKind::Sculpture, std::move(upper), std::move(lower), std::move(fill), step);
 }
 
+Int3 maskOriginInScene(SceneKind kind, const InsideMask& mask) {
+    requireInside(mask, "the mask");
+    if (kind == SceneKind::Hourglass) {
+        int bottom = 0;
+        while (mask.countInsideLayer(bottom) == 0) ++bottom;
+        const InsideMask vessel = trimmedToInsideLayers(mask);
+        // Split at the neck, world height is the trimmed mask's; without a neck the vessel is the
+        // upper grid over a lower box of its own height (the shared row counted once).
+        const bool split = hasNeck(vessel, findNeckLayer(vessel));
+        return {0, -bottom + (split ? 0 : vessel.size.y - 1), 0};
+    }
+    if (kind == SceneKind::Sculpture) {
+        const SceneGridSizes sizes = sceneGridSizes(SceneKind::Sculpture, mask.size);
+        return {(sizes.upper.x - mask.size.x) / 2, sizes.lower.y - 1, (sizes.upper.z - mask.size.z) / 2};
+    }
+    throw std::invalid_argument("the canvas is built from no mask");
+}
+
 std::uint32_t pourCell(const Scene& scene) {
     const CellGrid& upper = scene.grid(GridLevel::Upper);
     const Int3 s = upper.size();

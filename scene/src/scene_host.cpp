@@ -35,7 +35,7 @@ SceneHost::SceneHost(const SceneSettings& settings) {
     clock_.setMaxStepsPerFrame(kMaxStepsPerFrame);
     SceneSettings checked = settings;
     applySceneDefaults(checked);
-    adopt(buildScene(checked), checked);
+    adopt(buildSceneWithReport(checked), checked);
 }
 
 SceneHost::~SceneHost() {
@@ -53,8 +53,9 @@ sandcore::Scene& SceneHost::editLayout() {
     return editScene();
 }
 
-void SceneHost::adopt(sandcore::Scene scene, const SceneSettings& settings) {
-    scene_ = std::make_unique<sandcore::Scene>(std::move(scene));
+void SceneHost::adopt(BuiltScene built, const SceneSettings& settings) {
+    scene_ = std::make_unique<sandcore::Scene>(std::move(built.scene));
+    drawing_ = std::move(built.drawing);
     loaded_ = settings;
     lastStepOutsideClock_ = false;
     rate_.clear();
@@ -66,7 +67,7 @@ void SceneHost::startBuild(SceneSettings settings) {
     building_ = settings;
     buildStarted_ = Clock::now();
     // Scenes are built off the main thread so the window stays responsive.
-    build_ = std::async(std::launch::async, [settings = std::move(settings)] { return buildScene(settings); });
+    build_ = std::async(std::launch::async, [settings = std::move(settings)] { return buildSceneWithReport(settings); });
 }
 
 void SceneHost::requestBuild(const SceneSettings& settings) {
@@ -84,13 +85,13 @@ std::optional<BuildOutcome> SceneHost::pollBuild() {
     if (!build_.valid() || build_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
     BuildOutcome outcome;
     try {
-        sandcore::Scene scene = build_.get();
+        BuiltScene built = build_.get();
         if (waiting_) {
             // Newer settings arrived while this one was built: it is stale, build those instead.
             startBuild(*std::exchange(waiting_, std::nullopt));
             return std::nullopt;
         }
-        adopt(std::move(scene), building_);
+        adopt(std::move(built), building_);
         outcome.adopted = true;
         outcome.message = std::string("built ") + sceneKindName(scene_->kind()) + ", " +
                           std::to_string(scene_->grainCount()) + " grains";

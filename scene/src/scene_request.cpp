@@ -189,6 +189,11 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
         built.upAxisFound = space.upFound;
         built.cavityMilliseconds = space.cavityMilliseconds;
         built.sandSpaceCells = mask.countInside();
+        ModelToWorld toWorld{space.model.voxels.placement, space.up, sandcore::maskOriginInScene(request.kind, mask)};
+        const sandcore::Int3 upperOrigin = built.scene.gridOrigin(sandcore::GridLevel::Upper);
+        const float height = float(upperOrigin.y + built.scene.grid(sandcore::GridLevel::Upper).size().y);
+        ModelDrawing drawing = makeModelDrawing(space.parts, toWorld, height);
+        if (!drawing.parts.empty()) built.drawing = std::make_shared<const ModelDrawing>(std::move(drawing));
         return built;
     } catch (const std::invalid_argument& e) {
         throw ModelError(request.modelPath, e.what());

@@ -18,6 +18,7 @@ void addViewOptions(CLI::App& command, ViewOptions& options) {
     command.add_flag("--no-inner", options.hideInner, "skip grains hidden by their neighbours");
     command.add_flag("--black", options.black, "black background (default white)");
     command.add_flag("--no-hull", options.noHull, "do not draw the glass vessel");
+    command.add_flag("--voxel-hull", options.voxelHull, "draw a model's vessel as its voxel cells, not as modelled");
     command.add_option("--size", options.size, "window or image size in pixels, WxH");
     addNumberOption(command, "--steps", options.steps, 0, 100'000'000, "simulation steps before the first frame");
     addNumberOption(command, "--zoom", options.zoom, 0.05f, 20.0f,
@@ -44,6 +45,7 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
     state.render.innerGrains = !options.hideInner;
     state.render.blackBackground = options.black;
     state.render.hull = !options.noHull;
+    state.render.voxelHull = options.voxelHull;
     result.cameraZoom = options.zoom;
     result.window.width = defaultWidth;
     result.window.height = defaultHeight;

@@ -3,6 +3,7 @@
 // command line, the benchmark and the window all build scenes through here, and every value of a
 // request is given its default and checked in one place (applySceneDefaults), with one range each.
 
+#include "scene/model_drawing.hpp"
 #include "scene/model_parts.hpp"
 #include "scene/model_voxelizer.hpp"
 #include "scene/sand_space.hpp"
@@ -10,6 +11,7 @@
 #include "sandcore/inside_mask.hpp"
 #include "sandcore/scene.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -78,6 +80,9 @@ struct BuiltScene {
     bool upAxisFound = false;               ///< S9: the up axis was found, not given
     double cavityMilliseconds = 0.0;        ///< S8: time of the walls' voxelization and cavity search, ms
     std::int64_t sandSpaceCells = 0;        ///< cells sand may take (hourglass: both bulbs; sculpture: the model)
+    /// S10: the model's parts as modelled, in the scene's world cells (upright); null without a
+    /// model or when no part is drawn (a sculpture that is all sand).
+    std::shared_ptr<const ModelDrawing> drawing;
 };
 
 /// "hourglass", "sculpture" or "canvas" to a scene kind; throws std::invalid_argument otherwise.

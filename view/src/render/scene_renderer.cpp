@@ -40,7 +40,7 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
       hullProgram_(loadShaderProgram(shaderFolder / "hull.vert", shaderFolder / "hull.frag")),
       grainArray_(newVertexArray()), hullArray_(newVertexArray()), lineArray_(newVertexArray()),
       grainBuffer_(newBuffer()), hullBuffer_(newBuffer()), lineBuffer_(newBuffer()),
-      patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
+      model_(shaderFolder), patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
     // Per-instance attributes; the vertex shader needs no per-vertex data (it uses gl_VertexID).
     glBindVertexArray(grainArray_.get());
     glBindBuffer(GL_ARRAY_BUFFER, grainBuffer_.get());
@@ -93,7 +93,8 @@ void SceneRenderer::uploadPatternColors(SandPalette palette) {
     patternPalette_ = palette;
 }
 
-void SceneRenderer::setScene(const sandcore::Scene& scene, float cellSize) {
+void SceneRenderer::setScene(const sandcore::Scene& scene, float cellSize, const ModelDrawing* drawing) {
+    model_.set(drawing, scene.flipped(), cellSize);
     const HullMesh mesh = buildHullMesh(scene, cellSize);
     hullUpperObstacles_ = scene.obstacles(sandcore::GridLevel::Upper);
     hullLowerObstacles_ = scene.obstacles(sandcore::GridLevel::Lower);
@@ -154,8 +155,14 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     uploadGrains(scene, stepFraction, settings);
     const glm::mat4 viewProjection = camera.projection(float(width) / float(height)) * camera.view();
     drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale);
+    // S10: the model as modelled, its opaque parts with the sand, its glass over both.
+    const bool modelled = settings.hull && !settings.voxelHull && !model_.empty();
+    const ModelLight frame{glm::value_ptr(viewProjection), camera.position(),
+                           camera.position() - camera.up() * (0.15f * camera.distance()), settings.blackBackground};
+    if (modelled) model_.drawOpaque(frame);
     draft_.draw(draftPlacement_, glm::value_ptr(viewProjection));
-    if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
+    if (modelled) model_.drawGlass(frame);
+    else if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
     glBindVertexArray(0);
     glUseProgram(0);
 }

@@ -21,6 +21,7 @@ struct ViewOptions {
     bool hideInner = false;           ///< skip inner grains
     bool black = false;               ///< black background
     bool noHull = false;              ///< no glass
+    bool voxelHull = false;           ///< S10: the voxel hull instead of the model as modelled
     std::string size;                 ///< "WxH" in pixels; empty = the command's default
     int steps = 0;                    ///< simulation steps before the first frame
     float zoom = 1.0f;                ///< camera distance as a share of the distance that frames the scene

@@ -46,6 +46,7 @@ struct RenderSettings {
     bool innerGrains = true;              ///< V4: draw grains hidden by their 6 neighbours; default on
     bool blackBackground = false;         ///< V5: thesis default white
     bool hull = true;                     ///< V6: translucent vessel hull (beyond the thesis)
+    bool voxelHull = false;               ///< S10: a model's vessel as the voxel hull, not as modelled
     float pointSize = 3.0f;               ///< points and sprites: diameter in pixels at content scale 1
     float quadSize = 0.9f;                ///< billboards: quad edge in cells at 1 grain per cell (shrinks with k)
     float jitter = 0.5f;                  ///< R8 jitter 0..1 of a grain inside its cell

@@ -7,6 +7,7 @@
 #include "view/render/draft_overlay.hpp"
 #include "view/render/gl_objects.hpp"
 #include "view/render/grain_instances.hpp"
+#include "view/render/model_surfaces.hpp"
 #include "view/render/render_settings.hpp"
 
 #include "sandcore/scene.hpp"
@@ -32,8 +33,10 @@ public:
     /// context. Throws std::runtime_error with one line on a shader problem.
     explicit SceneRenderer(const std::filesystem::path& shaderFolder);
 
-    /// Takes a new scene: rebuilds the hull mesh and forgets cached grain data.
-    void setScene(const sandcore::Scene& scene, float cellSize);
+    /// Takes a new scene: rebuilds the hull mesh and forgets cached grain data. With a model
+    /// drawing (S10) the vessel is drawn as modelled instead of the voxel hull, unless the
+    /// settings ask for the voxel hull; the drawing is mirrored when the scene is turned over.
+    void setScene(const sandcore::Scene& scene, float cellSize, const ModelDrawing* drawing = nullptr);
     /// True when the hull was built with exactly the scene's obstacles (same boxes, same order,
     /// both grids); after an edit that may have changed them, false means setScene is due.
     bool hullShowsObstaclesOf(const sandcore::Scene& scene) const;
@@ -64,6 +67,7 @@ private:
     GlProgram grainProgram_, hullProgram_;
     GlVertexArray grainArray_, hullArray_, lineArray_;
     GlBuffer grainBuffer_, hullBuffer_, lineBuffer_;
+    ModelSurfaces model_; // S10: the model as modelled
     GlTexture patternOffsets_, patternColors_;
     GrainInstanceBuilder builder_;
     DraftOverlay draft_;
