@@ -97,6 +97,7 @@ TEST_CASE("render: in the default look at least 90% of sand pixels are warm, unl
             if (warm(px.r, px.g, px.b)) ++warmPixels;
         }
         REQUIRE(sand > int(positions.size()) / 2);
+        MESSAGE("warm sand pixels, lighting " << light << ": " << warmPixels << " of " << sand); // shown with -s
         CHECK(warmPixels * 10 >= sand * 9);
     }
 }
