@@ -63,6 +63,32 @@ void SceneHost::adopt(BuiltScene built, const SceneSettings& settings) {
     ++layoutRevision_;
 }
 
+namespace {
+
+// The drawing of the model a loaded scene was built from: the build is made again and its
+// drawing kept only when its grids are the loaded scene's (turned over, the grids swap).
+std::shared_ptr<const ModelDrawing> drawingOfLoaded(const sandcore::Scene& loaded, const SceneSettings& settings) {
+    if (settings.request.modelPath.empty()) return nullptr;
+    try {
+        const BuiltScene again = buildSceneWithReport(settings);
+        const sandcore::GridLevel upper = loaded.flipped() ? sandcore::GridLevel::Lower : sandcore::GridLevel::Upper;
+        const sandcore::GridLevel lower = loaded.flipped() ? sandcore::GridLevel::Upper : sandcore::GridLevel::Lower;
+        const bool same = again.scene.grid(sandcore::GridLevel::Upper).size() == loaded.grid(upper).size() &&
+                          again.scene.grid(sandcore::GridLevel::Lower).size() == loaded.grid(lower).size();
+        return same ? again.drawing : nullptr;
+    } catch (const std::exception&) {
+        return nullptr; // the model file is gone or broken: the loaded scene still runs, with its voxel hull
+    }
+}
+
+} // namespace
+
+void SceneHost::adoptLoaded(sandcore::Scene scene, const SceneSettings& settings) {
+    BuiltScene loaded(std::move(scene));
+    loaded.drawing = drawingOfLoaded(loaded.scene, settings);
+    adopt(std::move(loaded), settings);
+}
+
 void SceneHost::startBuild(SceneSettings settings) {
     building_ = settings;
     buildStarted_ = Clock::now();

@@ -3,6 +3,7 @@
 // voxelizer's cells: point by point for the turns, and for the bundled hourglasses by the
 // sand space (the cavity the scene holds) lying centred inside the drawn glass.
 #include "scene/model_drawing.hpp"
+#include "scene/scene_host.hpp"
 #include "scene/scene_request.hpp"
 
 #include "sandcore/scene.hpp"
@@ -145,4 +146,29 @@ TEST_CASE("model drawing: glass and frame keep their roles and colours, smooth n
     procedural.shape = "hourglass";
     procedural.resolution = 24;
     CHECK(buildSceneWithReport({procedural, {}}).drawing == nullptr);
+}
+
+TEST_CASE("model drawing: a loaded scene is drawn as modelled when its model file still gives its grids") {
+    SceneSettings settings;
+    settings.request.modelPath = bundled("framed_hourglass.obj");
+    settings.request.resolution = 24;
+    SceneHost host(settings);
+    REQUIRE(host.modelDrawing() != nullptr);
+    sandcore::Scene turned = host.scene().clone();
+    REQUIRE(turned.flip());
+    const std::int64_t grains = turned.grainCount();
+    host.adoptLoaded(std::move(turned), settings);
+    CHECK(host.modelDrawing() != nullptr);
+    CHECK(host.scene().flipped());
+    // Another resolution gives other grids: the drawing would not fit, the voxel hull is drawn.
+    SceneSettings other = settings;
+    other.request.resolution = 20;
+    host.adoptLoaded(host.scene().clone(), other);
+    CHECK(host.modelDrawing() == nullptr);
+    // The model file is gone: the scene still runs, without a drawing.
+    SceneSettings gone = settings;
+    gone.request.modelPath = bundled("no_such_model.obj");
+    host.adoptLoaded(host.scene().clone(), gone);
+    CHECK(host.modelDrawing() == nullptr);
+    CHECK(host.scene().grainCount() == grains);
 }

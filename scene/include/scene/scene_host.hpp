@@ -59,14 +59,16 @@ public:
     /// As editScene, for edits that also change which cells are INVALID (obstacles).
     sandcore::Scene& editLayout();
     /// S10: the running scene's model as modelled (upright world cells); null for a procedural
-    /// scene, a canvas, or a scene loaded from a state file.
+    /// scene, a canvas, or a loaded scene whose model file is gone or changed.
     const std::shared_ptr<const ModelDrawing>& modelDrawing() const { return drawing_; }
     /// The settings the running scene was built from: what the panel shows as loaded.
     const SceneSettings& loaded() const { return loaded_; }
 
     /// E1: runs a scene that was loaded from a state file in place of the running one, with the
     /// settings it was built from; a build still running replaces it when done, as any request.
-    void adoptLoaded(sandcore::Scene scene, const SceneSettings& settings) { adopt(BuiltScene(std::move(scene)), settings); }
+    /// S10: a scene from a model file is drawn as modelled again when the file still gives the
+    /// same grids (else, or when it cannot be read, the voxel hull is drawn).
+    void adoptLoaded(sandcore::Scene scene, const SceneSettings& settings);
 
     /// Starts building `settings` on a worker thread. While a build runs, the newest request
     /// waits and starts when it is done; the ones in between are dropped.
