@@ -116,6 +116,7 @@ TEST_CASE("render: the framed hourglass is drawn as modelled, an opaque frame an
     CAPTURE(plateOnWhite.r);
     CAPTURE(plateOnWhite.g);
     CAPTURE(plateOnWhite.b);
+    MESSAGE("top plate " << plateOnWhite.r << " " << plateOnWhite.g << " " << plateOnWhite.b); // with -s
     CHECK(wood(plateOnWhite));
     CHECK(std::abs(plateOnWhite.r - plateOnBlack.r) <= 2);
     CHECK(std::abs(plateOnWhite.g - plateOnBlack.g) <= 2);
@@ -125,6 +126,7 @@ TEST_CASE("render: the framed hourglass is drawn as modelled, an opaque frame an
 
     // The sand inside both glass walls: its pixels stay sand coloured behind the near wall.
     REQUIRE(white.grainPixels > 100);
+    MESSAGE("warm grain pixels behind the glass: " << white.warmGrainPixels << " of " << white.grainPixels); // with -s
     CHECK(white.warmGrainPixels * 10 >= white.grainPixels * 9);
 
     // The glass over the empty lower bulb, on black: faint where it faces the eye, a brighter
@@ -143,6 +145,7 @@ TEST_CASE("render: the framed hourglass is drawn as modelled, an opaque frame an
             const testing::Pixel p = testing::pixelAt(black.image, x, row);
             if (!wood(p)) rim = std::max(rim, brightness(p));
         }
+        MESSAGE("glass on black, side " << direction << ": rim " << rim << ", centre " << brightness(centre)); // with -s
         CHECK(rim > brightness(centre) + 90);
     }
 }
