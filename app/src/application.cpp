@@ -435,13 +435,15 @@ void Application::serve(Command command) {
         }
         break;
     case Command::LoadDraft: loadDraft(state_.painting.draftPath); break;
-    case Command::AddObstacle:
+    case Command::AddObstacle: {
+        const std::uint64_t layout = host_.layoutRevision();
         state_.statusLine = canvas_.addObstacle(host_, state_.painting.obstacleMin, state_.painting.obstacleMax);
-        ++state_.files.unsavedEdits;
+        if (host_.layoutRevision() != layout) ++state_.files.unsavedEdits;
         break;
+    }
     case Command::ClearObstacles:
         canvas_.clearObstacles(host_);
-        ++state_.files.unsavedEdits;
+        if (scene().kind() == sandcore::SceneKind::Canvas) ++state_.files.unsavedEdits;
         state_.statusLine = "obstacles removed";
         break;
     case Command::Quit: askToQuit(); break;
