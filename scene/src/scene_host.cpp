@@ -40,7 +40,7 @@ SceneHost::SceneHost(const SceneSettings& settings) {
 
 SceneHost::SceneHost(sandcore::Scene scene, const SceneSettings& settings) {
     clock_.setMaxStepsPerFrame(kMaxStepsPerFrame);
-    adopt(std::move(scene), settings);
+    adoptLoaded(std::move(scene), settings);
 }
 
 SceneHost::~SceneHost() {
