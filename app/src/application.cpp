@@ -1,6 +1,7 @@
 #include "app/application.hpp"
 
 #include "app/frame_benchmark_runner.hpp"
+#include "gui/help_window.hpp"
 #include "gui/panels.hpp"
 #include "view/render/shader_program.hpp"
 
@@ -75,6 +76,10 @@ struct ApplicationCallbacks {
     }
     static void mouseButton(GLFWwindow* window, int button, int action, int mods) {
         ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
+        // Every press and release is kept, so clicks between two slow frames all count.
+        double x = 0.0, y = 0.0;
+        glfwGetCursorPos(window, &x, &y);
+        of(window).queueMouseButton(button, action == GLFW_PRESS, x, y);
     }
     static void focus(GLFWwindow* window, int focused) { ImGui_ImplGlfw_WindowFocusCallback(window, focused); }
     static void enter(GLFWwindow* window, int entered) { ImGui_ImplGlfw_CursorEnterCallback(window, entered); }
@@ -196,10 +201,22 @@ void Application::finishFrame() {
         window_.swapBuffers();
 }
 
-void Application::renderFrame(double elapsedSeconds) {
-    imgui_.newFrame();
-    handleMouse();
+void Application::queueMouseButton(int button, bool pressed, double x, double y) {
+    imgui_.queueMouseTransition({button, pressed, x, y});
+}
+
+void Application::buildWindows() {
     if (state_.showGui) drawPanels(state_);
+    drawHelpWindow(state_);
+    // The hint is for a person at a window; hidden windows (render, tests) draw the scene only.
+    if (options_.window.visible && state_.showGui) drawHelpHint(state_);
+}
+
+void Application::renderFrame(double elapsedSeconds) {
+    state_.uiScale = imgui_.setUiScale(state_.uiScale);
+    imgui_.newFrame([this] { buildWindows(); });
+    handleMouse();
+    buildWindows();
     camera_.setLensShift(state_.showGui ? state_.panelCoverage : 0.0f);
     serveCommands();
     updateTimer();
@@ -219,6 +236,7 @@ void Application::renderFrame(double elapsedSeconds) {
 void Application::renderHostFrame(SceneHost& host, const RenderSettings& render, bool panels, double elapsedSeconds) {
     imgui_.newFrame();
     if (panels) drawPanels(state_); // what they queue waits for the application's own frames
+    if (benchmark_.running) drawBenchmarkProgress();
     host.setRunning(true);
     host.setStepsPerSecond(state_.stepsPerSecond);
     host.advance(elapsedSeconds);
@@ -264,8 +282,13 @@ void Application::handleMouse() {
     for (const auto& [glfwButton, button] : buttons)
         if (glfwGetMouseButton(handle, glfwButton) == GLFW_PRESS)
             applyMouseDrag(capture, button, alt, leftPaints, dx, dy, float(height), camera_);
-    if (scene().kind() == sandcore::SceneKind::Canvas)
-        handleCanvasPointer({x, y, glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS, alt, capture.mouse});
+    if (scene().kind() != sandcore::SceneKind::Canvas) return;
+    const bool leftDown = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    // While an obstacle is being placed, the left button drags its box instead of pouring sand.
+    if (state_.obstacleDrag.armed || state_.obstacleDrag.dragging)
+        handleObstacleDrag(x, y, leftDown && !alt, capture);
+    else
+        handleCanvasPointer({x, y, leftDown, alt, capture.mouse});
 }
 
 void Application::handleKey(KeyCommand command) {
@@ -279,8 +302,17 @@ void Application::handleKey(KeyCommand command) {
         std::printf("%.1f frames per second, %.2f ms per frame\n", state_.stats.framesPerSecond,
                     state_.stats.millisecondsPerFrame);
         break;
-    case KeyCommand::RunBenchmark: state_.commands.push(Command::Benchmark); break;
-    case KeyCommand::Quit: state_.commands.push(Command::Quit); break;
+    case KeyCommand::RunBenchmark:
+        if (!benchmark_.running) state_.commands.push(Command::Benchmark);
+        break;
+    case KeyCommand::Quit:
+        // Esc during the frame benchmark ends the benchmark, not the program.
+        if (benchmark_.running)
+            benchmark_.cancelRequested = true;
+        else
+            state_.commands.push(Command::Quit);
+        break;
+    case KeyCommand::Help: state_.showHelp = !state_.showHelp; break;
     case KeyCommand::Screenshot: state_.commands.push(Command::Screenshot); break;
     case KeyCommand::Undo: state_.commands.push(Command::Undo); break;
     case KeyCommand::Flip: state_.commands.push(Command::Flip); break;
@@ -485,6 +517,12 @@ void Application::runInteractiveBenchmark() {
     state_.statusLine = "benchmark running...";
     try {
         const BenchmarkReport report = runFrameBenchmark(*this, thesisBenchmarkCases(), BenchmarkTiming{});
+        if (report.cancelled) {
+            state_.statusLine = "benchmark cancelled";
+            std::printf("%s\n", state_.statusLine.c_str());
+            std::fflush(stdout);
+            return;
+        }
         writeBenchmarkFiles(options_.benchmarkFolder, {report}, "key B in the window");
         state_.statusLine = "benchmark written to " + (options_.benchmarkFolder / "benchmark.txt").string();
         std::printf("%s\n", state_.statusLine.c_str());

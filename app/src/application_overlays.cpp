@@ -77,7 +77,24 @@ void Application::drawOverlays() {
         const bool on = int(ImGui::GetTime() * 2.0) % 2 == 0;
         banner("##timeup", "  Time is up  ", on ? ImVec4(0.80f, 0.25f, 0.10f, 0.95f) : ImVec4(0.45f, 0.12f, 0.05f, 0.95f));
     }
-    if (scene().kind() == sandcore::SceneKind::Canvas) drawBrushOutline();
+    if (scene().kind() == sandcore::SceneKind::Canvas) {
+        if (state_.obstacleDrag.armed || state_.obstacleDrag.dragging)
+            drawObstacleBox();
+        else
+            drawBrushOutline();
+    }
+}
+
+void Application::drawBenchmarkProgress() {
+    // The frame benchmark takes a minute: which row runs, and how to stop it.
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("##benchmark", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+    ImGui::Text("Frame benchmark: setting %d of %d", std::min(benchmark_.rowsDone + 1, benchmark_.rows), benchmark_.rows);
+    const float done = benchmark_.rows > 0 ? float(benchmark_.rowsDone) / float(benchmark_.rows) : 0.0f;
+    ImGui::ProgressBar(done, ImVec2(ImGui::GetFontSize() * 16.0f, 0.0f));
+    ImGui::TextUnformatted(benchmark_.cancelRequested ? "stopping..." : "Esc cancels");
+    ImGui::End();
 }
 
 void Application::drawBrushOutline() {

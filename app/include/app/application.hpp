@@ -78,6 +78,20 @@ public:
     bool loadStateFile(const std::string& path);
     /// Serves the commands the panels and keys queued (rebuild, reset, undo, draft, obstacles...).
     void serveCommands();
+    /// A mouse button pressed or released at (x, y) window units: the GLFW callback calls this
+    /// for every event, so several clicks between two frames each reach the panels.
+    void queueMouseButton(int button, bool pressed, double x, double y);
+
+    /// The frame benchmark's progress (B key, bench --render): rows done of rows, and whether
+    /// Esc asked to stop it.
+    struct BenchmarkProgress {
+        bool running = false;
+        bool cancelRequested = false;
+        int rowsDone = 0;
+        int rows = 0;
+    };
+    BenchmarkProgress& benchmarkProgress() { return benchmark_; }
+
     /// Runs simulation steps now, outside the clock (for scripted drawings and tests).
     void runSteps(int steps) { host_.runSteps(steps); }
     /// Share (0..1) of the last step's glide that frames draw now.
@@ -110,6 +124,10 @@ private:
     bool saveScreenshot(const std::filesystem::path& file);
     std::filesystem::path nextScreenshotName();
     void runInteractiveBenchmark();
+    void buildWindows();
+    void drawBenchmarkProgress();
+    void handleObstacleDrag(double x, double y, bool leftDown, const InputCapture& capture);
+    void drawObstacleBox();
 
     ApplicationOptions options_;
     AppState state_;
@@ -128,6 +146,7 @@ private:
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
     std::int64_t framesDrawn_ = 0;
     int screenshotsTaken_ = 0;
+    BenchmarkProgress benchmark_;
 };
 
 } // namespace sandglass
