@@ -1,5 +1,7 @@
 #include "gui/help_window.hpp"
 
+#include "gui/panels.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -44,6 +46,10 @@ void drawHelpWindow(AppState& state) {
                                                                    std::max(em * 6.0f, io.DisplaySize.y - em)));
     if (ImGui::Begin("Keys and mouse", &state.showHelp,
                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+        // Kept inside the window through any resize.
+        const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        const WindowPlacement inside = placeOnScreen({at.x, at.y}, size.x, size.y, io.DisplaySize.x, io.DisplaySize.y);
+        if (inside.x != at.x || inside.y != at.y) ImGui::SetWindowPos(ImVec2(inside.x, inside.y));
         if (ImGui::BeginTable("controls", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
             for (const ControlHelp& control : controlHelp()) {
                 ImGui::TableNextRow();
@@ -62,7 +68,9 @@ void drawHelpWindow(AppState& state) {
 void drawHelpHint(AppState& state) {
     if (!state.showHelpHint || state.showHelp) return;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - ImGui::GetFontSize()), ImGuiCond_Always,
+    // Centred under the scene, clear of the panel on the left.
+    const float left = state.showGui ? state.panelCoverage * display.x : 0.0f;
+    ImGui::SetNextWindowPos(ImVec2(0.5f * (left + display.x), display.y - ImGui::GetFontSize()), ImGuiCond_Always,
                             ImVec2(0.5f, 1.0f));
     ImGui::SetNextWindowBgAlpha(0.8f);
     ImGui::Begin("##helphint", nullptr,

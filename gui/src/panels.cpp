@@ -190,6 +190,9 @@ void drawControlSection(AppState& state) {
                            state.stats.maxStepsPerFrame);
     if (state.loaded.request.kind == sandcore::SceneKind::Hourglass) {
         if (ImGui::Button("Turn over (T)")) state.commands.push(Command::Flip);
+        // The timer on a line of its own, so it fits the narrow panel too.
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextUnformatted("timer");
         ImGui::SameLine();
         drawTimer(state);
     }
@@ -201,6 +204,7 @@ void drawControlSection(AppState& state) {
 void drawDisplaySection(AppState& state) {
     RenderSettings& render = state.render;
     // Thesis "+"/"-": more or fewer grains drawn per cell.
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("grains per cell");
     ImGui::SameLine();
     if (ImGui::Button(" - ") && render.grainsPerCell > 1) --render.grainsPerCell;
@@ -214,6 +218,7 @@ void drawDisplaySection(AppState& state) {
                             renderModeLabel(kRenderModes[2]), renderModeLabel(kRenderModes[3])};
     if (ImGui::Combo("mode", &mode, labels, 4)) render.mode = kRenderModes[mode];
     int background = render.blackBackground ? 1 : 0;
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("background");
     ImGui::SameLine();
     ImGui::RadioButton("white", &background, 0);
@@ -281,12 +286,14 @@ void drawSceneSection(AppState& state) {
             ImGui::EndCombo();
         }
         if (ImGui::BeginListBox("models/", ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * 4.0f))) {
-            for (const std::string& file : state.modelFiles)
-                if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(),
-                                      loaded.kind == scene.request.kind && loaded.modelPath == file)) {
+            for (const std::string& file : state.modelFiles) {
+                const bool isLoaded = loaded.kind == scene.request.kind && loaded.modelPath == file;
+                if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(), isLoaded)) {
                     scene.request.modelPath = file;
                     state.commands.push(Command::Rebuild);
                 }
+                if (isLoaded && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY(); // the loaded model in view
+            }
             if (state.modelFiles.empty()) ImGui::TextDisabled("(no model files)");
             ImGui::EndListBox();
         }
@@ -361,7 +368,7 @@ void drawPaintingSection(AppState& state) {
     ImGui::SameLine();
     ImGui::RadioButton("thin", &thin, 1);
     painting.thinLines = thin == 1;
-    ImGui::SliderInt("brush radius (cells)", &painting.brushRadius, 0, 8);
+    ImGui::SliderInt("brush radius", &painting.brushRadius, 0, 8);
 
     // P6: the colour of new grains.
     ImGui::Checkbox("default sand", &painting.defaultSandColor);
@@ -452,14 +459,14 @@ void drawStatisticsSection(AppState& state) {
     ImGui::Text("%.1f fps   %.2f ms per frame", stats.framesPerSecond, stats.millisecondsPerFrame);
     // The ring buffer starts at the oldest frame, so the plot scrolls left.
     // The label above the plot, never over the curve.
-    ImGui::TextDisabled("frame time, last %d frames (0 to 50 ms)", FrameStatistics::kHistory);
+    ImGui::TextDisabled("frame time (0 to 50 ms)");
     ImGui::PlotLines("##frametimes", stats.frameMilliseconds.data(), FrameStatistics::kHistory, stats.historyNext,
                      nullptr, 0.0f, 50.0f, ImVec2(-FLT_MIN, 3.0f * ImGui::GetFontSize()));
     ImGui::Text("grains %lld (upper %lld, lower %lld)", (long long)stats.grains, (long long)stats.grainsUpper,
                 (long long)stats.grainsLower);
     ImGui::Text("moving %lld   inner %lld", (long long)stats.movingGrains, (long long)stats.innerGrains);
-    ImGui::Text("steps %llu   %.1f steps/s   %.3f ms per step", (unsigned long long)stats.stepsDone,
-                stats.stepsPerSecond, stats.millisecondsPerStep);
+    ImGui::Text("steps %llu   %.1f steps/s", (unsigned long long)stats.stepsDone, stats.stepsPerSecond);
+    ImGui::Text("%.3f ms per step", stats.millisecondsPerStep);
     ImGui::Text("drawn %lld %s", (long long)stats.subGrainsDrawn,
                 state.render.mode == RenderMode::Points || state.render.mode == RenderMode::Sprites ? "points"
                                                                                                      : "quads");

@@ -22,6 +22,8 @@ struct GuiOptions {
     std::string load; ///< E1: a saved state to open instead of the built scene
     int paintDemoPasses = 0;
     int timerSeconds = 0;
+    std::string panelTab; ///< the panel tab shown first
+    bool showHelp = false; ///< open with the keys and mouse controls shown
 };
 
 int runGui(const GuiOptions& options) {
@@ -35,9 +37,13 @@ int runGui(const GuiOptions& options) {
         std::fprintf(stderr, "sandglass: %s\n", application.state().statusLine.c_str());
         return 1;
     }
-    // A bad draft is reported and the canvas opens without one (SPEC P5, §8).
-    if (!options.draft.empty() && !application.loadDraft(options.draft))
+    // A draft asked for on the command line that cannot be read fails the run, like --load.
+    if (!options.draft.empty() && !application.loadDraft(options.draft)) {
         std::fprintf(stderr, "sandglass: %s\n", application.state().statusLine.c_str());
+        return 1;
+    }
+    application.state().openTab = options.panelTab;
+    application.state().showHelp = options.showHelp;
     if (options.paintDemoPasses > 0)
         std::printf("paint demo: %lld grains poured\n", (long long)paintDraftDemo(application, options.paintDemoPasses));
     if (options.timerSeconds > 0) {
@@ -67,7 +73,10 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--benchmark-dir", options->benchmarkFolder, "where the B key writes benchmark.txt and .csv")
         ->capture_default_str();
     cmd->add_option("--load", options->load, "open a saved .sand state (simulate --save, Ctrl+S)");
-    cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image (P5)");
+    cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image to paint over");
+    cmd->add_option("--panel", options->panelTab, "open the panel on this tab")
+        ->check(CLI::IsMember({"run", "view", "scene", "paint", "file"}));
+    cmd->add_flag("--show-controls", options->showHelp, "open with the keys and mouse controls shown (F1 in the window)");
     addNumberOption(*cmd, "--paint-demo", options->paintDemoPasses, 1, 50,
                     "canvas with --draft: pour this many layers of sand over the draft, colour from draft");
     addNumberOption(*cmd, "--timer", options->timerSeconds, 1, 999 * 60 + 59,
