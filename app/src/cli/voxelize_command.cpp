@@ -3,6 +3,7 @@
 #include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
 #include "scene/file_io.hpp"
+#include "app/cli/terminal_progress.hpp"
 #include "scene/model_voxelizer.hpp"
 #include "scene/scene_export.hpp"
 #include "scene/scene_request.hpp"
@@ -33,7 +34,10 @@ int runVoxelize(const VoxelizeOptions& options) {
             throw std::invalid_argument("--out " + options.out + ": the voxels go to a .vox or .binvox file");
         requireWritableFileTarget(options.out);
     }
-    const ModelVoxelization model = voxelizeModelFile(options.file, options.settings, ModelUse::MaskOnly);
+    const ModelVoxelization model = [&] {
+        const ElapsedTicker ticker("voxelize " + std::filesystem::path(options.file).filename().string(), std::cerr);
+        return voxelizeModelFile(options.file, options.settings, ModelUse::MaskOnly);
+    }();
     if (!options.out.empty()) writeInsideMask(options.out, model.voxels.mask, &model.voxels.placement);
     const sandcore::VoxelizeResult& v = model.voxels;
     const sandcore::Int3 g = v.mask.size;
