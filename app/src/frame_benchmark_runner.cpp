@@ -8,7 +8,7 @@
 namespace sandglass {
 
 BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkCase>& cases,
-                                  const BenchmarkTiming& timing) {
+                                  const BenchmarkTiming& timing, const std::function<void()>& afterEachFrame) {
     using Clock = std::chrono::steady_clock;
     const SceneSettings& loaded = app.host().loaded();
     BenchmarkReport report;
@@ -29,6 +29,7 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         app.renderHostFrame(host, render, true, std::chrono::duration<double>(now - last).count());
         last = now;
         app.finishFrame();
+        if (afterEachFrame) afterEachFrame();
     };
     // The window shows which row runs and that Esc stops it (the key callback sets the request).
     Application::BenchmarkProgress& progress = app.benchmarkProgress();

@@ -65,6 +65,11 @@ public:
     /// The canvas mouse path: the window's mouse handling calls it every frame in the canvas
     /// scene, tests call it with scripted samples. Returns true when grains changed.
     bool handleCanvasPointer(const PointerSample& sample);
+    /// Obstacle placement with the mouse (after PaintingSettings "Place with the mouse" arms
+    /// AppState::obstacleDrag): a left press on the canvas floor starts a box, moves stretch it,
+    /// the release queues AddObstacle with the box (and the typed form's heights). The window's
+    /// mouse handling calls it while armed; tests call it with scripted samples.
+    void handleObstacleDrag(double x, double y, bool leftDown, const InputCapture& capture);
     /// The canvas column under a cursor position (window coordinates) on the surface the
     /// painting settings pick (source or target); the same lookup a stroke makes.
     std::optional<CanvasColumn> columnUnderCursor(double cursorX, double cursorY);
@@ -126,7 +131,6 @@ private:
     void runInteractiveBenchmark();
     void buildWindows();
     void drawBenchmarkProgress();
-    void handleObstacleDrag(double x, double y, bool leftDown, const InputCapture& capture);
     void drawObstacleBox();
 
     ApplicationOptions options_;
