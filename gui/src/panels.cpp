@@ -29,6 +29,19 @@ ImGuiTabItemFlags tabFlags(AppState& state, const PanelTab& tab) {
 
 } // namespace
 
+void hint(const char* text) {
+    // A hint in the lighter grey, wrapped so the narrow panel shows all of it.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
+
+int openWhereRoomy() {
+    // The folded parts start open where a tab has room for them (1280x800 at 100% text), and
+    // folded on small windows.
+    return ImGui::GetIO().DisplaySize.y >= 50.0f * ImGui::GetFontSize() ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+}
+
 float panelWidth(float displayWidth, float fontSize) {
     // 25 text heights where there is room; down to 18 on small windows so the scene keeps most
     // of the width; never wider than the window.
@@ -303,7 +316,7 @@ void drawSceneSection(AppState& state) {
             scene.request.modelPath = path;
             state.commands.push(Command::Rebuild);
         }
-        ImGui::TextDisabled("Enter loads it; or drop a model file on the window");
+        hint("Enter loads it; or drop a model file on the window");
         drawModelOptions(state);
     }
     // The slider spans the useful resolutions; the command line takes the whole range.
@@ -333,7 +346,7 @@ void drawSceneSection(AppState& state) {
 
 void drawModelOptions(AppState& state) {
     // S2, S3, S5: how a model file becomes cells; every change builds the scene again.
-    if (!ImGui::TreeNode("model options")) return;
+    if (!ImGui::TreeNodeEx("model options", openWhereRoomy())) return;
     SceneRequest& request = state.scene.request;
     ImGui::BeginDisabled(request.modelPath.empty()); // procedural shapes are solid already
     if (ImGui::Checkbox("robust inside test (open meshes)", &request.robust)) state.commands.push(Command::Rebuild);
@@ -385,7 +398,7 @@ void drawPaintingSection(AppState& state) {
     ImGui::BeginDisabled(painting.loadedDraft.empty());
     ImGui::Checkbox("draft image", &painting.showDraft);
     ImGui::EndDisabled();
-    if (ImGui::TreeNode("choose draft")) {
+    if (ImGui::TreeNodeEx("choose draft", openWhereRoomy())) {
         const std::string shown =
             painting.loadedDraft.empty() ? "(none)" : std::filesystem::path(painting.loadedDraft).filename().string();
         if (ImGui::BeginCombo("draft", shown.c_str())) {
@@ -403,7 +416,7 @@ void drawPaintingSection(AppState& state) {
             painting.draftPath = path;
             state.commands.push(Command::LoadDraft);
         }
-        ImGui::TextDisabled("or drop a PNG or JPEG on the window");
+        hint("or drop a PNG or JPEG on the window");
         ImGui::TreePop();
     }
 
@@ -419,7 +432,7 @@ void drawPaintingSection(AppState& state) {
     ImGui::Text("%zu kept (%.1f MiB compressed)", painting.undoSteps, double(painting.undoBytes) / double(1 << 20));
 
     // SPEC G2 / R11: a box of INVALID cells in the lower grid; sand piles on it.
-    if (ImGui::TreeNode("obstacles")) {
+    if (ImGui::TreeNodeEx("obstacles", openWhereRoomy())) {
         ObstacleDrag& drag = state.obstacleDrag;
         if (!drag.armed && !drag.dragging) {
             if (ImGui::Button("Place with the mouse")) drag.armed = true;
@@ -428,7 +441,7 @@ void drawPaintingSection(AppState& state) {
             ImGui::SameLine();
             ImGui::TextWrapped("drag a box on the canvas floor");
         }
-        ImGui::TextDisabled("or type it, in lower-grid cells (max exclusive; y: height)");
+        hint("or type it, in lower-grid cells (max exclusive; y: height)");
         ImGui::InputInt3("min x y z", painting.obstacleMin.data());
         ImGui::InputInt3("max x y z", painting.obstacleMax.data());
         if (ImGui::Button("Add obstacle")) state.commands.push(Command::AddObstacle);
@@ -459,9 +472,13 @@ void drawStatisticsSection(AppState& state) {
     ImGui::Text("%.1f fps   %.2f ms per frame", stats.framesPerSecond, stats.millisecondsPerFrame);
     // The ring buffer starts at the oldest frame, so the plot scrolls left.
     // The label above the plot, never over the curve.
-    ImGui::TextDisabled("frame time (0 to 50 ms)");
+    // The scale grows in steps of 50 ms so slow frames stay on the plot and the caption stays still.
+    const float slowest = *std::max_element(stats.frameMilliseconds.begin(), stats.frameMilliseconds.end());
+    const float top = 50.0f * std::ceil(std::max(slowest, 1.0f) / 50.0f);
+    ImGui::TextDisabled("frame time (0 to %.0f ms)", double(top));
     ImGui::PlotLines("##frametimes", stats.frameMilliseconds.data(), FrameStatistics::kHistory, stats.historyNext,
-                     nullptr, 0.0f, 50.0f, ImVec2(-FLT_MIN, 3.0f * ImGui::GetFontSize()));
+                     nullptr, 0.0f, top,
+                     ImVec2(ImGui::GetWindowWidth() - 2.0f * ImGui::GetStyle().WindowPadding.x, 3.0f * ImGui::GetFontSize()));
     ImGui::Text("grains %lld (upper %lld, lower %lld)", (long long)stats.grains, (long long)stats.grainsUpper,
                 (long long)stats.grainsLower);
     ImGui::Text("moving %lld   inner %lld", (long long)stats.movingGrains, (long long)stats.innerGrains);

@@ -58,7 +58,7 @@ TEST_CASE("panel width: about a third of small windows, at most 25 text heights 
     CHECK(panelWidth(100.0f, 15.0f) == doctest::Approx(100.0f));
 }
 
-TEST_CASE("window: F1 opens the help window, and a resize to 1x1 and back leaves the panel in place") {
+TEST_CASE("window: F1 opens the help window, the text size grows, and a resize to 1x1 and back leaves the panel in place") {
     if (!testing::requireDisplay("the help window")) return;
     ApplicationOptions options;
     options.window = {640, 480, false, false, "window layout test"};
@@ -80,6 +80,18 @@ TEST_CASE("window: F1 opens the help window, and a resize to 1x1 and back leaves
     keyCallback(handle, GLFW_KEY_F1, 0, GLFW_PRESS, 0);
     app->renderFrame(0.0);
     CHECK_FALSE(app->state().showHelp);
+
+    // The text size setting: larger text at once, kept within its range.
+    const float fontBefore = ImGui::GetFontSize();
+    app->state().uiScale = 1.5f;
+    app->renderFrame(0.0);
+    CHECK(ImGui::GetFontSize() == doctest::Approx(1.5f * fontBefore).epsilon(0.05));
+    app->state().uiScale = 9.0f;
+    app->renderFrame(0.0);
+    CHECK(app->state().uiScale == ImGuiLayer::kMaxUiScale);
+    app->state().uiScale = 1.0f;
+    app->renderFrame(0.0);
+    CHECK(ImGui::GetFontSize() == doctest::Approx(fontBefore));
 
     const ImGuiWindow* panel = ImGui::FindWindowByName("sandglass");
     REQUIRE(panel != nullptr);
