@@ -3,10 +3,12 @@
 #include "app/frame_benchmark_runner.hpp"
 #include "gui/help_window.hpp"
 #include "gui/panels.hpp"
+#include "gui/quit_question.hpp"
 #include "view/render/shader_program.hpp"
 
 #include "scene/canvas_surface.hpp"
 #include "scene/draft_image.hpp"
+#include "scene/file_io.hpp"
 #include "scene/scene_export.hpp"
 #include "scene/state_file.hpp"
 
@@ -42,10 +44,31 @@ std::vector<std::string> listModelFiles() {
     return files;
 }
 
-// The settings a window starts from, with the defaults applied and checked once.
-SceneSettings checkedSceneSettings(SceneSettings settings) {
+// The scene a window starts with: a saved state when one is named (nothing else is built
+// first), else the one its settings describe, with the defaults applied and checked once.
+SceneHost startingHost(const ApplicationOptions& options) {
+    if (!options.stateFile.empty()) {
+        LoadedState loaded = loadState(options.stateFile);
+        return SceneHost(std::move(loaded.scene), loaded.settings);
+    }
+    SceneSettings settings = options.initial.scene;
     applySceneDefaults(settings);
-    return settings;
+    return SceneHost(settings);
+}
+
+bool isStateFile(const std::filesystem::path& path) { return path.extension() == ".sand"; }
+
+// Where the file dialog starts for a choice: the path the panel holds for it.
+std::string startPathFor(const AppState& state, FileChoice choice) {
+    switch (choice) {
+    case FileChoice::OpenState:
+    case FileChoice::SaveState: return state.files.statePath;
+    case FileChoice::Export: return state.files.exportPath;
+    case FileChoice::Model: return state.scene.request.modelPath;
+    case FileChoice::Draft: return state.painting.draftPath;
+    case FileChoice::ScreenshotFolder: return state.files.screenshotFolder + "/";
+    }
+    return {};
 }
 
 } // namespace
@@ -81,12 +104,23 @@ struct ApplicationCallbacks {
         glfwGetCursorPos(window, &x, &y);
         of(window).queueMouseButton(button, action == GLFW_PRESS, x, y);
     }
+    static void close(GLFWwindow* window) {
+        // The window's close button asks first too, when there are unsaved edits (U5).
+        if (of(window).state_.files.unsavedEdits == 0) return;
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        of(window).state_.commands.push(Command::Quit);
+    }
     static void focus(GLFWwindow* window, int focused) { ImGui_ImplGlfw_WindowFocusCallback(window, focused); }
     static void enter(GLFWwindow* window, int entered) { ImGui_ImplGlfw_CursorEnterCallback(window, entered); }
     static void drop(GLFWwindow* window, int count, const char** paths) {
         if (count < 1) return;
         AppState& state = of(window).state_;
-        // An image dropped on the canvas is a draft; every other file is a model.
+        // A .sand file opens; an image dropped on the canvas is a draft; every other file is a model.
+        if (isStateFile(paths[0])) {
+            state.files.statePath = paths[0];
+            state.commands.push(Command::LoadState);
+            return;
+        }
         if (of(window).scene().kind() == sandcore::SceneKind::Canvas && isDraftImageFile(paths[0])) {
             state.painting.draftPath = paths[0];
             state.commands.push(Command::LoadDraft);
@@ -102,7 +136,7 @@ struct ApplicationCallbacks {
 Application::Application(ApplicationOptions options)
     : options_(std::move(options)), state_(options_.initial), window_(options_.window),
       imgui_(window_.handle(), window_.contentScale()), renderer_(shaderDirectory()),
-      host_(checkedSceneSettings(options_.initial.scene)), canvas_(shaderDirectory(), options_.undo) {
+      host_(startingHost(options_)), canvas_(shaderDirectory(), options_.undo) {
     if (options_.offscreen) {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
@@ -117,6 +151,7 @@ Application::Application(ApplicationOptions options)
     glfwSetWindowFocusCallback(handle, ApplicationCallbacks::focus);
     glfwSetCursorEnterCallback(handle, ApplicationCallbacks::enter);
     glfwSetDropCallback(handle, ApplicationCallbacks::drop);
+    glfwSetWindowCloseCallback(handle, ApplicationCallbacks::close);
 
     state_.glRenderer = window_.glRenderer();
     state_.glVersion = window_.glVersion();
@@ -124,6 +159,12 @@ Application::Application(ApplicationOptions options)
     state_.painting.draftFiles = listDraftFiles(std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models");
     state_.scene = host_.loaded();
     state_.loaded = host_.loaded();
+    state_.files.screenshotFolder =
+        (options_.screenshotFolder.empty() ? defaultPicturesFolder() : options_.screenshotFolder).string();
+    if (!options_.stateFile.empty()) {
+        state_.files.statePath = options_.stateFile.string();
+        state_.statusLine = "opened " + state_.files.statePath;
+    }
     frameCamera();
     camera_.zoom(options_.cameraZoom);
     host_.runSteps(options_.stepsBeforeStart);
@@ -169,29 +210,20 @@ int Application::run() {
         // A screenshot asked for on the command line that cannot be written fails the run.
         if (lastFrame && !options_.screenshotFile.empty() && !saveScreenshot(options_.screenshotFile)) exitCode = 1;
         // Commands that need a whole frame drawn first, or that end the loop.
-        bool quit = false, benchmark = false;
+        bool benchmark = false;
         for (Command command : state_.commands.take()) {
-            if (command == Command::Screenshot) saveScreenshot(nextScreenshotName());
-            quit = quit || command == Command::Quit;
+            if (command == Command::Screenshot) saveNumberedScreenshot(sceneOnlyFrame_ ? *sceneOnlyFrame_ : captureFrame());
             benchmark = benchmark || command == Command::Benchmark;
         }
+        sceneOnlyFrame_.reset();
         finishFrame();
         if (benchmark) {
             runInteractiveBenchmark();
             last = Clock::now();
         }
-        if (lastFrame || quit) break;
+        if (lastFrame || quitRequested_) break;
     }
     return exitCode;
-}
-
-std::filesystem::path Application::nextScreenshotName() {
-    // Never over an earlier screenshot, of this run or of an earlier one.
-    std::error_code error;
-    std::filesystem::path file;
-    do file = "sandglass-" + std::to_string(++screenshotsTaken_) + ".png";
-    while (std::filesystem::exists(file, error) && screenshotsTaken_ < 1'000'000);
-    return file;
 }
 
 void Application::finishFrame() {
@@ -207,6 +239,7 @@ void Application::queueMouseButton(int button, bool pressed, double x, double y)
 
 void Application::buildWindows() {
     if (state_.showGui) drawPanels(state_);
+    drawQuitQuestion(state_);
     drawHelpWindow(state_);
     // The hint is for a person at a window; hidden windows (render, tests) draw the scene only.
     if (options_.window.visible && state_.showGui) drawHelpHint(state_);
@@ -227,6 +260,8 @@ void Application::renderFrame(double elapsedSeconds) {
     updateTurnAnimation();
     renderer_.setDraftPlacement(canvas_.draftPlacement(host_.scene(), state_.painting, state_.render.cellSize));
     drawHost(host_, state_.render);
+    // E4: a screenshot shows the sand alone unless asked otherwise; the panels come after.
+    if (state_.commands.contains(Command::Screenshot) && !state_.files.screenshotWithPanel) sceneOnlyFrame_ = captureFrame();
     drawOverlays();
     imgui_.render(true);
     updateStatistics(elapsedSeconds);
@@ -332,6 +367,7 @@ void Application::adoptBuild(const BuildOutcome& outcome) {
         return;
     }
     state_.loaded = host_.loaded();
+    state_.files.unsavedEdits = 0; // the edits went with the scene they were made in
     canvas_.sceneReplaced();
     timer_.stop();
     turnStarted_.reset();
@@ -341,10 +377,11 @@ void Application::adoptBuild(const BuildOutcome& outcome) {
 
 void Application::serveCommands() {
     if (const auto outcome = host_.pollBuild()) adoptBuild(*outcome);
-    // Screenshots, the benchmark and quitting wait for the frame; run() takes them.
+    if (const std::optional<ChosenFile> chosen = fileChooser_.poll()) serveChosenFile(*chosen);
+    // Screenshots and the benchmark wait for the frame; run() takes them.
     std::vector<Command> later;
     for (Command command : state_.commands.take()) {
-        if (command == Command::Screenshot || command == Command::Benchmark || command == Command::Quit)
+        if (command == Command::Screenshot || command == Command::Benchmark)
             later.push_back(command);
         else
             serve(command);
@@ -401,16 +438,23 @@ void Application::serve(Command command) {
     case Command::StopTimer: timer_.stop(); break;
     case Command::SingleStep: host_.requestSingleStep(); break;
     case Command::FrameCamera: frameCamera(); break;
-    case Command::Undo: state_.statusLine = canvas_.undo(host_) ? "undone" : "nothing to undo"; break;
-    case Command::Redo: state_.statusLine = canvas_.redo(host_) ? "redone" : "nothing to redo"; break;
-    case Command::SaveState:
-        try {
-            saveState(state_.files.statePath, host_.scene(), state_.loaded.request);
-            state_.statusLine = "saved to " + state_.files.statePath;
-        } catch (const std::exception& error) {
-            state_.statusLine = error.what();
+    case Command::Undo:
+        if (canvas_.undo(host_)) {
+            ++state_.files.unsavedEdits;
+            state_.statusLine = "undone";
+        } else {
+            state_.statusLine = "nothing to undo";
         }
         break;
+    case Command::Redo:
+        if (canvas_.redo(host_)) {
+            ++state_.files.unsavedEdits;
+            state_.statusLine = "redone";
+        } else {
+            state_.statusLine = "nothing to redo";
+        }
+        break;
+    case Command::SaveState: saveStateFile(); break;
     case Command::LoadState: loadStateFile(state_.files.statePath); break;
     case Command::Export:
         try {
@@ -421,16 +465,79 @@ void Application::serve(Command command) {
         }
         break;
     case Command::LoadDraft: loadDraft(state_.painting.draftPath); break;
-    case Command::AddObstacle:
+    case Command::AddObstacle: {
+        const std::uint64_t layout = host_.layoutRevision();
         state_.statusLine = canvas_.addObstacle(host_, state_.painting.obstacleMin, state_.painting.obstacleMax);
+        if (host_.layoutRevision() != layout) ++state_.files.unsavedEdits;
         break;
+    }
     case Command::ClearObstacles:
         canvas_.clearObstacles(host_);
+        if (scene().kind() == sandcore::SceneKind::Canvas) ++state_.files.unsavedEdits;
         state_.statusLine = "obstacles removed";
         break;
+    case Command::Quit: askToQuit(); break;
+    case Command::QuitNow: quitRequested_ = true; break;
+    case Command::SaveAndQuit:
+        if (saveStateFile()) quitRequested_ = true;
+        else state_.files.confirmQuit = false; // the status line says why; the work stays open
+        break;
+    case Command::ChooseFile: {
+        const std::string problem = fileChooser_.open(state_.files.choosing, startPathFor(state_, state_.files.choosing));
+        if (!problem.empty()) state_.statusLine = problem;
+        break;
+    }
     case Command::Screenshot:
-    case Command::Benchmark:
-    case Command::Quit: break; // served by run() after the frame
+    case Command::Benchmark: break; // served by run() after the frame
+    }
+}
+
+bool Application::saveStateFile() {
+    try {
+        saveState(state_.files.statePath, host_.scene(), state_.loaded.request);
+        state_.files.unsavedEdits = 0;
+        state_.statusLine = "saved to " + state_.files.statePath;
+        return true;
+    } catch (const std::exception& error) {
+        state_.statusLine = error.what();
+        return false;
+    }
+}
+
+void Application::askToQuit() {
+    // U5: edits not yet saved are not thrown away without a question; Esc again cancels it.
+    if (state_.files.unsavedEdits == 0) {
+        quitRequested_ = true;
+        return;
+    }
+    state_.files.confirmQuit = !state_.files.confirmQuit;
+}
+
+void Application::serveChosenFile(const ChosenFile& chosen) {
+    if (chosen.path.empty()) return; // cancelled: nothing changes
+    switch (chosen.choice) {
+    case FileChoice::OpenState:
+        loadStateFile(chosen.path);
+        break;
+    case FileChoice::SaveState:
+        state_.files.statePath = chosen.path;
+        saveStateFile();
+        break;
+    case FileChoice::Export:
+        state_.files.exportPath = chosen.path;
+        serve(Command::Export);
+        break;
+    case FileChoice::Model:
+        state_.scene.request.modelPath = chosen.path;
+        state_.scene.request.shape.clear();
+        if (state_.scene.request.kind == sandcore::SceneKind::Canvas) state_.scene.request.kind = sandcore::SceneKind::Hourglass;
+        serve(Command::Rebuild);
+        break;
+    case FileChoice::Draft: loadDraft(chosen.path); break;
+    case FileChoice::ScreenshotFolder:
+        state_.files.screenshotFolder = chosen.path;
+        state_.statusLine = "screenshots go to " + chosen.path;
+        break;
     }
 }
 
@@ -447,6 +554,7 @@ bool Application::loadStateFile(const std::string& path) {
         turnStarted_.reset();
         camera_.setTurn(0.0f);
         frameCamera();
+        state_.files.unsavedEdits = 0;
         state_.statusLine = "opened " + path;
         return true;
     } catch (const std::exception& error) {
@@ -486,6 +594,7 @@ std::optional<CanvasColumn> Application::columnUnderCursor(double cursorX, doubl
 
 bool Application::handleCanvasPointer(const PointerSample& sample) {
     const bool changed = canvas_.handlePointer(host_, sample, canvasView(), state_.painting);
+    if (changed) ++state_.files.unsavedEdits;
     canvas_.publishUndoState(state_.painting);
     return changed;
 }
@@ -510,6 +619,25 @@ bool Application::saveScreenshot(const std::filesystem::path& file) {
         state_.statusLine = error.what();
         std::fprintf(stderr, "sandglass: %s\n", error.what());
         return false;
+    }
+}
+
+void Application::saveNumberedScreenshot(const RgbImage& image) {
+    // E4: the first free sandglass-N.png in the chosen folder; an earlier file is never replaced.
+    try {
+        const std::filesystem::path file = writeNewNumberedFile(state_.files.screenshotFolder, "sandglass", ".png",
+                                                                encodePng(image), screenshotsTaken_ + 1);
+        const std::string number = file.stem().string().substr(std::string("sandglass-").size());
+        screenshotsTaken_ = std::stoi(number);
+        std::error_code error;
+        const std::filesystem::path shown = std::filesystem::absolute(file, error);
+        state_.files.lastScreenshot = (error ? file : shown).string();
+        state_.statusLine = "screenshot saved to " + state_.files.lastScreenshot;
+        std::printf("screenshot %s\n", state_.files.lastScreenshot.c_str());
+        std::fflush(stdout);
+    } catch (const std::exception& error) {
+        state_.statusLine = error.what();
+        std::fprintf(stderr, "sandglass: %s\n", error.what());
     }
 }
 

@@ -12,7 +12,7 @@ const std::vector<ControlHelp>& controlHelp() {
     static const std::vector<ControlHelp> controls = {
         {"F1 or ?", "show or hide this help"},
         {"Space", "hide or show the panels"},
-        {"Esc", "quit (during the frame benchmark: cancel it)"},
+        {"Esc", "quit (asks first when painting is unsaved; stops the frame benchmark)"},
         {"Left drag", "rotate the view (on the canvas: pour or erase sand)"},
         {"Middle drag", "pan the view"},
         {"Right drag", "zoom"},
@@ -22,14 +22,14 @@ const std::vector<ControlHelp>& controlHelp() {
         {"+ / -", "zoom in / out"},
         {"1 / 2 / 3", "perspective / front / top view"},
         {"T", "turn the hourglass over"},
-        {"Ctrl+Z", "undo the last stroke (canvas)"},
+        {"Ctrl+Z", "undo the last stroke or obstacle (canvas)"},
         {"Ctrl+Y, Ctrl+Shift+Z", "redo"},
         {"Ctrl+S / Ctrl+O", "save / open the state file named in the File section"},
-        {"P", "save a screenshot (PNG)"},
+        {"P", "save a screenshot of the sand (PNG, in the folder the File tab names)"},
         {"B", "frame benchmark (Esc cancels)"},
         {"F", "print frames per second to the terminal"},
         {"#", "print the number of grains to the terminal"},
-        {"Drop a file", "a 3D model builds a scene; a PNG or JPEG on the canvas is the draft"},
+        {"Drop a file", "a 3D model builds a scene; a .sand opens; a PNG or JPEG on the canvas is the draft"},
     };
     return controls;
 }

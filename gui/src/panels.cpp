@@ -452,19 +452,37 @@ void drawPaintingSection(AppState& state) {
 }
 
 void drawFileSection(AppState& state) {
-    // SPEC E1, E2: typed paths (a path dropped on the window still loads drafts and models).
+    // SPEC E1, E2, E4: typed paths, each with the desktop's file dialog beside it (a file
+    // dropped on the window still opens: .sand states, drafts on the canvas, models).
     FileSettings& files = state.files;
+    auto browse = [&](const char* id, FileChoice choice) {
+        ImGui::SameLine();
+        if (ImGui::Button(id)) {
+            files.choosing = choice;
+            state.commands.push(Command::ChooseFile);
+        }
+    };
     char path[512] = {};
     files.statePath.copy(path, sizeof path - 1);
     if (ImGui::InputText("state file", path, sizeof path)) files.statePath = path;
     if (ImGui::Button("Save (Ctrl+S)")) state.commands.push(Command::SaveState);
+    browse("Save as...", FileChoice::SaveState);
     ImGui::SameLine();
     if (ImGui::Button("Open (Ctrl+O)")) state.commands.push(Command::LoadState);
+    browse("Open...", FileChoice::OpenState);
+    if (files.unsavedEdits > 0) ImGui::TextUnformatted("unsaved changes");
     char exportPath[512] = {};
     files.exportPath.copy(exportPath, sizeof exportPath - 1);
     if (ImGui::InputText("export file", exportPath, sizeof exportPath)) files.exportPath = exportPath;
     if (ImGui::Button("Export")) state.commands.push(Command::Export);
-    ImGui::TextDisabled(".ply points, .vox voxels, .obj .stl .glb surface");
+    browse("Export as...", FileChoice::Export);
+    ImGui::TextUnformatted(".ply points, .vox voxels, .obj .stl .glb surface");
+    char folder[512] = {};
+    files.screenshotFolder.copy(folder, sizeof folder - 1);
+    if (ImGui::InputText("screenshots", folder, sizeof folder)) files.screenshotFolder = folder;
+    browse("Folder...", FileChoice::ScreenshotFolder);
+    ImGui::Checkbox("screenshots show the panels", &files.screenshotWithPanel);
+    if (!files.lastScreenshot.empty()) ImGui::TextUnformatted(("last screenshot: " + files.lastScreenshot).c_str());
 }
 
 void drawStatisticsSection(AppState& state) {

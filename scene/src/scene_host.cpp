@@ -38,6 +38,11 @@ SceneHost::SceneHost(const SceneSettings& settings) {
     adopt(buildScene(checked), checked);
 }
 
+SceneHost::SceneHost(sandcore::Scene scene, const SceneSettings& settings) {
+    clock_.setMaxStepsPerFrame(kMaxStepsPerFrame);
+    adopt(std::move(scene), settings);
+}
+
 SceneHost::~SceneHost() {
     // A build still running holds no reference to this host; only wait so its thread ends.
     if (build_.valid()) build_.wait();

@@ -5,6 +5,7 @@
 #include "app/imgui_layer.hpp"
 #include "view/app_state.hpp"
 #include "view/camera.hpp"
+#include "view/file_chooser.hpp"
 #include "view/input_routing.hpp"
 #include "view/paint/canvas_controller.hpp"
 #include "view/render/framebuffer.hpp"
@@ -32,6 +33,8 @@ struct ApplicationOptions {
     std::filesystem::path benchmarkFolder = "."; ///< where the B key writes benchmark.txt and .csv
     UndoLimits undo;                 ///< P7: strokes and bytes the canvas keeps for undo (32, 256 MiB)
     float cameraZoom = 1.0f;         ///< start closer (< 1) or farther (> 1) than the framing distance
+    std::filesystem::path stateFile; ///< E1: open this saved state instead of building `initial.scene`
+    std::filesystem::path screenshotFolder; ///< E4: where P saves; empty = the desktop's pictures folder
 };
 
 /// The window loop: poll -> new frame -> panels -> commands -> steps by the clock -> scene ->
@@ -40,8 +43,9 @@ struct ApplicationOptions {
 /// `sandglass render` and the frames the frame-rate benchmark measures.
 class Application {
 public:
-    /// Opens the window and builds the scene; throws WindowError (no display / GL context),
-    /// std::invalid_argument (bad scene settings) or std::runtime_error (shader problem).
+    /// Opens the window and builds the scene (or opens options.stateFile); throws WindowError (no
+    /// display / GL context), std::invalid_argument (bad scene settings), FileError or
+    /// StateFileError (a state file that cannot be opened) or std::runtime_error (shader problem).
     explicit Application(ApplicationOptions options);
     ~Application();
     Application(const Application&) = delete;
@@ -127,7 +131,10 @@ private:
     void drawOverlays();
     void drawBrushOutline();
     bool saveScreenshot(const std::filesystem::path& file);
-    std::filesystem::path nextScreenshotName();
+    void saveNumberedScreenshot(const RgbImage& image);
+    bool saveStateFile();
+    void askToQuit();
+    void serveChosenFile(const ChosenFile& chosen);
     void runInteractiveBenchmark();
     void buildWindows();
     void drawBenchmarkProgress();
@@ -151,6 +158,9 @@ private:
     std::int64_t framesDrawn_ = 0;
     int screenshotsTaken_ = 0;
     BenchmarkProgress benchmark_;
+    std::optional<RgbImage> sceneOnlyFrame_; // this frame before the panels, for a screenshot without them
+    bool quitRequested_ = false;             // the loop ends after this frame
+    FileChooser fileChooser_;
 };
 
 } // namespace sandglass

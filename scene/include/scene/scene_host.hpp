@@ -49,6 +49,8 @@ class SceneHost {
 public:
     /// Builds the scene now, on this thread; throws as buildScene does.
     explicit SceneHost(const SceneSettings& settings);
+    /// Runs a scene made elsewhere (a loaded state file) with the settings it was built from.
+    SceneHost(sandcore::Scene scene, const SceneSettings& settings);
     ~SceneHost();
     SceneHost(const SceneHost&) = delete;
     SceneHost& operator=(const SceneHost&) = delete;

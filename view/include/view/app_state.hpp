@@ -3,6 +3,7 @@
 // commands; the application carries the commands out after the panels are built. Nothing here
 // points into the simulation's grids.
 
+#include "view/file_chooser.hpp"
 #include "view/render/render_settings.hpp"
 #include "scene/scene_request.hpp"
 
@@ -53,6 +54,12 @@ struct ObstacleDrag {
 struct FileSettings {
     std::string statePath = "sandglass.sand"; ///< the .sand file Save writes and Open reads
     std::string exportPath = "sand.ply";      ///< .ply, .vox, .obj, .stl or .glb for Export
+    std::string screenshotFolder;             ///< E4: where P saves sandglass-N.png (set at start)
+    bool screenshotWithPanel = false;         ///< E4: screenshots show the panels too
+    std::string lastScreenshot;               ///< the file the last screenshot went to
+    int unsavedEdits = 0;                     ///< U5: painting and obstacle changes since the last save or open (0 = nothing to lose)
+    bool confirmQuit = false;                 ///< U5: the "quit without saving?" question is shown
+    FileChoice choosing = FileChoice::OpenState; ///< what the next ChooseFile command opens the dialog for
 };
 
 /// What the panels and keys ask the application to do; served once per frame, in order.
@@ -63,7 +70,10 @@ enum class Command {
     SingleStep,        ///< one step while paused
     Screenshot,        ///< save this frame as PNG
     Benchmark,         ///< run the frame-rate benchmark
-    Quit,              ///< close the window
+    Quit,              ///< close the window (asks first when there are unsaved edits)
+    QuitNow,           ///< close the window without asking (the answer to that question)
+    SaveAndQuit,       ///< save to FileSettings::statePath, then close when the save worked
+    ChooseFile,        ///< open the desktop's file dialog for FileSettings::choosing
     FrameCamera,       ///< reset the camera to frame the scene
     Undo,              ///< take back the last stroke (Ctrl+Z)
     Redo,              ///< bring back the last undone stroke (Ctrl+Y, Ctrl+Shift+Z)
