@@ -1,6 +1,7 @@
 #include "app/application.hpp"
 
 #include "app/frame_benchmark_runner.hpp"
+#include "gui/help_window.hpp"
 #include "gui/panels.hpp"
 #include "gui/quit_question.hpp"
 #include "view/render/shader_program.hpp"
@@ -28,8 +29,6 @@ namespace sandglass {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr float kPi = 3.14159265f;
-constexpr double kTurnSeconds = 0.8; // the view turns over this long after a flip
 constexpr float kCanvasPitch = 1.3f; // radians above the horizon the canvas is seen from
 
 std::vector<std::string> listModelFiles() {
@@ -100,6 +99,10 @@ struct ApplicationCallbacks {
     }
     static void mouseButton(GLFWwindow* window, int button, int action, int mods) {
         ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
+        // Every press and release is kept, so clicks between two slow frames all count.
+        double x = 0.0, y = 0.0;
+        glfwGetCursorPos(window, &x, &y);
+        of(window).queueMouseButton(button, action == GLFW_PRESS, x, y);
     }
     static void close(GLFWwindow* window) {
         // The window's close button asks first too, when there are unsaved edits (U5).
@@ -231,11 +234,23 @@ void Application::finishFrame() {
         window_.swapBuffers();
 }
 
-void Application::renderFrame(double elapsedSeconds) {
-    imgui_.newFrame();
-    handleMouse();
+void Application::queueMouseButton(int button, bool pressed, double x, double y) {
+    imgui_.queueMouseTransition({button, pressed, x, y});
+}
+
+void Application::buildWindows() {
     if (state_.showGui) drawPanels(state_);
     drawQuitQuestion(state_);
+    drawHelpWindow(state_);
+    // The hint is for a person at a window; hidden windows (render, tests) draw the scene only.
+    if (options_.window.visible && state_.showGui) drawHelpHint(state_);
+}
+
+void Application::renderFrame(double elapsedSeconds) {
+    state_.uiScale = imgui_.setUiScale(state_.uiScale);
+    imgui_.newFrame([this] { buildWindows(); });
+    handleMouse();
+    buildWindows();
     camera_.setLensShift(state_.showGui ? state_.panelCoverage : 0.0f);
     serveCommands();
     updateTimer();
@@ -257,6 +272,7 @@ void Application::renderFrame(double elapsedSeconds) {
 void Application::renderHostFrame(SceneHost& host, const RenderSettings& render, bool panels, double elapsedSeconds) {
     imgui_.newFrame();
     if (panels) drawPanels(state_); // what they queue waits for the application's own frames
+    if (benchmark_.running) drawBenchmarkProgress();
     host.setRunning(true);
     host.setStepsPerSecond(state_.stepsPerSecond);
     host.advance(elapsedSeconds);
@@ -302,8 +318,13 @@ void Application::handleMouse() {
     for (const auto& [glfwButton, button] : buttons)
         if (glfwGetMouseButton(handle, glfwButton) == GLFW_PRESS)
             applyMouseDrag(capture, button, alt, leftPaints, dx, dy, float(height), camera_);
-    if (scene().kind() == sandcore::SceneKind::Canvas)
-        handleCanvasPointer({x, y, glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS, alt, capture.mouse});
+    if (scene().kind() != sandcore::SceneKind::Canvas) return;
+    const bool leftDown = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    // While an obstacle is being placed, the left button drags its box instead of pouring sand.
+    if (state_.obstacleDrag.armed || state_.obstacleDrag.dragging)
+        handleObstacleDrag(x, y, leftDown && !alt, capture);
+    else
+        handleCanvasPointer({x, y, leftDown, alt, capture.mouse});
 }
 
 void Application::handleKey(KeyCommand command) {
@@ -317,8 +338,17 @@ void Application::handleKey(KeyCommand command) {
         std::printf("%.1f frames per second, %.2f ms per frame\n", state_.stats.framesPerSecond,
                     state_.stats.millisecondsPerFrame);
         break;
-    case KeyCommand::RunBenchmark: state_.commands.push(Command::Benchmark); break;
-    case KeyCommand::Quit: state_.commands.push(Command::Quit); break;
+    case KeyCommand::RunBenchmark:
+        if (!benchmark_.running) state_.commands.push(Command::Benchmark);
+        break;
+    case KeyCommand::Quit:
+        // Esc during the frame benchmark ends the benchmark, not the program.
+        if (benchmark_.running)
+            benchmark_.cancelRequested = true;
+        else
+            state_.commands.push(Command::Quit);
+        break;
+    case KeyCommand::Help: state_.showHelp = !state_.showHelp; break;
     case KeyCommand::Screenshot: state_.commands.push(Command::Screenshot); break;
     case KeyCommand::Undo: state_.commands.push(Command::Undo); break;
     case KeyCommand::Flip: state_.commands.push(Command::Flip); break;
@@ -570,118 +600,6 @@ bool Application::handleCanvasPointer(const PointerSample& sample) {
     return changed;
 }
 
-void Application::updateTurnAnimation() {
-    if (!turnStarted_) return;
-    const double t = std::chrono::duration<double>(Clock::now() - *turnStarted_).count() / kTurnSeconds;
-    if (t >= 1.0) {
-        turnStarted_.reset();
-        camera_.setTurn(0.0f);
-        return;
-    }
-    const double eased = t * t * (3.0 - 2.0 * t); // starts and stops gently
-    camera_.setTurn(kPi * float(1.0 - eased));
-}
-
-void Application::updateTimer() {
-    if (const std::optional<double> rate = timer_.update(scene())) {
-        // The drain is measured: run at the rate that makes it last the duration.
-        state_.stepsPerSecond = *rate;
-        state_.simulationRunning = true;
-        state_.statusLine = "timer running";
-    }
-    TimerState& timer = state_.timer;
-    const HourglassTimer::Phase phase = timer_.phase();
-    timer.set = phase != HourglassTimer::Phase::Off;
-    timer.predicting = phase == HourglassTimer::Phase::Predicting;
-    const bool finishedNow = phase == HourglassTimer::Phase::Finished && !timer.finished;
-    timer.finished = phase == HourglassTimer::Phase::Finished;
-    timer.elapsedSeconds = timer.set ? timer_.elapsedSeconds(scene()) : 0.0;
-    timer.remainingSeconds = timer.set ? timer_.remainingSeconds(scene()) : 0.0;
-    if (finishedNow) {
-        state_.statusLine = "time is up";
-        std::printf("\atime is up\n"); // the terminal's bell, where there is one
-        std::fflush(stdout);
-    }
-}
-
-void Application::drawOverlays() {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    auto banner = [&](const char* id, const char* text, ImVec4 colour) {
-        ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, 20.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-        ImGui::PushStyleColor(ImGuiCol_WindowBg, colour);
-        ImGui::Begin(id, nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
-        ImGui::TextUnformatted(text);
-        ImGui::End();
-        ImGui::PopStyleColor();
-    };
-    if (host_.building()) {
-        // Progress while a scene is built in the background.
-        const double seconds = host_.buildSeconds();
-        char text[64];
-        std::snprintf(text, sizeof text, "building scene %c  %.1f s", "|/-\\"[int(seconds * 8.0) % 4], seconds);
-        banner("##building", text, ImVec4(0.1f, 0.1f, 0.1f, 0.85f));
-    } else if (state_.timer.finished) {
-        // The end of the timer, blinking so it is seen from across the room.
-        const bool on = int(ImGui::GetTime() * 2.0) % 2 == 0;
-        banner("##timeup", "  Time is up  ", on ? ImVec4(0.80f, 0.25f, 0.10f, 0.95f) : ImVec4(0.45f, 0.12f, 0.05f, 0.95f));
-    }
-    if (scene().kind() == sandcore::SceneKind::Canvas) drawBrushOutline();
-}
-
-void Application::drawBrushOutline() {
-    // A ring on the canvas surface around the column under the cursor, as wide as the brush.
-    // Hidden windows (render, tests) have no cursor to follow.
-    if (!options_.window.visible || ImGui::GetIO().WantCaptureMouse || host_.building()) return;
-    const std::optional<CanvasColumn> column = columnUnderCursor(lastCursorX_, lastCursorY_);
-    if (!column) return;
-    const CanvasView view = canvasView();
-    const CanvasSurface surface =
-        canvasSurface(scene(), state_.painting.pickAtTarget ? PaintTarget::Bottom : PaintTarget::Top, view.cellSize);
-    const float radius = (float(std::max(0, state_.painting.brushRadius)) + 0.5f) * surface.cellSize;
-    const float centreX = surface.originX + (float(column->x) + 0.5f) * surface.cellSize;
-    const float centreZ = surface.originZ + (float(column->z) + 0.5f) * surface.cellSize;
-    const glm::mat4 toClip = view.projection * view.view;
-    const float toWindowX = view.framebufferWidth > 0 ? float(view.windowWidth) / float(view.framebufferWidth) : 1.0f;
-    const float toWindowY = view.framebufferHeight > 0 ? float(view.windowHeight) / float(view.framebufferHeight) : 1.0f;
-    ImVec2 points[48];
-    int count = 0;
-    for (int i = 0; i < 48; ++i) {
-        const float angle = 2.0f * kPi * float(i) / 48.0f;
-        const glm::vec4 clip = toClip * glm::vec4(centreX + radius * std::cos(angle), surface.y,
-                                                  centreZ + radius * std::sin(angle), 1.0f);
-        if (clip.w <= 0.0f) return;
-        // ImGui draws in window units; the framebuffer may have more pixels (HiDPI).
-        points[count++] = ImVec2((clip.x / clip.w * 0.5f + 0.5f) * float(view.framebufferWidth) * toWindowX,
-                                 (0.5f - clip.y / clip.w * 0.5f) * float(view.framebufferHeight) * toWindowY);
-    }
-    const ImU32 colour = state_.painting.erase ? IM_COL32(220, 60, 40, 230) : IM_COL32(40, 40, 40, 230);
-    ImGui::GetForegroundDrawList()->AddPolyline(points, count, colour, ImDrawFlags_Closed, 2.0f);
-}
-
-void Application::updateStatistics(double elapsedSeconds) {
-    FrameStatistics& stats = state_.stats;
-    const float milliseconds = float(elapsedSeconds * 1000.0);
-    stats.frameMilliseconds[std::size_t(stats.historyNext)] = milliseconds;
-    stats.historyNext = (stats.historyNext + 1) % FrameStatistics::kHistory;
-    if (milliseconds > 0.0f) {
-        stats.millisecondsPerFrame =
-            stats.millisecondsPerFrame == 0.0f ? milliseconds : 0.9f * stats.millisecondsPerFrame + 0.1f * milliseconds;
-        stats.framesPerSecond = 1000.0f / stats.millisecondsPerFrame;
-    }
-    stats.stepsPerSecond = float(host_.stepsPerSecond());
-    stats.millisecondsPerStep = float(host_.millisecondsPerStep());
-    stats.rateCapped = host_.rateCapped();
-    stats.maxStepsPerFrame = SceneHost::kMaxStepsPerFrame;
-    const sandcore::SceneCounters& counters = scene().counters();
-    stats.grains = scene().grainCount();
-    stats.grainsUpper = counters.grainsUpper;
-    stats.grainsLower = counters.grainsLower;
-    stats.movingGrains = counters.movesLastStep;
-    stats.stepsDone = counters.stepsDone;
-    stats.innerGrains = renderer_.stats().innerGrains;
-    stats.subGrainsDrawn = renderer_.stats().subGrainsDrawn;
-}
-
 RgbImage Application::captureFrame() const {
     int width = 0, height = 0;
     targetSize(width, height);
@@ -728,6 +646,12 @@ void Application::runInteractiveBenchmark() {
     state_.statusLine = "benchmark running...";
     try {
         const BenchmarkReport report = runFrameBenchmark(*this, thesisBenchmarkCases(), BenchmarkTiming{});
+        if (report.cancelled) {
+            state_.statusLine = "benchmark cancelled";
+            std::printf("%s\n", state_.statusLine.c_str());
+            std::fflush(stdout);
+            return;
+        }
         writeBenchmarkFiles(options_.benchmarkFolder, {report}, "key B in the window");
         state_.statusLine = "benchmark written to " + (options_.benchmarkFolder / "benchmark.txt").string();
         std::printf("%s\n", state_.statusLine.c_str());

@@ -8,7 +8,7 @@
 namespace sandglass {
 
 BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkCase>& cases,
-                                  const BenchmarkTiming& timing) {
+                                  const BenchmarkTiming& timing, const std::function<void()>& afterEachFrame) {
     using Clock = std::chrono::steady_clock;
     const SceneSettings& loaded = app.host().loaded();
     BenchmarkReport report;
@@ -29,8 +29,17 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         app.renderHostFrame(host, render, true, std::chrono::duration<double>(now - last).count());
         last = now;
         app.finishFrame();
+        if (afterEachFrame) afterEachFrame();
     };
+    // The window shows which row runs and that Esc stops it (the key callback sets the request).
+    Application::BenchmarkProgress& progress = app.benchmarkProgress();
+    progress = {true, false, 0, int(cases.size())};
+    struct EndProgress { // also when building the scene or a frame throws
+        Application::BenchmarkProgress& progress;
+        ~EndProgress() { progress = {}; }
+    } endProgress{progress};
     for (const BenchmarkCase& setup : cases) {
+        if (progress.cancelRequested) break;
         render.mode = setup.mode;
         render.grainsPerCell = setup.grainsPerCell;
         render.lighting = setup.lighting;
@@ -43,11 +52,13 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         row.setup = setup;
         const auto start = Clock::now();
         double elapsed = 0.0;
-        while (row.frames < timing.minFrames || (row.frames < timing.maxFrames && elapsed < timing.maxSeconds)) {
+        while (!progress.cancelRequested &&
+               (row.frames < timing.minFrames || (row.frames < timing.maxFrames && elapsed < timing.maxSeconds))) {
             frame();
             ++row.frames;
             elapsed = std::chrono::duration<double>(Clock::now() - start).count();
         }
+        if (progress.cancelRequested) break; // a row cut short is no measurement
         row.seconds = elapsed;
         row.filledCells = host.scene().grainCount();
         report.rows.push_back(row);
@@ -55,7 +66,9 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
                     setup.grainsPerCell, setup.lighting ? "on" : "off", setup.innerGrains ? "yes" : "no",
                     row.framesPerSecond());
         std::fflush(stdout);
+        ++progress.rowsDone;
     }
+    report.cancelled = progress.cancelRequested;
     glfwSwapInterval(app.options().window.vsync ? 1 : 0);
     return report;
 }

@@ -69,6 +69,11 @@ public:
     /// The canvas mouse path: the window's mouse handling calls it every frame in the canvas
     /// scene, tests call it with scripted samples. Returns true when grains changed.
     bool handleCanvasPointer(const PointerSample& sample);
+    /// Obstacle placement with the mouse (after PaintingSettings "Place with the mouse" arms
+    /// AppState::obstacleDrag): a left press on the canvas floor starts a box, moves stretch it,
+    /// the release queues AddObstacle with the box (and the typed form's heights). The window's
+    /// mouse handling calls it while armed; tests call it with scripted samples.
+    void handleObstacleDrag(double x, double y, bool leftDown, const InputCapture& capture);
     /// The canvas column under a cursor position (window coordinates) on the surface the
     /// painting settings pick (source or target); the same lookup a stroke makes.
     std::optional<CanvasColumn> columnUnderCursor(double cursorX, double cursorY);
@@ -82,6 +87,20 @@ public:
     bool loadStateFile(const std::string& path);
     /// Serves the commands the panels and keys queued (rebuild, reset, undo, draft, obstacles...).
     void serveCommands();
+    /// A mouse button pressed or released at (x, y) window units: the GLFW callback calls this
+    /// for every event, so several clicks between two frames each reach the panels.
+    void queueMouseButton(int button, bool pressed, double x, double y);
+
+    /// The frame benchmark's progress (B key, bench --render): rows done of rows, and whether
+    /// Esc asked to stop it.
+    struct BenchmarkProgress {
+        bool running = false;
+        bool cancelRequested = false;
+        int rowsDone = 0;
+        int rows = 0;
+    };
+    BenchmarkProgress& benchmarkProgress() { return benchmark_; }
+
     /// Runs simulation steps now, outside the clock (for scripted drawings and tests).
     void runSteps(int steps) { host_.runSteps(steps); }
     /// Share (0..1) of the last step's glide that frames draw now.
@@ -117,6 +136,9 @@ private:
     void askToQuit();
     void serveChosenFile(const ChosenFile& chosen);
     void runInteractiveBenchmark();
+    void buildWindows();
+    void drawBenchmarkProgress();
+    void drawObstacleBox();
 
     ApplicationOptions options_;
     AppState state_;
@@ -135,6 +157,7 @@ private:
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
     std::int64_t framesDrawn_ = 0;
     int screenshotsTaken_ = 0;
+    BenchmarkProgress benchmark_;
     std::optional<RgbImage> sceneOnlyFrame_; // this frame before the panels, for a screenshot without them
     bool quitRequested_ = false;             // the loop ends after this frame
     FileChooser fileChooser_;

@@ -23,6 +23,8 @@ struct GuiOptions {
     std::string screenshotFolder; ///< E4: where P saves screenshots
     int paintDemoPasses = 0;
     int timerSeconds = 0;
+    std::string panelTab; ///< the panel tab shown first
+    bool showHelp = false; ///< open with the keys and mouse controls shown
 };
 
 int runGui(const GuiOptions& options) {
@@ -34,9 +36,13 @@ int runGui(const GuiOptions& options) {
     settings.stateFile = options.load; // opened in place of the scene: nothing else is built first
     settings.screenshotFolder = options.screenshotFolder;
     Application application(std::move(settings));
-    // A bad draft is reported and the canvas opens without one (SPEC P5, §8).
-    if (!options.draft.empty() && !application.loadDraft(options.draft))
+    // A draft asked for on the command line that cannot be read fails the run, like --load.
+    if (!options.draft.empty() && !application.loadDraft(options.draft)) {
         std::fprintf(stderr, "sandglass: %s\n", application.state().statusLine.c_str());
+        return 1;
+    }
+    application.state().openTab = options.panelTab;
+    application.state().showHelp = options.showHelp;
     if (options.paintDemoPasses > 0)
         std::printf("paint demo: %lld grains poured\n", (long long)paintDraftDemo(application, options.paintDemoPasses));
     if (options.timerSeconds > 0) {
@@ -69,7 +75,10 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     auto* load = cmd->add_option("--load", options->load, "open a saved .sand state (simulate --save, Ctrl+S) instead of building a scene");
     for (const char* sceneOption : {"--scene", "--model", "--shape", "--res"}) load->excludes(sceneOption);
-    cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image (P5)");
+    cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image to paint over");
+    cmd->add_option("--panel", options->panelTab, "open the panel on this tab")
+        ->check(CLI::IsMember({"run", "view", "scene", "paint", "file"}));
+    cmd->add_flag("--show-controls", options->showHelp, "open with the keys and mouse controls shown (F1 in the window)");
     addNumberOption(*cmd, "--paint-demo", options->paintDemoPasses, 1, 50,
                     "canvas with --draft: pour this many layers of sand over the draft, colour from draft");
     addNumberOption(*cmd, "--timer", options->timerSeconds, 1, 999 * 60 + 59,

@@ -3,6 +3,7 @@
 #include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/model_shape_json.hpp"
+#include "app/cli/terminal_progress.hpp"
 #include "app/cli/scene_options.hpp"
 #include "scene/file_io.hpp"
 #include "scene/hex.hpp"
@@ -110,7 +111,10 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     std::int64_t moves = 0, visited = 0, done = 0, poured = 0;
     std::string trace = options.trace.empty() ? std::string() : "step,grains_upper,grains_lower,moves\n";
     const auto start = Clock::now();
+    // On a terminal only: --json and piped output stay as they are.
+    TerminalProgress progress("simulate", "steps");
     while (done < stepLimit) {
+        progress.update(double(done), options.untilSettled ? 0.0 : double(stepLimit));
         // A pour waits while its cell is still taken, so every grain asked for is released.
         if (poured < options.pour && scene.addGrain(sandcore::GridLevel::Upper, pourAt) >= 0) ++poured;
         const auto before = Clock::now();
@@ -127,6 +131,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         flipDue(done);
         if (options.untilSettled && poured >= options.pour && scene.settled()) break;
     }
+    progress.finish();
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!options.trace.empty()) writeFileAtomically(options.trace, trace);
     const double stepsPerSecond = seconds > 0 ? double(done) / seconds : 0.0;

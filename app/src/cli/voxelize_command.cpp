@@ -4,6 +4,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/model_shape_json.hpp"
 #include "scene/file_io.hpp"
+#include "app/cli/terminal_progress.hpp"
 #include "scene/model_voxelizer.hpp"
 #include "scene/sand_space.hpp"
 #include "scene/scene_export.hpp"
@@ -48,7 +49,10 @@ int runVoxelize(const VoxelizeOptions& options) {
         request.up = sandcore::parseUpAxis(options.up);
         if (!request.up) throw std::invalid_argument("--up must be one of +x, -x, +y, -y, +z, -z, got '" + options.up + "'");
     }
-    const SandSpace space = loadSandSpace(options.file, options.settings, ModelUse::MaskOnly, request);
+    const SandSpace space = [&] {
+        const ElapsedTicker ticker("voxelize " + std::filesystem::path(options.file).filename().string(), std::cerr);
+        return loadSandSpace(options.file, options.settings, ModelUse::MaskOnly, request);
+    }();
     const ModelVoxelization& model = space.model;
     // The placement is in the model's axes; a turned mask is written without it.
     if (!options.out.empty())

@@ -37,6 +37,19 @@ struct PaintingSettings {
     std::size_t redoSteps = 0;   ///< undone strokes that Redo can bring back
 };
 
+/// Where a panel window sits, top-left corner in window units; negative until first placed.
+struct WindowPlacement {
+    float x = -1.0f;
+    float y = -1.0f;
+};
+
+/// A box dragged out on the canvas floor with the mouse (obstacle placement), in lower-grid columns.
+struct ObstacleDrag {
+    bool armed = false;    ///< the next left drag on the canvas places an obstacle instead of sand
+    bool dragging = false; ///< the button is down and the box follows the cursor
+    int startX = 0, startZ = 0, endX = 0, endZ = 0; ///< the columns at the drag's start and end
+};
+
 /// SPEC E1, E2: where the File section saves, opens and exports.
 struct FileSettings {
     std::string statePath = "sandglass.sand"; ///< the .sand file Save writes and Open reads
@@ -132,7 +145,14 @@ struct AppState {
     bool simulationRunning = false; ///< thesis default: simulation off
     double stepsPerSecond = 30.0;   ///< flow speed (R9)
     bool showGui = true;            ///< Space hides the panels
+    bool showHelp = false;          ///< F1, ? or the Help button: the keys and mouse controls
+    bool showHelpHint = true;       ///< the one-line hint on where help is, until help is opened
+    float uiScale = 1.0f;           ///< text and control size chosen in the panel (on top of the monitor's)
+    ObstacleDrag obstacleDrag;      ///< a box being dragged out on the canvas floor
     float panelCoverage = 0.0f;     ///< share of the window's width the panel covers from the left edge
+    WindowPlacement panelPlacement; ///< where the user put the panel (shown clamped to the window)
+    WindowPlacement panelSize;      ///< the panel's size in the last frame (x width, y height)
+    std::string openTab;            ///< a panel tab to select once ("run", "view", "scene", "paint", "file")
     std::string glRenderer;         ///< GL_RENDERER, for the statistics panel
     std::string glVersion;          ///< GL_VERSION
     std::string statusLine;         ///< the last message (error or confirmation) for the user
