@@ -461,8 +461,8 @@ void drawFileSection(AppState& state) {
     // SPEC E1, E2, E4: typed paths, each with the desktop's file dialog beside it (a file
     // dropped on the window still opens: .sand states, drafts on the canvas, models).
     FileSettings& files = state.files;
-    auto browse = [&](const char* id, FileChoice choice) {
-        ImGui::SameLine();
+    auto browse = [&](const char* id, FileChoice choice, bool sameLine = true) {
+        if (sameLine) ImGui::SameLine();
         if (ImGui::Button(id)) {
             files.choosing = choice;
             state.commands.push(Command::ChooseFile);
@@ -486,9 +486,10 @@ void drawFileSection(AppState& state) {
     char folder[512] = {};
     files.screenshotFolder.copy(folder, sizeof folder - 1);
     if (ImGui::InputText("screenshots", folder, sizeof folder)) files.screenshotFolder = folder;
-    browse("Folder...", FileChoice::ScreenshotFolder);
-    ImGui::Checkbox("screenshots show the panels", &files.screenshotWithPanel);
-    if (!files.lastScreenshot.empty()) ImGui::TextUnformatted(("last screenshot: " + files.lastScreenshot).c_str());
+    browse("Folder...", FileChoice::ScreenshotFolder, false);
+    ImGui::SameLine();
+    ImGui::Checkbox("with the panels", &files.screenshotWithPanel);
+    if (!files.lastScreenshot.empty()) ImGui::TextWrapped("last screenshot: %s", files.lastScreenshot.c_str());
 }
 
 void drawStatisticsSection(AppState& state) {
