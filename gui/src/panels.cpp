@@ -321,7 +321,12 @@ void drawSceneSection(AppState& state) {
             scene.request.modelPath = path;
             state.commands.push(Command::Rebuild);
         }
-        hint("Enter loads it; or drop a model file on the window");
+        if (ImGui::Button("Open model...")) {
+            state.files.choosing = FileChoice::Model;
+            state.commands.push(Command::ChooseFile);
+        }
+        ImGui::SameLine();
+        hint("Enter loads a typed path; or drop a model file on the window");
         drawModelOptions(state);
     }
     // The slider spans the useful resolutions; the command line takes the whole range.
@@ -422,6 +427,11 @@ void drawPaintingSection(AppState& state) {
             painting.draftPath = path;
             state.commands.push(Command::LoadDraft);
         }
+        if (ImGui::Button("Open draft...")) {
+            state.files.choosing = FileChoice::Draft;
+            state.commands.push(Command::ChooseFile);
+        }
+        ImGui::SameLine();
         hint("or drop a PNG or JPEG on the window");
         ImGui::TreePop();
     }
