@@ -22,7 +22,7 @@ const std::vector<ControlHelp>& controlHelp() {
         {"+ / -", "zoom in / out"},
         {"1 / 2 / 3", "perspective / front / top view"},
         {"T", "turn the hourglass over"},
-        {"Ctrl+Z", "undo the last stroke or obstacle (canvas)"},
+        {"Ctrl+Z", "undo the last stroke (canvas)"},
         {"Ctrl+Y, Ctrl+Shift+Z", "redo"},
         {"Ctrl+S / Ctrl+O", "save / open the state file named in the File section"},
         {"P", "save a screenshot of the sand (PNG, in the folder the File tab names)"},
