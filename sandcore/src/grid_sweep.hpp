@@ -21,6 +21,14 @@ class GranularRules;
 
 inline constexpr int kStripRows = 8;
 
+/// One classic move, kept by the strip that made it and written into the GrainStore after the
+/// sweep: the two grids' workers then never write the same grain records' cache lines.
+struct LoggedMove {
+    std::uint32_t grain; ///< its id
+    std::uint32_t to;    ///< the cell it entered
+    MoveCode cameFrom;   ///< offset back to the cell it left
+};
+
 struct SweepResult {
     std::int64_t moves = 0;   ///< grains moved
     std::int64_t visited = 0; ///< cells looked at
@@ -36,6 +44,7 @@ struct SweepContext {
     std::uint64_t step;  ///< this step's number, 1 = the first after a reset: picks the slips, stamps movedAtStep
     GridLevel level;     ///< which grid: picks the slips, so the two grids draw differently
     bool sleeping;       ///< R5: visit awake cells only; false = every cell (same result)
+    std::uint64_t stepKey; ///< counterRandomStepKey(seed, step), computed once per sweep
 };
 
 class GridSweep {
@@ -65,6 +74,10 @@ public:
     void setDeferWakesAbove(bool defer) { deferWakesAbove_ = defer; }
     /// Applies the wakes kept while deferred.
     void applyDeferredWakes();
+    /// Writes the moves the last sweep logged into grains (cell, cameFrom, movedAtStep = step),
+    /// appends their ids to moved and empties the logs. Granular sweeps write the grain records
+    /// themselves and log only the ids.
+    void applyLoggedMoves(GrainStore& grains, std::uint64_t step, std::vector<std::uint32_t>& moved);
     /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
     std::int64_t awakeRowCount() const;
 
@@ -101,13 +114,14 @@ private:
     template <bool Granular> SweepResult sweepBy(const SweepContext& context, WorkerPool* pool);
     template <bool Granular> SweepResult sweepStrip(const SweepContext& context, int y, int strip);
     template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
-    bool visitCell(const SweepContext& context, int x, int y, int z); // classic rules; true when a grain moved
+    // classic rules; true when a grain moved
+    bool visitCell(const SweepContext& context, std::vector<LoggedMove>& log, int x, int y, int z);
+    bool visitGranular(const SweepContext& context, std::vector<LoggedMove>& log, int x, int y, int z);
     void clearRow(std::uint32_t row);
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
     void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, std::uint64_t mask);
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
-    bool visitGranular(const SweepContext& context, int x, int y, int z); // true when a grain moved
     int awakeRowsInLayer(int y) const;
 
     Int3 size_;
@@ -118,6 +132,11 @@ private:
     std::vector<std::uint32_t> deferredWakesAbove_; // x + sizeX * z of the outlet cells to wake
     int rowWords_;                       // 64-bit words per row of awake bits
     std::vector<std::uint64_t> words_;   // awake bits, row = y * sizeZ + z, padded to whole words
+    // Cells that may hold a grain, in the layout of words_: set by every wakeAt (each grain that
+    // enters a cell is woken there), cleared when a classic move or a visit finds the cell EMPTY.
+    // Waking the cells above an emptied cell ANDs with it, so EMPTY and INVALID cells stay asleep.
+    std::vector<std::uint64_t> occupied_;
+    std::vector<std::vector<LoggedMove>> logs_; // per strip: the moves of the current sweep
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
 };
 

@@ -1,5 +1,7 @@
 #include "sandcore/voxelizer.hpp"
 
+#include "welded_mesh.hpp"
+
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/worker_pool.hpp"
 
@@ -7,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace sandcore {
 
@@ -203,7 +206,11 @@ InsideMask insideFromGridPoints(const std::vector<std::array<double, 3>>& grid,
 
 // What the rays see: a face written twice counts once, and faces are oriented outward for the
 // winding number of robust mode (parity ignores orientation).
-TriangleMesh preparedForRays(const TriangleMesh& mesh) { return orientedOutward(withoutRepeatedTriangles(mesh)); }
+TriangleMesh preparedFromWelded(TriangleMesh welded) {
+    return orientedOutwardWelded(withoutRepeatedTrianglesWelded(std::move(welded)));
+}
+
+TriangleMesh preparedForRays(const TriangleMesh& mesh) { return preparedFromWelded(weldVertices(mesh)); }
 
 } // namespace
 
@@ -246,7 +253,10 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     VoxelizeResult result;
     result.placement = placeInGrid(mesh, settings);
     const VoxelPlacement& p = result.placement;
-    const TriangleMesh prepared = preparedForRays(mesh);
+    // Welded once: the closedness check and the preparation for rays both start from it.
+    TriangleMesh welded = weldVertices(mesh);
+    result.closedness = closednessOfWelded(welded);
+    const TriangleMesh prepared = preparedFromWelded(std::move(welded));
     std::vector<std::array<double, 3>> grid(prepared.vertices.size());
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const Vec3 v = prepared.vertices[i];
@@ -255,11 +265,10 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     }
     result.mask = insideFromGridPoints(grid, prepared.triangles, p.size, settings);
     result.cellsInside = result.mask.countInside();
-    result.closedness = closednessOf(mesh);
     // The volume of the outward-oriented mesh: a model with some faces flipped keeps its
     // volume; where orientation cannot be made consistent (a non-orientable or non-manifold
     // surface) the volume means nothing and is not reported as if it did.
-    const MeshClosedness orientedClosedness = closednessOf(prepared);
+    const MeshClosedness orientedClosedness = closednessOfWelded(prepared);
     result.volumeMeaningful = result.closedness.closed && orientedClosedness.inconsistentEdges == 0;
     result.meshVolume = std::abs(signedVolume(prepared)) * p.scale[0] * p.scale[1] * p.scale[2];
     return result;
