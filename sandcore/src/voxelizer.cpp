@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -206,11 +207,11 @@ InsideMask insideFromGridPoints(const std::vector<std::array<double, 3>>& grid,
 
 // What the rays see: a face written twice counts once, and faces are oriented outward for the
 // winding number of robust mode (parity ignores orientation).
-TriangleMesh preparedFromWelded(TriangleMesh welded) {
-    return orientedOutwardWelded(withoutRepeatedTrianglesWelded(std::move(welded)));
+TriangleMesh preparedForRays(const TriangleMesh& mesh) {
+    TriangleMesh welded = weldVertices(mesh);
+    const std::vector<char> keep = trianglesToKeep(welded);
+    return orientedOutwardWelded(keptTriangles(std::move(welded), keep)).mesh;
 }
-
-TriangleMesh preparedForRays(const TriangleMesh& mesh) { return preparedFromWelded(weldVertices(mesh)); }
 
 } // namespace
 
@@ -253,10 +254,15 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     VoxelizeResult result;
     result.placement = placeInGrid(mesh, settings);
     const VoxelPlacement& p = result.placement;
-    // Welded once: the closedness check and the preparation for rays both start from it.
+    // Welded once; the walk over the edges that orients the faces also measures closedness, of
+    // the mesh as loaded unless repeated faces had to go first (then that takes a walk of its own).
     TriangleMesh welded = weldVertices(mesh);
-    result.closedness = closednessOfWelded(welded);
-    const TriangleMesh prepared = preparedFromWelded(std::move(welded));
+    const std::vector<char> keep = trianglesToKeep(welded);
+    std::optional<MeshClosedness> asLoaded;
+    if (!keep.empty()) asLoaded = closednessOfWelded(welded);
+    OrientedMesh oriented = orientedOutwardWelded(keptTriangles(std::move(welded), keep));
+    result.closedness = asLoaded ? *asLoaded : oriented.closedness;
+    const TriangleMesh& prepared = oriented.mesh;
     std::vector<std::array<double, 3>> grid(prepared.vertices.size());
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const Vec3 v = prepared.vertices[i];
@@ -268,8 +274,7 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     // The volume of the outward-oriented mesh: a model with some faces flipped keeps its
     // volume; where orientation cannot be made consistent (a non-orientable or non-manifold
     // surface) the volume means nothing and is not reported as if it did.
-    const MeshClosedness orientedClosedness = closednessOfWelded(prepared);
-    result.volumeMeaningful = result.closedness.closed && orientedClosedness.inconsistentEdges == 0;
+    result.volumeMeaningful = result.closedness.closed && oriented.inconsistentAfter == 0;
     result.meshVolume = std::abs(signedVolume(prepared)) * p.scale[0] * p.scale[1] * p.scale[2];
     return result;
 }
