@@ -20,6 +20,14 @@ constexpr int kMinAwakeRowsForThreads = 24;
 constexpr int kSlipDx[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
 constexpr int kSlipDz[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
 
+// kSetBits[mask]: number of set bits of an 8-bit mask (a table: std::popcount is a library call
+// on CPUs the build does not assume to have POPCNT).
+constexpr auto kSetBits = [] {
+    std::array<std::uint8_t, 256> table{};
+    for (int mask = 0; mask < 256; ++mask) table[std::size_t(mask)] = std::uint8_t(std::popcount(unsigned(mask)));
+    return table;
+}();
+
 // kNthSetBit[mask][k]: position of the k-th set bit of mask (k < popcount(mask)).
 constexpr auto kNthSetBit = [] {
     std::array<std::array<std::uint8_t, 8>, 256> table{};
@@ -60,7 +68,7 @@ void GridSweep::wake(std::uint32_t cell) {
 // Sets the awake bits x0..x1 (at most 63 apart) of one row that may hold a grain, with one or
 // two word operations. EMPTY and INVALID cells stay asleep: that is exact, as in
 // wakeGrainsAround, since a grain that enters one of them later is woken by its move.
-void GridSweep::wakeSpan(std::size_t row, int x0, int x1) {
+inline void GridSweep::wakeSpan(std::size_t row, int x0, int x1) {
     std::uint64_t* words = words_.data() + row * std::size_t(rowWords_);
     const std::uint64_t* occupied = occupied_.data() + row * std::size_t(rowWords_);
     const int first = x0 >> 6, last = x1 >> 6;
@@ -78,7 +86,7 @@ void GridSweep::wakeSpan(std::size_t row, int x0, int x1) {
     if (woken) rowAwake_[row] = 1;
 }
 
-void GridSweep::wakePredecessorsOf(int x, int y, int z) {
+inline void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     const Int3 size = size_;
     if (y + 1 >= size.y) return;
     const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, size.x - 1);
@@ -151,22 +159,32 @@ void GridSweep::applyDeferredWakes() {
     deferredWakesAbove_.clear();
 }
 
-void GridSweep::applyLoggedMoves(GrainStore& grains, std::uint64_t step, std::vector<std::uint32_t>& moved) {
-    const std::size_t first = moved.size();
-    for (std::vector<LoggedMove>& log : logs_) {
-        for (const LoggedMove& m : log) {
-            if (!granular_) {
+void GridSweep::writeLoggedMoves(GrainStore& grains, std::uint64_t step, int part, int parts) const {
+    if (granular_ || !recordsDeferred_) return; // written as they moved
+    const auto write = [&](auto partOf) {
+        for (const std::vector<LoggedMove>& log : logs_)
+            for (const LoggedMove& m : log) {
+                if (partOf(m.grain >> kGrainsPerPartBits) != std::uint32_t(part)) continue;
                 grains.cell[m.grain] = m.to;
                 grains.cameFrom[m.grain] = m.cameFrom;
                 grains.movedAtStep[m.grain] = step;
             }
-            moved.push_back(m.grain);
-        }
+    };
+    const auto count = std::uint32_t(parts);
+    if ((count & (count - 1)) == 0) // a power of two (1, 2, 4 threads): no division per move
+        write([mask = count - 1](std::uint32_t block) { return block & mask; });
+    else
+        write([count](std::uint32_t block) { return block % count; });
+}
+
+void GridSweep::takeLoggedMoves(std::vector<std::uint32_t>& moved) {
+    const std::size_t first = moved.size();
+    for (std::vector<LoggedMove>& log : logs_) {
+        for (const LoggedMove& m : log) moved.push_back(m.grain);
         log.clear();
     }
     if (granular_) {
-        // The granular rules wrote the records as they moved; a grain may move again in its own
-        // layer within one sweep, so each is listed once.
+        // A granular grain may move again in its own layer within one sweep: list it once.
         std::sort(moved.begin() + std::ptrdiff_t(first), moved.end());
         moved.erase(std::unique(moved.begin() + std::ptrdiff_t(first), moved.end()), moved.end());
     }
@@ -235,7 +253,7 @@ inline bool GridSweep::visitCell(const SweepContext& context, std::vector<Logged
                                unsigned(middle[1] == kEmpty) << 4 | unsigned(behind[-1] == kEmpty) << 5 |
                                unsigned(behind[0] == kEmpty) << 6 | unsigned(behind[1] == kEmpty) << 7;
         if (!empty) return false; // cannot move: it sleeps until a cell below it empties
-        const std::uint8_t pick = kNthSetBit[empty][pickBelow(random(), std::uint32_t(std::popcount(empty)))];
+        const std::uint8_t pick = kNthSetBit[empty][pickBelow(random(), kSetBits[empty])];
         dx = kSlipDx[pick];
         dz = kSlipDz[pick];
     } else {
@@ -250,7 +268,14 @@ inline bool GridSweep::visitCell(const SweepContext& context, std::vector<Logged
     cells[to] = grain;
     cells[from] = kEmpty;
     occupied_[word] &= ~bit;
-    log.push_back({std::uint32_t(grain), to, packMove(-dx, 1, -dz)});
+    const MoveCode back = packMove(-dx, 1, -dz);
+    log.push_back({std::uint32_t(grain), to, back});
+    if (!context.deferRecords) {
+        GrainStore& grains = context.grains;
+        grains.cell[std::size_t(grain)] = to;
+        grains.cameFrom[std::size_t(grain)] = back;
+        grains.movedAtStep[std::size_t(grain)] = context.step;
+    }
 
     if (y - 1 > 0 || bottomIsOutlet_) wakeAt(x + dx, y - 1, z + dz); // it may move on next step
     wakeAroundEmptiedBy<false>(context.grid, x, y, z);             // the cell it left is free
@@ -324,6 +349,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
 }
 
 SweepResult GridSweep::sweep(const SweepContext& context, WorkerPool* pool) {
+    recordsDeferred_ = context.deferRecords;
     return granular_ ? sweepBy<true>(context, pool) : sweepBy<false>(context, pool);
 }
 

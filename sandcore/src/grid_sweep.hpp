@@ -20,6 +20,7 @@ class WorkerPool;
 class GranularRules;
 
 inline constexpr int kStripRows = 8;
+inline constexpr int kGrainsPerPartBits = 6; ///< writeLoggedMoves: 64 grain ids per block
 
 /// One classic move, kept by the strip that made it and written into the GrainStore after the
 /// sweep: the two grids' workers then never write the same grain records' cache lines.
@@ -45,6 +46,9 @@ struct SweepContext {
     GridLevel level;     ///< which grid: picks the slips, so the two grids draw differently
     bool sleeping;       ///< R5: visit awake cells only; false = every cell (same result)
     std::uint64_t stepKey; ///< counterRandomStepKey(seed, step), computed once per sweep
+    /// Classic moves leave the grain records to writeLoggedMoves (when another grid is swept at
+    /// the same time); false writes them at once, cheaper while no other thread writes records.
+    bool deferRecords;
 };
 
 class GridSweep {
@@ -74,10 +78,13 @@ public:
     void setDeferWakesAbove(bool defer) { deferWakesAbove_ = defer; }
     /// Applies the wakes kept while deferred.
     void applyDeferredWakes();
-    /// Writes the moves the last sweep logged into grains (cell, cameFrom, movedAtStep = step),
-    /// appends their ids to moved and empties the logs. Granular sweeps write the grain records
-    /// themselves and log only the ids.
-    void applyLoggedMoves(GrainStore& grains, std::uint64_t step, std::vector<std::uint32_t>& moved);
+    /// Writes the moves the last sweep logged into grains (cell, cameFrom, movedAtStep = step), of
+    /// the grains in `part` of `parts`: blocks of 2^kGrainsPerPartBits ids go to the parts in
+    /// turn, so parts on different threads write different cache lines. Granular sweeps write
+    /// the records as they move: nothing to do.
+    void writeLoggedMoves(GrainStore& grains, std::uint64_t step, int part, int parts) const;
+    /// Appends the ids of the grains the last sweep moved to `moved`, each once, and empties the logs.
+    void takeLoggedMoves(std::vector<std::uint32_t>& moved);
     /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
     std::int64_t awakeRowCount() const;
 
@@ -137,6 +144,7 @@ private:
     // Waking the cells above an emptied cell ANDs with it, so EMPTY and INVALID cells stay asleep.
     std::vector<std::uint64_t> occupied_;
     std::vector<std::vector<LoggedMove>> logs_; // per strip: the moves of the current sweep
+    bool recordsDeferred_ = false;              // the last sweep left its records to writeLoggedMoves
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
 };
 

@@ -13,6 +13,9 @@ namespace sandcore {
 
 namespace {
 
+// Below this many moves in a step, one thread writes the grain records faster than several.
+constexpr std::int64_t kMinMovesForThreads = 2048;
+
 bool layoutOnly(const CellGrid& grid) {
     const auto cells = grid.cells();
     return std::all_of(cells.begin(), cells.end(), [](CellValue v) { return v == kEmpty || v == kInvalid; });
@@ -113,6 +116,7 @@ void Scene::reset() {
     rebuildCells(GridLevel::Lower);
     upperSweep_->clear();
     lowerSweep_->clear();
+    grains_.reserve(std::uint32_t(upperFill_.size())); // a big fill grows no array piece by piece
     for (std::uint32_t cell : upperFill_) addGrain(GridLevel::Upper, cell);
 }
 
@@ -120,8 +124,6 @@ void Scene::step() {
     const std::uint64_t stepNumber = counters_.stepsDone + 1;
     WorkerPool* pool = settings_.threads > 1 ? pool_.get() : nullptr;
     const std::uint64_t stepKey = counterRandomStepKey(settings_.seed, stepNumber);
-    const SweepContext lowerContext{lower_, grains_, settings_.seed, stepNumber, GridLevel::Lower, settings_.sleeping, stepKey};
-    const SweepContext upperContext{upper_, grains_, settings_.seed, stepNumber, GridLevel::Upper, settings_.sleeping, stepKey};
     SweepResult lower, upper;
     // The two grids touch no common cell during their sweeps (the lower grid's wakes of the
     // outlet row wait until both are done), so when both have comparable work they run side by
@@ -131,6 +133,10 @@ void Scene::step() {
     const std::int64_t upperWork = settings_.sleeping ? upperSweep_->awakeRowCount() : std::int64_t(upper_.cellCount());
     const bool sideBySide = pool && std::min(lowerWork, upperWork) > 0 &&
                             4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
+    // Side by side, the two grids' threads would write the same cache lines of grain records
+    // (grains moving in both have nearby ids): each logs its moves, written after both sweeps.
+    const SweepContext lowerContext{lower_, grains_, settings_.seed, stepNumber, GridLevel::Lower, settings_.sleeping, stepKey, sideBySide};
+    const SweepContext upperContext{upper_, grains_, settings_.seed, stepNumber, GridLevel::Upper, settings_.sleeping, stepKey, sideBySide};
     if (sideBySide) {
         lowerSweep_->setDeferWakesAbove(true);
         pool->parallelFor(2, [&](int grid) {
@@ -146,10 +152,18 @@ void Scene::step() {
         upper = upperSweep_->sweep(upperContext, pool);
     }
     // The sweeps logged their moves instead of writing grain records that both grids' workers
-    // would share; written here, before the transition reads them.
+    // would share; written here, before the transition reads them, each thread its own blocks of ids.
+    const auto writeMoves = [&](int part, int parts) {
+        lowerSweep_->writeLoggedMoves(grains_, stepNumber, part, parts);
+        upperSweep_->writeLoggedMoves(grains_, stepNumber, part, parts);
+    };
+    if (pool && lower.moves + upper.moves >= kMinMovesForThreads)
+        pool->parallelFor(pool->threadCount(), [&](int part) { writeMoves(part, pool->threadCount()); });
+    else
+        writeMoves(0, 1);
     movedGrains_.clear();
-    lowerSweep_->applyLoggedMoves(grains_, stepNumber, movedGrains_);
-    upperSweep_->applyLoggedMoves(grains_, stepNumber, movedGrains_);
+    lowerSweep_->takeLoggedMoves(movedGrains_);
+    upperSweep_->takeLoggedMoves(movedGrains_);
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;
     counters_.visitedLastStep = lower.visited + upper.visited;
