@@ -81,9 +81,9 @@ TEST_CASE("memory estimates cover the grids and grains of the scene built") {
         const InsideMask& mask = kind == SceneKind::Hourglass ? vessel : ball;
         const Scene scene = kind == SceneKind::Hourglass ? makeHourglassScene(mask) : makeSculptureScene(mask);
         // The live grid, a layout bit and the sweep's awake and occupied bits for every cell, and
-        // each grain's record (28 bytes of fields).
+        // each grain's record (31 bytes of fields).
         const std::uint64_t gridCells = cells(scene.grid(GridLevel::Upper).size()) + cells(scene.grid(GridLevel::Lower).size());
-        const std::uint64_t held = sizeof(CellValue) * gridCells + 3 * gridCells / 8 + 28u * std::uint64_t(scene.grainCount());
+        const std::uint64_t held = sizeof(CellValue) * gridCells + 3 * gridCells / 8 + 31u * std::uint64_t(scene.grainCount());
         CHECK(estimateSceneBytes(kind, mask.size) >= held);
     }
 }
