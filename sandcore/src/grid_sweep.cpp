@@ -162,8 +162,8 @@ void GridSweep::applyDeferredWakes() {
 void GridSweep::writeLoggedMoves(GrainStore& grains, std::uint64_t step, int part, int parts) const {
     if (granular_ || !recordsDeferred_) return; // written as they moved
     const auto write = [&](auto partOf) {
-        for (const std::vector<LoggedMove>& log : logs_)
-            for (const LoggedMove& m : log) {
+        for (const StripLog& log : logs_)
+            for (const LoggedMove& m : log.deferred) {
                 if (partOf(m.grain >> kGrainsPerPartBits) != std::uint32_t(part)) continue;
                 grains.cell[m.grain] = m.to;
                 grains.cameFrom[m.grain] = m.cameFrom;
@@ -178,15 +178,11 @@ void GridSweep::writeLoggedMoves(GrainStore& grains, std::uint64_t step, int par
 }
 
 void GridSweep::takeLoggedMoves(std::vector<std::uint32_t>& moved) {
-    const std::size_t first = moved.size();
-    for (std::vector<LoggedMove>& log : logs_) {
-        for (const LoggedMove& m : log) moved.push_back(m.grain);
-        log.clear();
-    }
-    if (granular_) {
-        // A granular grain may move again in its own layer within one sweep: list it once.
-        std::sort(moved.begin() + std::ptrdiff_t(first), moved.end());
-        moved.erase(std::unique(moved.begin() + std::ptrdiff_t(first), moved.end()), moved.end());
+    for (StripLog& log : logs_) {
+        for (const LoggedMove& m : log.deferred) moved.push_back(m.grain);
+        moved.insert(moved.end(), log.moved.begin(), log.moved.end());
+        log.deferred.clear();
+        log.moved.clear();
     }
 }
 
@@ -201,7 +197,10 @@ void GridSweep::wakeEveryGrain(const CellGrid& grid) {
 void GridSweep::clear() {
     std::fill(words_.begin(), words_.end(), 0);
     std::fill(occupied_.begin(), occupied_.end(), 0);
-    for (auto& log : logs_) log.clear();
+    for (StripLog& log : logs_) {
+        log.deferred.clear();
+        log.moved.clear();
+    }
     std::fill(rowAwake_.begin(), rowAwake_.end(), 0);
 }
 
@@ -227,7 +226,7 @@ int GridSweep::awakeRowsInLayer(int y) const {
 // Away from the grid's sides the 8 successors are read with no bounds tests and the slip is
 // picked from a mask of the empty ones without branches; at the sides chooseMove does it. Both
 // make the same choice. The grain's record is written after the sweep (applyLoggedMoves).
-inline bool GridSweep::visitCell(const SweepContext& context, std::vector<LoggedMove>& log, int x, int y, int z) {
+inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int x, int y, int z) {
     CellValue* cells = context.grid.cells().data();
     const auto sizeX = std::uint32_t(size_.x);
     const std::uint32_t layer = context.grid.layerSize();
@@ -269,12 +268,14 @@ inline bool GridSweep::visitCell(const SweepContext& context, std::vector<Logged
     cells[from] = kEmpty;
     occupied_[word] &= ~bit;
     const MoveCode back = packMove(-dx, 1, -dz);
-    log.push_back({std::uint32_t(grain), to, back});
-    if (!context.deferRecords) {
+    if (context.deferRecords) {
+        log.deferred.push_back({std::uint32_t(grain), to, back});
+    } else {
         GrainStore& grains = context.grains;
         grains.cell[std::size_t(grain)] = to;
         grains.cameFrom[std::size_t(grain)] = back;
         grains.movedAtStep[std::size_t(grain)] = context.step;
+        (context.movedList ? *context.movedList : log.moved).push_back(std::uint32_t(grain));
     }
 
     if (y - 1 > 0 || bottomIsOutlet_) wakeAt(x + dx, y - 1, z + dz); // it may move on next step
@@ -282,7 +283,7 @@ inline bool GridSweep::visitCell(const SweepContext& context, std::vector<Logged
     return true;
 }
 
-bool GridSweep::visitGranular(const SweepContext& context, std::vector<LoggedMove>& log, int x, int y, int z) {
+bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z) {
     const GranularOutcome outcome = granular_->visit(context.grid, context.grains, context.seed, context.step,
                                                      std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
     if (outcome.kind == GranularOutcome::Waiting) {
@@ -295,7 +296,7 @@ bool GridSweep::visitGranular(const SweepContext& context, std::vector<LoggedMov
     const Int3 to = outcome.to;
     const std::uint32_t toCell = context.grid.index(to.x, to.y, to.z);
     const auto grain = std::uint32_t(context.grid[toCell]);
-    log.push_back({grain, toCell, context.grains.cameFrom[grain]}); // for the moved list only
+    (context.movedList ? *context.movedList : log.moved).push_back(grain); // the rules wrote its record
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
     wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
     return true;
@@ -307,7 +308,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
     SweepResult totals;
     const Int3 size = size_;
     const int zEnd = std::min((strip + 1) * kStripRows, size.z);
-    std::vector<LoggedMove>& log = logs_[std::size_t(strip)];
+    StripLog& log = logs_[std::size_t(strip)];
     for (int z = strip * kStripRows; z < zEnd; ++z) {
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size.z) + std::uint32_t(z);
         if (context.sleeping && !rowAwake_[row]) continue;

@@ -30,6 +30,13 @@ struct LoggedMove {
     MoveCode cameFrom;   ///< offset back to the cell it left
 };
 
+/// What one strip of a sweep keeps of its moves: the moves whose records wait (deferRecords), or
+/// the ids of grains whose records were written at once.
+struct StripLog {
+    std::vector<LoggedMove> deferred; ///< moves whose grain records writeLoggedMoves writes
+    std::vector<std::uint32_t> moved; ///< ids of the other grains moved
+};
+
 struct SweepResult {
     std::int64_t moves = 0;   ///< grains moved
     std::int64_t visited = 0; ///< cells looked at
@@ -49,6 +56,9 @@ struct SweepContext {
     /// Classic moves leave the grain records to writeLoggedMoves (when another grid is swept at
     /// the same time); false writes them at once, cheaper while no other thread writes records.
     bool deferRecords;
+    /// When set (a sweep on one thread that writes records at once), the ids of moved grains are
+    /// appended here directly instead of to the strips' logs.
+    std::vector<std::uint32_t>* movedList;
 };
 
 class GridSweep {
@@ -83,7 +93,8 @@ public:
     /// turn, so parts on different threads write different cache lines. Granular sweeps write
     /// the records as they move: nothing to do.
     void writeLoggedMoves(GrainStore& grains, std::uint64_t step, int part, int parts) const;
-    /// Appends the ids of the grains the last sweep moved to `moved`, each once, and empties the logs.
+    /// Appends the ids of the grains the last sweep logged to `moved` and empties the logs. A
+    /// granular grain may be listed twice (it may move again in its own layer).
     void takeLoggedMoves(std::vector<std::uint32_t>& moved);
     /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
     std::int64_t awakeRowCount() const;
@@ -122,8 +133,8 @@ private:
     template <bool Granular> SweepResult sweepStrip(const SweepContext& context, int y, int strip);
     template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
     // classic rules; true when a grain moved
-    bool visitCell(const SweepContext& context, std::vector<LoggedMove>& log, int x, int y, int z);
-    bool visitGranular(const SweepContext& context, std::vector<LoggedMove>& log, int x, int y, int z);
+    bool visitCell(const SweepContext& context, StripLog& log, int x, int y, int z);
+    bool visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z);
     void clearRow(std::uint32_t row);
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
@@ -143,7 +154,7 @@ private:
     // enters a cell is woken there), cleared when a classic move or a visit finds the cell EMPTY.
     // Waking the cells above an emptied cell ANDs with it, so EMPTY and INVALID cells stay asleep.
     std::vector<std::uint64_t> occupied_;
-    std::vector<std::vector<LoggedMove>> logs_; // per strip: the moves of the current sweep
+    std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
     bool recordsDeferred_ = false;              // the last sweep left its records to writeLoggedMoves
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
 };

@@ -117,6 +117,7 @@ void Scene::reset() {
     upperSweep_->clear();
     lowerSweep_->clear();
     grains_.reserve(std::uint32_t(upperFill_.size())); // a big fill grows no array piece by piece
+    movedGrains_.reserve(upperFill_.size());           // address space only, until steps move grains
     for (std::uint32_t cell : upperFill_) addGrain(GridLevel::Upper, cell);
 }
 
@@ -135,8 +136,13 @@ void Scene::step() {
                             4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
     // Side by side, the two grids' threads would write the same cache lines of grain records
     // (grains moving in both have nearby ids): each logs its moves, written after both sweeps.
-    const SweepContext lowerContext{lower_, grains_, settings_.seed, stepNumber, GridLevel::Lower, settings_.sleeping, stepKey, sideBySide};
-    const SweepContext upperContext{upper_, grains_, settings_.seed, stepNumber, GridLevel::Upper, settings_.sleeping, stepKey, sideBySide};
+    // On one thread the sweeps list the moved grains in movedGrains_ directly.
+    movedGrains_.clear();
+    std::vector<std::uint32_t>* movedList = pool ? nullptr : &movedGrains_;
+    const SweepContext lowerContext{lower_,   grains_,           settings_.seed, stepNumber, GridLevel::Lower,
+                                    settings_.sleeping, stepKey, sideBySide,     movedList};
+    const SweepContext upperContext{upper_,   grains_,           settings_.seed, stepNumber, GridLevel::Upper,
+                                    settings_.sleeping, stepKey, sideBySide,     movedList};
     if (sideBySide) {
         lowerSweep_->setDeferWakesAbove(true);
         pool->parallelFor(2, [&](int grid) {
@@ -161,9 +167,13 @@ void Scene::step() {
         pool->parallelFor(pool->threadCount(), [&](int part) { writeMoves(part, pool->threadCount()); });
     else
         writeMoves(0, 1);
-    movedGrains_.clear();
     lowerSweep_->takeLoggedMoves(movedGrains_);
     upperSweep_->takeLoggedMoves(movedGrains_);
+    if (granular_) {
+        // A granular grain may move again in its own layer within one sweep: list it once.
+        std::sort(movedGrains_.begin(), movedGrains_.end());
+        movedGrains_.erase(std::unique(movedGrains_.begin(), movedGrains_.end()), movedGrains_.end());
+    }
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;
     counters_.visitedLastStep = lower.visited + upper.visited;
