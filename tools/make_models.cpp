@@ -1,6 +1,8 @@
 // Writes the bundled models (models/*.obj) from sandcore's mesh shapes. The OBJ files are
 // committed, so users never need to run this; developers rerun it after changing a shape:
 //   cmake --build --preset release --target make_models && build/release/tools/make_models models
+#include "artist_models.hpp"
+
 #include "sandcore/mesh_shapes.hpp"
 
 #include <algorithm>
@@ -117,5 +119,6 @@ int main(int argc, char** argv) {
     ok &= writeObj(dir + "/ball.obj", makeIcosphereMesh(3, 1.0f), "sculpture: a ball (icosphere, 1280 triangles)");
     ok &= writeObj(dir + "/snowman.obj", snowman(), "sculpture: a snowman with a top hat");
     ok &= writeObj(dir + "/trefoil.obj", trefoil(), "sculpture: a trefoil knot tube");
+    ok &= writeArtistModels(dir);
     return ok ? 0 : 1;
 }

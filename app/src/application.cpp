@@ -1,11 +1,14 @@
 #include "app/application.hpp"
 
 #include "app/frame_benchmark_runner.hpp"
+#include "gui/help_window.hpp"
 #include "gui/panels.hpp"
+#include "gui/quit_question.hpp"
 #include "view/render/shader_program.hpp"
 
 #include "scene/canvas_surface.hpp"
 #include "scene/draft_image.hpp"
+#include "scene/file_io.hpp"
 #include "scene/scene_export.hpp"
 #include "scene/state_file.hpp"
 
@@ -26,8 +29,6 @@ namespace sandglass {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr float kPi = 3.14159265f;
-constexpr double kTurnSeconds = 0.8; // the view turns over this long after a flip
 constexpr float kCanvasPitch = 1.3f; // radians above the horizon the canvas is seen from
 
 std::vector<std::string> listModelFiles() {
@@ -43,10 +44,31 @@ std::vector<std::string> listModelFiles() {
     return files;
 }
 
-// The settings a window starts from, with the defaults applied and checked once.
-SceneSettings checkedSceneSettings(SceneSettings settings) {
+// The scene a window starts with: a saved state when one is named (nothing else is built
+// first), else the one its settings describe, with the defaults applied and checked once.
+SceneHost startingHost(const ApplicationOptions& options) {
+    if (!options.stateFile.empty()) {
+        LoadedState loaded = loadState(options.stateFile);
+        return SceneHost(std::move(loaded.scene), loaded.settings);
+    }
+    SceneSettings settings = options.initial.scene;
     applySceneDefaults(settings);
-    return settings;
+    return SceneHost(settings);
+}
+
+bool isStateFile(const std::filesystem::path& path) { return path.extension() == ".sand"; }
+
+// Where the file dialog starts for a choice: the path the panel holds for it.
+std::string startPathFor(const AppState& state, FileChoice choice) {
+    switch (choice) {
+    case FileChoice::OpenState:
+    case FileChoice::SaveState: return state.files.statePath;
+    case FileChoice::Export: return state.files.exportPath;
+    case FileChoice::Model: return state.scene.request.modelPath;
+    case FileChoice::Draft: return state.painting.draftPath;
+    case FileChoice::ScreenshotFolder: return state.files.screenshotFolder + "/";
+    }
+    return {};
 }
 
 } // namespace
@@ -77,13 +99,28 @@ struct ApplicationCallbacks {
     }
     static void mouseButton(GLFWwindow* window, int button, int action, int mods) {
         ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
+        // Every press and release is kept, so clicks between two slow frames all count.
+        double x = 0.0, y = 0.0;
+        glfwGetCursorPos(window, &x, &y);
+        of(window).queueMouseButton(button, action == GLFW_PRESS, x, y);
+    }
+    static void close(GLFWwindow* window) {
+        // The window's close button asks first too, when there are unsaved edits (U5).
+        if (of(window).state_.files.unsavedEdits == 0) return;
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        of(window).state_.commands.push(Command::Quit);
     }
     static void focus(GLFWwindow* window, int focused) { ImGui_ImplGlfw_WindowFocusCallback(window, focused); }
     static void enter(GLFWwindow* window, int entered) { ImGui_ImplGlfw_CursorEnterCallback(window, entered); }
     static void drop(GLFWwindow* window, int count, const char** paths) {
         if (count < 1) return;
         AppState& state = of(window).state_;
-        // An image dropped on the canvas is a draft; every other file is a model.
+        // A .sand file opens; an image dropped on the canvas is a draft; every other file is a model.
+        if (isStateFile(paths[0])) {
+            state.files.statePath = paths[0];
+            state.commands.push(Command::LoadState);
+            return;
+        }
         if (of(window).scene().kind() == sandcore::SceneKind::Canvas && isDraftImageFile(paths[0])) {
             state.painting.draftPath = paths[0];
             state.commands.push(Command::LoadDraft);
@@ -99,7 +136,7 @@ struct ApplicationCallbacks {
 Application::Application(ApplicationOptions options)
     : options_(std::move(options)), state_(options_.initial), window_(options_.window),
       imgui_(window_.handle(), window_.contentScale()), renderer_(shaderDirectory()),
-      host_(checkedSceneSettings(options_.initial.scene)), canvas_(shaderDirectory(), options_.undo) {
+      host_(startingHost(options_)), canvas_(shaderDirectory(), options_.undo) {
     if (options_.offscreen) {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
@@ -114,6 +151,7 @@ Application::Application(ApplicationOptions options)
     glfwSetWindowFocusCallback(handle, ApplicationCallbacks::focus);
     glfwSetCursorEnterCallback(handle, ApplicationCallbacks::enter);
     glfwSetDropCallback(handle, ApplicationCallbacks::drop);
+    glfwSetWindowCloseCallback(handle, ApplicationCallbacks::close);
 
     state_.glRenderer = window_.glRenderer();
     state_.glVersion = window_.glVersion();
@@ -121,6 +159,12 @@ Application::Application(ApplicationOptions options)
     state_.painting.draftFiles = listDraftFiles(std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models");
     state_.scene = host_.loaded();
     state_.loaded = host_.loaded();
+    state_.files.screenshotFolder =
+        (options_.screenshotFolder.empty() ? defaultPicturesFolder() : options_.screenshotFolder).string();
+    if (!options_.stateFile.empty()) {
+        state_.files.statePath = options_.stateFile.string();
+        state_.statusLine = "opened " + state_.files.statePath;
+    }
     frameCamera();
     camera_.zoom(options_.cameraZoom);
     host_.runSteps(options_.stepsBeforeStart);
@@ -132,6 +176,7 @@ Application::~Application() { glfwSetWindowUserPointer(window_.handle(), nullptr
 void Application::frameCamera() {
     sandcore::Vec3 lo, hi;
     sandcore::sceneBounds(host_.scene(), {state_.render.cellSize, state_.render.jitter}, lo, hi);
+    if (const auto& model = host_.modelDrawing()) includeInBounds(*model, scene().flipped(), state_.render.cellSize, lo, hi);
     camera_.frame(lo, hi);
     // The canvas is painted from above and a little from the front, so sand lands where the
     // cursor points and the piles still show their height.
@@ -166,29 +211,20 @@ int Application::run() {
         // A screenshot asked for on the command line that cannot be written fails the run.
         if (lastFrame && !options_.screenshotFile.empty() && !saveScreenshot(options_.screenshotFile)) exitCode = 1;
         // Commands that need a whole frame drawn first, or that end the loop.
-        bool quit = false, benchmark = false;
+        bool benchmark = false;
         for (Command command : state_.commands.take()) {
-            if (command == Command::Screenshot) saveScreenshot(nextScreenshotName());
-            quit = quit || command == Command::Quit;
+            if (command == Command::Screenshot) saveNumberedScreenshot(sceneOnlyFrame_ ? *sceneOnlyFrame_ : captureFrame());
             benchmark = benchmark || command == Command::Benchmark;
         }
+        sceneOnlyFrame_.reset();
         finishFrame();
         if (benchmark) {
             runInteractiveBenchmark();
             last = Clock::now();
         }
-        if (lastFrame || quit) break;
+        if (lastFrame || quitRequested_) break;
     }
     return exitCode;
-}
-
-std::filesystem::path Application::nextScreenshotName() {
-    // Never over an earlier screenshot, of this run or of an earlier one.
-    std::error_code error;
-    std::filesystem::path file;
-    do file = "sandglass-" + std::to_string(++screenshotsTaken_) + ".png";
-    while (std::filesystem::exists(file, error) && screenshotsTaken_ < 1'000'000);
-    return file;
 }
 
 void Application::finishFrame() {
@@ -198,10 +234,23 @@ void Application::finishFrame() {
         window_.swapBuffers();
 }
 
-void Application::renderFrame(double elapsedSeconds) {
-    imgui_.newFrame();
-    handleMouse();
+void Application::queueMouseButton(int button, bool pressed, double x, double y) {
+    imgui_.queueMouseTransition({button, pressed, x, y});
+}
+
+void Application::buildWindows() {
     if (state_.showGui) drawPanels(state_);
+    drawQuitQuestion(state_);
+    drawHelpWindow(state_);
+    // The hint is for a person at a window; hidden windows (render, tests) draw the scene only.
+    if (options_.window.visible && state_.showGui) drawHelpHint(state_);
+}
+
+void Application::renderFrame(double elapsedSeconds) {
+    state_.uiScale = imgui_.setUiScale(state_.uiScale);
+    imgui_.newFrame([this] { buildWindows(); });
+    handleMouse();
+    buildWindows();
     camera_.setLensShift(state_.showGui ? state_.panelCoverage : 0.0f);
     serveCommands();
     updateTimer();
@@ -212,6 +261,8 @@ void Application::renderFrame(double elapsedSeconds) {
     updateTurnAnimation();
     renderer_.setDraftPlacement(canvas_.draftPlacement(host_.scene(), state_.painting, state_.render.cellSize));
     drawHost(host_, state_.render);
+    // E4: a screenshot shows the sand alone unless asked otherwise; the panels come after.
+    if (state_.commands.contains(Command::Screenshot) && !state_.files.screenshotWithPanel) sceneOnlyFrame_ = captureFrame();
     drawOverlays();
     imgui_.render(true);
     updateStatistics(elapsedSeconds);
@@ -221,6 +272,7 @@ void Application::renderFrame(double elapsedSeconds) {
 void Application::renderHostFrame(SceneHost& host, const RenderSettings& render, bool panels, double elapsedSeconds) {
     imgui_.newFrame();
     if (panels) drawPanels(state_); // what they queue waits for the application's own frames
+    if (benchmark_.running) drawBenchmarkProgress();
     host.setRunning(true);
     host.setStepsPerSecond(state_.stepsPerSecond);
     host.advance(elapsedSeconds);
@@ -233,7 +285,7 @@ void Application::renderHostFrame(SceneHost& host, const RenderSettings& render,
 void Application::drawHost(SceneHost& host, const RenderSettings& render) {
     // The renderer hears only of real changes: a new layout rebuilds the hull, new grains re-upload.
     if (&host != drawnHost_ || host.layoutRevision() != drawnLayout_) {
-        renderer_.setScene(host.scene(), render.cellSize);
+        renderer_.setScene(host.scene(), render.cellSize, host.modelDrawing().get());
         drawnLayout_ = host.layoutRevision();
         drawnContent_ = 0;
     }
@@ -272,8 +324,13 @@ void Application::handleMouse() {
     for (const auto& [glfwButton, button] : buttons)
         if (glfwGetMouseButton(handle, glfwButton) == GLFW_PRESS)
             applyMouseDrag(capture, button, alt, leftPaints, dx, dy, float(height), camera_);
-    if (scene().kind() == sandcore::SceneKind::Canvas)
-        handleCanvasPointer({x, y, glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS, alt, capture.mouse});
+    if (scene().kind() != sandcore::SceneKind::Canvas) return;
+    const bool leftDown = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    // While an obstacle is being placed, the left button drags its box instead of pouring sand.
+    if (state_.obstacleDrag.armed || state_.obstacleDrag.dragging)
+        handleObstacleDrag(x, y, leftDown && !alt, capture);
+    else
+        handleCanvasPointer({x, y, leftDown, alt, capture.mouse});
 }
 
 void Application::handleKey(KeyCommand command) {
@@ -287,8 +344,17 @@ void Application::handleKey(KeyCommand command) {
         std::printf("%.1f frames per second, %.2f ms per frame\n", state_.stats.framesPerSecond,
                     state_.stats.millisecondsPerFrame);
         break;
-    case KeyCommand::RunBenchmark: state_.commands.push(Command::Benchmark); break;
-    case KeyCommand::Quit: state_.commands.push(Command::Quit); break;
+    case KeyCommand::RunBenchmark:
+        if (!benchmark_.running) state_.commands.push(Command::Benchmark);
+        break;
+    case KeyCommand::Quit:
+        // Esc during the frame benchmark ends the benchmark, not the program.
+        if (benchmark_.running)
+            benchmark_.cancelRequested = true;
+        else
+            state_.commands.push(Command::Quit);
+        break;
+    case KeyCommand::Help: state_.showHelp = !state_.showHelp; break;
     case KeyCommand::Screenshot: state_.commands.push(Command::Screenshot); break;
     case KeyCommand::Undo: state_.commands.push(Command::Undo); break;
     case KeyCommand::Flip: state_.commands.push(Command::Flip); break;
@@ -308,6 +374,7 @@ void Application::adoptBuild(const BuildOutcome& outcome) {
         return;
     }
     state_.loaded = host_.loaded();
+    state_.files.unsavedEdits = 0; // the edits went with the scene they were made in
     canvas_.sceneReplaced();
     timer_.stop();
     turnStarted_.reset();
@@ -317,10 +384,11 @@ void Application::adoptBuild(const BuildOutcome& outcome) {
 
 void Application::serveCommands() {
     if (const auto outcome = host_.pollBuild()) adoptBuild(*outcome);
-    // Screenshots, the benchmark and quitting wait for the frame; run() takes them.
+    if (const std::optional<ChosenFile> chosen = fileChooser_.poll()) serveChosenFile(*chosen);
+    // Screenshots and the benchmark wait for the frame; run() takes them.
     std::vector<Command> later;
     for (Command command : state_.commands.take()) {
-        if (command == Command::Screenshot || command == Command::Benchmark || command == Command::Quit)
+        if (command == Command::Screenshot || command == Command::Benchmark)
             later.push_back(command);
         else
             serve(command);
@@ -377,16 +445,23 @@ void Application::serve(Command command) {
     case Command::StopTimer: timer_.stop(); break;
     case Command::SingleStep: host_.requestSingleStep(); break;
     case Command::FrameCamera: frameCamera(); break;
-    case Command::Undo: state_.statusLine = canvas_.undo(host_) ? "undone" : "nothing to undo"; break;
-    case Command::Redo: state_.statusLine = canvas_.redo(host_) ? "redone" : "nothing to redo"; break;
-    case Command::SaveState:
-        try {
-            saveState(state_.files.statePath, host_.scene(), state_.loaded.request);
-            state_.statusLine = "saved to " + state_.files.statePath;
-        } catch (const std::exception& error) {
-            state_.statusLine = error.what();
+    case Command::Undo:
+        if (canvas_.undo(host_)) {
+            ++state_.files.unsavedEdits;
+            state_.statusLine = "undone";
+        } else {
+            state_.statusLine = "nothing to undo";
         }
         break;
+    case Command::Redo:
+        if (canvas_.redo(host_)) {
+            ++state_.files.unsavedEdits;
+            state_.statusLine = "redone";
+        } else {
+            state_.statusLine = "nothing to redo";
+        }
+        break;
+    case Command::SaveState: saveStateFile(); break;
     case Command::LoadState: loadStateFile(state_.files.statePath); break;
     case Command::Export:
         try {
@@ -397,16 +472,79 @@ void Application::serve(Command command) {
         }
         break;
     case Command::LoadDraft: loadDraft(state_.painting.draftPath); break;
-    case Command::AddObstacle:
+    case Command::AddObstacle: {
+        const std::uint64_t layout = host_.layoutRevision();
         state_.statusLine = canvas_.addObstacle(host_, state_.painting.obstacleMin, state_.painting.obstacleMax);
+        if (host_.layoutRevision() != layout) ++state_.files.unsavedEdits;
         break;
+    }
     case Command::ClearObstacles:
         canvas_.clearObstacles(host_);
+        if (scene().kind() == sandcore::SceneKind::Canvas) ++state_.files.unsavedEdits;
         state_.statusLine = "obstacles removed";
         break;
+    case Command::Quit: askToQuit(); break;
+    case Command::QuitNow: quitRequested_ = true; break;
+    case Command::SaveAndQuit:
+        if (saveStateFile()) quitRequested_ = true;
+        else state_.files.confirmQuit = false; // the status line says why; the work stays open
+        break;
+    case Command::ChooseFile: {
+        const std::string problem = fileChooser_.open(state_.files.choosing, startPathFor(state_, state_.files.choosing));
+        if (!problem.empty()) state_.statusLine = problem;
+        break;
+    }
     case Command::Screenshot:
-    case Command::Benchmark:
-    case Command::Quit: break; // served by run() after the frame
+    case Command::Benchmark: break; // served by run() after the frame
+    }
+}
+
+bool Application::saveStateFile() {
+    try {
+        saveState(state_.files.statePath, host_.scene(), state_.loaded.request);
+        state_.files.unsavedEdits = 0;
+        state_.statusLine = "saved to " + state_.files.statePath;
+        return true;
+    } catch (const std::exception& error) {
+        state_.statusLine = error.what();
+        return false;
+    }
+}
+
+void Application::askToQuit() {
+    // U5: edits not yet saved are not thrown away without a question; Esc again cancels it.
+    if (state_.files.unsavedEdits == 0) {
+        quitRequested_ = true;
+        return;
+    }
+    state_.files.confirmQuit = !state_.files.confirmQuit;
+}
+
+void Application::serveChosenFile(const ChosenFile& chosen) {
+    if (chosen.path.empty()) return; // cancelled: nothing changes
+    switch (chosen.choice) {
+    case FileChoice::OpenState:
+        loadStateFile(chosen.path);
+        break;
+    case FileChoice::SaveState:
+        state_.files.statePath = chosen.path;
+        saveStateFile();
+        break;
+    case FileChoice::Export:
+        state_.files.exportPath = chosen.path;
+        serve(Command::Export);
+        break;
+    case FileChoice::Model:
+        state_.scene.request.modelPath = chosen.path;
+        state_.scene.request.shape.clear();
+        if (state_.scene.request.kind == sandcore::SceneKind::Canvas) state_.scene.request.kind = sandcore::SceneKind::Hourglass;
+        serve(Command::Rebuild);
+        break;
+    case FileChoice::Draft: loadDraft(chosen.path); break;
+    case FileChoice::ScreenshotFolder:
+        state_.files.screenshotFolder = chosen.path;
+        state_.statusLine = "screenshots go to " + chosen.path;
+        break;
     }
 }
 
@@ -423,6 +561,7 @@ bool Application::loadStateFile(const std::string& path) {
         turnStarted_.reset();
         camera_.setTurn(0.0f);
         frameCamera();
+        state_.files.unsavedEdits = 0;
         state_.statusLine = "opened " + path;
         return true;
     } catch (const std::exception& error) {
@@ -462,120 +601,9 @@ std::optional<CanvasColumn> Application::columnUnderCursor(double cursorX, doubl
 
 bool Application::handleCanvasPointer(const PointerSample& sample) {
     const bool changed = canvas_.handlePointer(host_, sample, canvasView(), state_.painting);
+    if (changed) ++state_.files.unsavedEdits;
     canvas_.publishUndoState(state_.painting);
     return changed;
-}
-
-void Application::updateTurnAnimation() {
-    if (!turnStarted_) return;
-    const double t = std::chrono::duration<double>(Clock::now() - *turnStarted_).count() / kTurnSeconds;
-    if (t >= 1.0) {
-        turnStarted_.reset();
-        camera_.setTurn(0.0f);
-        return;
-    }
-    const double eased = t * t * (3.0 - 2.0 * t); // starts and stops gently
-    camera_.setTurn(kPi * float(1.0 - eased));
-}
-
-void Application::updateTimer() {
-    if (const std::optional<double> rate = timer_.update(scene())) {
-        // The drain is measured: run at the rate that makes it last the duration.
-        state_.stepsPerSecond = *rate;
-        state_.simulationRunning = true;
-        state_.statusLine = "timer running";
-    }
-    TimerState& timer = state_.timer;
-    const HourglassTimer::Phase phase = timer_.phase();
-    timer.set = phase != HourglassTimer::Phase::Off;
-    timer.predicting = phase == HourglassTimer::Phase::Predicting;
-    const bool finishedNow = phase == HourglassTimer::Phase::Finished && !timer.finished;
-    timer.finished = phase == HourglassTimer::Phase::Finished;
-    timer.elapsedSeconds = timer.set ? timer_.elapsedSeconds(scene()) : 0.0;
-    timer.remainingSeconds = timer.set ? timer_.remainingSeconds(scene()) : 0.0;
-    if (finishedNow) {
-        state_.statusLine = "time is up";
-        std::printf("\atime is up\n"); // the terminal's bell, where there is one
-        std::fflush(stdout);
-    }
-}
-
-void Application::drawOverlays() {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    auto banner = [&](const char* id, const char* text, ImVec4 colour) {
-        ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, 20.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-        ImGui::PushStyleColor(ImGuiCol_WindowBg, colour);
-        ImGui::Begin(id, nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
-        ImGui::TextUnformatted(text);
-        ImGui::End();
-        ImGui::PopStyleColor();
-    };
-    if (host_.building()) {
-        // Progress while a scene is built in the background.
-        const double seconds = host_.buildSeconds();
-        char text[64];
-        std::snprintf(text, sizeof text, "building scene %c  %.1f s", "|/-\\"[int(seconds * 8.0) % 4], seconds);
-        banner("##building", text, ImVec4(0.1f, 0.1f, 0.1f, 0.85f));
-    } else if (state_.timer.finished) {
-        // The end of the timer, blinking so it is seen from across the room.
-        const bool on = int(ImGui::GetTime() * 2.0) % 2 == 0;
-        banner("##timeup", "  Time is up  ", on ? ImVec4(0.80f, 0.25f, 0.10f, 0.95f) : ImVec4(0.45f, 0.12f, 0.05f, 0.95f));
-    }
-    if (scene().kind() == sandcore::SceneKind::Canvas) drawBrushOutline();
-}
-
-void Application::drawBrushOutline() {
-    // A ring on the canvas surface around the column under the cursor, as wide as the brush.
-    // Hidden windows (render, tests) have no cursor to follow.
-    if (!options_.window.visible || ImGui::GetIO().WantCaptureMouse || host_.building()) return;
-    const std::optional<CanvasColumn> column = columnUnderCursor(lastCursorX_, lastCursorY_);
-    if (!column) return;
-    const CanvasView view = canvasView();
-    const CanvasSurface surface =
-        canvasSurface(scene(), state_.painting.pickAtTarget ? PaintTarget::Bottom : PaintTarget::Top, view.cellSize);
-    const float radius = (float(std::max(0, state_.painting.brushRadius)) + 0.5f) * surface.cellSize;
-    const float centreX = surface.originX + (float(column->x) + 0.5f) * surface.cellSize;
-    const float centreZ = surface.originZ + (float(column->z) + 0.5f) * surface.cellSize;
-    const glm::mat4 toClip = view.projection * view.view;
-    const float toWindowX = view.framebufferWidth > 0 ? float(view.windowWidth) / float(view.framebufferWidth) : 1.0f;
-    const float toWindowY = view.framebufferHeight > 0 ? float(view.windowHeight) / float(view.framebufferHeight) : 1.0f;
-    ImVec2 points[48];
-    int count = 0;
-    for (int i = 0; i < 48; ++i) {
-        const float angle = 2.0f * kPi * float(i) / 48.0f;
-        const glm::vec4 clip = toClip * glm::vec4(centreX + radius * std::cos(angle), surface.y,
-                                                  centreZ + radius * std::sin(angle), 1.0f);
-        if (clip.w <= 0.0f) return;
-        // ImGui draws in window units; the framebuffer may have more pixels (HiDPI).
-        points[count++] = ImVec2((clip.x / clip.w * 0.5f + 0.5f) * float(view.framebufferWidth) * toWindowX,
-                                 (0.5f - clip.y / clip.w * 0.5f) * float(view.framebufferHeight) * toWindowY);
-    }
-    const ImU32 colour = state_.painting.erase ? IM_COL32(220, 60, 40, 230) : IM_COL32(40, 40, 40, 230);
-    ImGui::GetForegroundDrawList()->AddPolyline(points, count, colour, ImDrawFlags_Closed, 2.0f);
-}
-
-void Application::updateStatistics(double elapsedSeconds) {
-    FrameStatistics& stats = state_.stats;
-    const float milliseconds = float(elapsedSeconds * 1000.0);
-    stats.frameMilliseconds[std::size_t(stats.historyNext)] = milliseconds;
-    stats.historyNext = (stats.historyNext + 1) % FrameStatistics::kHistory;
-    if (milliseconds > 0.0f) {
-        stats.millisecondsPerFrame =
-            stats.millisecondsPerFrame == 0.0f ? milliseconds : 0.9f * stats.millisecondsPerFrame + 0.1f * milliseconds;
-        stats.framesPerSecond = 1000.0f / stats.millisecondsPerFrame;
-    }
-    stats.stepsPerSecond = float(host_.stepsPerSecond());
-    stats.millisecondsPerStep = float(host_.millisecondsPerStep());
-    stats.rateCapped = host_.rateCapped();
-    stats.maxStepsPerFrame = SceneHost::kMaxStepsPerFrame;
-    const sandcore::SceneCounters& counters = scene().counters();
-    stats.grains = scene().grainCount();
-    stats.grainsUpper = counters.grainsUpper;
-    stats.grainsLower = counters.grainsLower;
-    stats.movingGrains = counters.movesLastStep;
-    stats.stepsDone = counters.stepsDone;
-    stats.innerGrains = renderer_.stats().innerGrains;
-    stats.subGrainsDrawn = renderer_.stats().subGrainsDrawn;
 }
 
 RgbImage Application::captureFrame() const {
@@ -601,10 +629,35 @@ bool Application::saveScreenshot(const std::filesystem::path& file) {
     }
 }
 
+void Application::saveNumberedScreenshot(const RgbImage& image) {
+    // E4: the first free sandglass-N.png in the chosen folder; an earlier file is never replaced.
+    try {
+        const std::filesystem::path file = writeNewNumberedFile(state_.files.screenshotFolder, "sandglass", ".png",
+                                                                encodePng(image), screenshotsTaken_ + 1);
+        const std::string number = file.stem().string().substr(std::string("sandglass-").size());
+        screenshotsTaken_ = std::stoi(number);
+        std::error_code error;
+        const std::filesystem::path shown = std::filesystem::absolute(file, error);
+        state_.files.lastScreenshot = (error ? file : shown).string();
+        state_.statusLine = "screenshot saved to " + state_.files.lastScreenshot;
+        std::printf("screenshot %s\n", state_.files.lastScreenshot.c_str());
+        std::fflush(stdout);
+    } catch (const std::exception& error) {
+        state_.statusLine = error.what();
+        std::fprintf(stderr, "sandglass: %s\n", error.what());
+    }
+}
+
 void Application::runInteractiveBenchmark() {
     state_.statusLine = "benchmark running...";
     try {
         const BenchmarkReport report = runFrameBenchmark(*this, thesisBenchmarkCases(), BenchmarkTiming{});
+        if (report.cancelled) {
+            state_.statusLine = "benchmark cancelled";
+            std::printf("%s\n", state_.statusLine.c_str());
+            std::fflush(stdout);
+            return;
+        }
         writeBenchmarkFiles(options_.benchmarkFolder, {report}, "key B in the window");
         state_.statusLine = "benchmark written to " + (options_.benchmarkFolder / "benchmark.txt").string();
         std::printf("%s\n", state_.statusLine.c_str());

@@ -9,7 +9,7 @@
 namespace sandglass {
 
 BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkCase>& cases,
-                                  const BenchmarkTiming& timing) {
+                                  const BenchmarkTiming& timing, const std::function<void()>& afterEachFrame) {
     using Clock = std::chrono::steady_clock;
     const SceneSettings& loaded = app.host().loaded();
     BenchmarkReport report;
@@ -35,8 +35,17 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         cpuMilliseconds += threadCpuMilliseconds() - cpuStart;
         uploadBytes += double(app.renderer().stats().uploadBytes);
         uploadMilliseconds += app.renderer().stats().uploadMilliseconds;
+        if (afterEachFrame) afterEachFrame();
     };
+    // The window shows which row runs and that Esc stops it (the key callback sets the request).
+    Application::BenchmarkProgress& progress = app.benchmarkProgress();
+    progress = {true, false, 0, int(cases.size())};
+    struct EndProgress { // also when building the scene or a frame throws
+        Application::BenchmarkProgress& progress;
+        ~EndProgress() { progress = {}; }
+    } endProgress{progress};
     for (const BenchmarkCase& setup : cases) {
+        if (progress.cancelRequested) break;
         render.mode = setup.mode;
         render.grainsPerCell = setup.grainsPerCell;
         render.lighting = setup.lighting;
@@ -51,11 +60,13 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         cpuMilliseconds = uploadBytes = uploadMilliseconds = 0.0;
         const auto start = Clock::now();
         double elapsed = 0.0;
-        while (row.frames < timing.minFrames || (row.frames < timing.maxFrames && elapsed < timing.maxSeconds)) {
+        while (!progress.cancelRequested &&
+               (row.frames < timing.minFrames || (row.frames < timing.maxFrames && elapsed < timing.maxSeconds))) {
             frame();
             ++row.frames;
             elapsed = std::chrono::duration<double>(Clock::now() - start).count();
         }
+        if (progress.cancelRequested) break; // a row cut short is no measurement
         row.seconds = elapsed;
         row.filledCells = host.scene().grainCount();
         const SceneHost::StepTally tally = host.takeStepTally();
@@ -70,7 +81,9 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
                     setup.innerGrains ? "yes" : "no", row.framesPerSecond(), row.uploadBytesPerFrame,
                     row.cpuMillisecondsPerFrame);
         std::fflush(stdout);
+        ++progress.rowsDone;
     }
+    report.cancelled = progress.cancelRequested;
     glfwSwapInterval(app.options().window.vsync ? 1 : 0);
     return report;
 }

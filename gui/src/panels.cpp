@@ -1,5 +1,7 @@
 #include "gui/panels.hpp"
 
+#include "gui/model_shape_panel.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -10,35 +12,143 @@
 
 namespace sandglass {
 
+namespace {
+
+// The panel's tabs; each fits a 1280x800 window with all of its parts open.
+struct PanelTab {
+    const char* label;
+    const char* name; // as AppState::openTab names it (gui --panel)
+};
+constexpr PanelTab kRunTab{"Run", "run"}, kViewTab{"View", "view"}, kSceneTab{"Scene", "scene"},
+    kPaintTab{"Paint", "paint"}, kFileTab{"File", "file"};
+
+ImGuiTabItemFlags tabFlags(AppState& state, const PanelTab& tab) {
+    // A tab asked for (command line, or the canvas just loaded) is selected once.
+    if (state.openTab != tab.name) return 0;
+    state.openTab.clear();
+    return ImGuiTabItemFlags_SetSelected;
+}
+
+} // namespace
+
+void hint(const char* text) {
+    // A hint in the lighter grey, wrapped so the narrow panel shows all of it.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
+
+int openWhereRoomy() {
+    // The folded parts start open where a tab has room for them (1280x800 at 100% text), and
+    // folded on small windows.
+    return ImGui::GetIO().DisplaySize.y >= 50.0f * ImGui::GetFontSize() ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+}
+
+float panelWidth(float displayWidth, float fontSize) {
+    // 25 text heights where there is room; down to 18 on small windows so the scene keeps most
+    // of the width; never wider than the window.
+    const float preferred = std::clamp(0.36f * displayWidth, 18.0f * fontSize, 25.0f * fontSize);
+    return std::max(1.0f, std::min(preferred, displayWidth));
+}
+
+WindowPlacement placeOnScreen(const WindowPlacement& chosen, float width, float height, float displayWidth,
+                              float displayHeight) {
+    // The position the user chose, kept as chosen; shown clamped so the title bar stays on screen
+    // however small the window became, and back in place when it grows again.
+    return {std::clamp(chosen.x, 0.0f, std::max(0.0f, displayWidth - width)),
+            std::clamp(chosen.y, 0.0f, std::max(0.0f, displayHeight - height))};
+}
+
+namespace {
+
+void rememberPlacement(WindowPlacement& placement, ImVec2 shownAt) {
+    // Moved by the user (dragged): that is the new place; otherwise the clamp shows it and the
+    // chosen place stays.
+    const ImVec2 now = ImGui::GetWindowPos();
+    if (std::abs(now.x - shownAt.x) > 0.5f || std::abs(now.y - shownAt.y) > 0.5f) {
+        placement.x = now.x;
+        placement.y = now.y;
+    }
+}
+
+} // namespace
+
 void drawPanels(AppState& state) {
-    const float scale = ImGui::GetFontSize() / 13.0f; // HiDPI: the font was loaded at content scale
-    ImGui::SetNextWindowPos(ImVec2(10.0f * scale, 10.0f * scale), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(330.0f * scale, 0.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.88f);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float em = ImGui::GetFontSize();
+    const float margin = std::round(0.6f * em);
+    if (state.panelPlacement.x < 0.0f) state.panelPlacement = {margin, margin};
+    const float width = panelWidth(display.x - 2.0f * margin, em);
+    // The height follows the content, never more than the window: a scrollbar only when the
+    // window is smaller than any layout can fit.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, std::max(em * 4.0f, display.y - 2.0f * margin)));
+    const WindowPlacement place = placeOnScreen(state.panelPlacement, state.panelSize.x > 0.0f ? state.panelSize.x : width,
+                                                state.panelSize.y, display.x, display.y);
+    const ImVec2 shownAt(place.x, place.y);
+    ImGui::SetNextWindowPos(shownAt, ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.9f);
     const bool open = ImGui::Begin("sandglass", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    rememberPlacement(state.panelPlacement, shownAt);
+    state.panelSize = {ImGui::GetWindowSize().x, ImGui::GetWindowSize().y};
     // The application centres the scene in the rest of the window.
-    const float displayWidth = ImGui::GetIO().DisplaySize.x;
-    state.panelCoverage = open && displayWidth > 0.0f
-                              ? std::clamp((ImGui::GetWindowPos().x + ImGui::GetWindowSize().x) / displayWidth, 0.0f, 0.6f)
+    state.panelCoverage = open && display.x > 0.0f
+                              ? std::clamp((ImGui::GetWindowPos().x + ImGui::GetWindowSize().x) / display.x, 0.0f, 0.6f)
                               : 0.0f;
     if (open) {
-        if (ImGui::CollapsingHeader("Control", ImGuiTreeNodeFlags_DefaultOpen)) drawControlSection(state);
-        if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) drawDisplaySection(state);
-        if (ImGui::CollapsingHeader("Scene")) drawSceneSection(state);
-        // The scene shown now decides, not the one chosen for the next rebuild.
-        if (state.loaded.request.kind == sandcore::SceneKind::Canvas &&
-            ImGui::CollapsingHeader("Painting", ImGuiTreeNodeFlags_DefaultOpen))
-            drawPaintingSection(state);
-        if (ImGui::CollapsingHeader("File")) drawFileSection(state);
-        if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) drawStatisticsSection(state);
+        // Labels sit right of their controls; leave them room in the narrow layout.
+        ImGui::PushItemWidth(-std::min(9.0f * em, 0.42f * width));
+        if (ImGui::Button("Help (F1)")) state.showHelp = !state.showHelp;
+        ImGui::SameLine();
+        ImGui::TextWrapped("%s", sceneSummary(state.loaded.request).c_str());
+        const bool canvas = state.loaded.request.kind == sandcore::SceneKind::Canvas;
+        // The canvas opens on its painting tools once per load.
+        ImGuiStorage& storage = *ImGui::GetStateStorage();
+        const ImGuiID shownKind = ImGui::GetID("##shown scene kind");
+        if (storage.GetInt(shownKind, -1) != int(state.loaded.request.kind)) {
+            storage.SetInt(shownKind, int(state.loaded.request.kind));
+            if (canvas && state.openTab.empty()) state.openTab = kPaintTab.name;
+        }
+        if (ImGui::BeginTabBar("sections")) {
+            if (ImGui::BeginTabItem(kRunTab.label, nullptr, tabFlags(state, kRunTab))) {
+                drawControlSection(state);
+                ImGui::Separator();
+                drawStatisticsSection(state);
+                ImGui::EndTabItem();
+            }
+            if (canvas && ImGui::BeginTabItem(kPaintTab.label, nullptr, tabFlags(state, kPaintTab))) {
+                drawPaintingSection(state);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem(kViewTab.label, nullptr, tabFlags(state, kViewTab))) {
+                drawDisplaySection(state);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem(kSceneTab.label, nullptr, tabFlags(state, kSceneTab))) {
+                drawSceneSection(state);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem(kFileTab.label, nullptr, tabFlags(state, kFileTab))) {
+                drawFileSection(state);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
         if (!state.statusLine.empty()) {
             ImGui::Separator();
-            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 22.0f);
-            ImGui::TextUnformatted(state.statusLine.c_str());
-            ImGui::PopTextWrapPos();
+            ImGui::TextWrapped("%s", state.statusLine.c_str());
         }
+        ImGui::PopItemWidth();
     }
     ImGui::End();
+}
+
+std::string sceneSummary(const SceneRequest& loaded) {
+    if (loaded.kind == sandcore::SceneKind::Canvas)
+        return "canvas, resolution " + std::to_string(loaded.resolution);
+    const std::string source = !loaded.modelPath.empty() ? std::filesystem::path(loaded.modelPath).filename().string()
+                               : !loaded.shape.empty()   ? loaded.shape + " (built-in shape)"
+                                                         : "built-in shape";
+    return std::string(sceneKindName(loaded.kind)) + ": " + source + ", resolution " + std::to_string(loaded.resolution);
 }
 
 void drawTimer(AppState& state) {
@@ -95,6 +205,9 @@ void drawControlSection(AppState& state) {
                            state.stats.maxStepsPerFrame);
     if (state.loaded.request.kind == sandcore::SceneKind::Hourglass) {
         if (ImGui::Button("Turn over (T)")) state.commands.push(Command::Flip);
+        // The timer on a line of its own, so it fits the narrow panel too.
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextUnformatted("timer");
         ImGui::SameLine();
         drawTimer(state);
     }
@@ -106,6 +219,7 @@ void drawControlSection(AppState& state) {
 void drawDisplaySection(AppState& state) {
     RenderSettings& render = state.render;
     // Thesis "+"/"-": more or fewer grains drawn per cell.
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("grains per cell");
     ImGui::SameLine();
     if (ImGui::Button(" - ") && render.grainsPerCell > 1) --render.grainsPerCell;
@@ -119,6 +233,7 @@ void drawDisplaySection(AppState& state) {
                             renderModeLabel(kRenderModes[2]), renderModeLabel(kRenderModes[3])};
     if (ImGui::Combo("mode", &mode, labels, 4)) render.mode = kRenderModes[mode];
     int background = render.blackBackground ? 1 : 0;
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("background");
     ImGui::SameLine();
     ImGui::RadioButton("white", &background, 0);
@@ -130,6 +245,8 @@ void drawDisplaySection(AppState& state) {
     ImGui::Checkbox("inner grains", &render.innerGrains);
     ImGui::SameLine();
     ImGui::Checkbox("glass", &render.hull);
+    ImGui::SameLine();
+    ImGui::Checkbox("voxel hull", &render.voxelHull); // S10: the model's cells, not its triangles
     if (render.lighting) {
         int method = int(render.normals);
         const char* methods[] = {"column heights (thesis)", "occupancy gradient"};
@@ -140,17 +257,28 @@ void drawDisplaySection(AppState& state) {
     else
         ImGui::SliderFloat("grain size (cells)", &render.quadSize, 0.2f, 2.0f, "%.2f");
     ImGui::SliderFloat("jitter", &render.jitter, 0.0f, 1.0f, "%.2f");
+    drawPaletteChoice(state);
+
+    // SPEC U2: larger text and controls, on top of the monitor's own scale.
+    constexpr float sizes[] = {0.85f, 1.0f, 1.15f, 1.3f, 1.5f, 2.0f};
+    char current[16];
+    std::snprintf(current, sizeof current, "%.0f%%", double(state.uiScale) * 100.0);
+    if (ImGui::BeginCombo("text size", current)) {
+        for (float size : sizes) {
+            char label[16];
+            std::snprintf(label, sizeof label, "%.0f%%", double(size) * 100.0);
+            if (ImGui::Selectable(label, std::abs(size - state.uiScale) < 0.01f)) state.uiScale = size;
+        }
+        ImGui::EndCombo();
+    }
 }
 
 void drawSceneSection(AppState& state) {
     SceneSettings& scene = state.scene;
     // What runs now, whatever the controls below are set to.
     const SceneRequest& loaded = state.loaded.request;
-    const std::string source = !loaded.modelPath.empty() ? std::filesystem::path(loaded.modelPath).filename().string()
-                               : !loaded.shape.empty()   ? loaded.shape + " (procedural)"
-                                                         : "procedural";
-    ImGui::Text("loaded: %s %s, resolution %d", sceneKindName(loaded.kind),
-                loaded.kind == sandcore::SceneKind::Canvas ? "" : source.c_str(), loaded.resolution);
+    if (state.building)
+        ImGui::TextWrapped("building... (%s runs until it is done)", sceneSummary(loaded).c_str());
     int kind = int(scene.request.kind);
     const char* kinds[] = {"hourglass", "sculpture", "canvas"};
     if (ImGui::Combo("scene", &kind, kinds, 3)) {
@@ -166,7 +294,7 @@ void drawSceneSection(AppState& state) {
             !scene.request.shape.empty() ? scene.request.shape : hourglass ? "hourglass" : "sphere";
         // A model file and a procedural shape exclude each other; the combo says which is chosen.
         const std::string shown = scene.request.modelPath.empty() ? current : "(a model file, below)";
-        if (ImGui::BeginCombo("shape", shown.c_str())) {
+        if (ImGui::BeginCombo("built-in shape", shown.c_str())) {
             for (const char* shape : shapes)
                 if (ImGui::Selectable(shape, scene.request.modelPath.empty() && current == shape)) {
                     scene.request.shape = shape;
@@ -176,12 +304,14 @@ void drawSceneSection(AppState& state) {
             ImGui::EndCombo();
         }
         if (ImGui::BeginListBox("models/", ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * 4.0f))) {
-            for (const std::string& file : state.modelFiles)
-                if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(),
-                                      scene.request.modelPath == file)) {
+            for (const std::string& file : state.modelFiles) {
+                const bool isLoaded = loaded.kind == scene.request.kind && loaded.modelPath == file;
+                if (ImGui::Selectable(std::filesystem::path(file).filename().string().c_str(), isLoaded)) {
                     scene.request.modelPath = file;
                     state.commands.push(Command::Rebuild);
                 }
+                if (isLoaded && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY(); // the loaded model in view
+            }
             if (state.modelFiles.empty()) ImGui::TextDisabled("(no model files)");
             ImGui::EndListBox();
         }
@@ -191,7 +321,12 @@ void drawSceneSection(AppState& state) {
             scene.request.modelPath = path;
             state.commands.push(Command::Rebuild);
         }
-        ImGui::TextDisabled("or drop a model file on the window");
+        if (ImGui::Button("Open model...")) {
+            state.files.choosing = FileChoice::Model;
+            state.commands.push(Command::ChooseFile);
+        }
+        ImGui::SameLine();
+        hint("Enter loads a typed path; or drop a model file on the window");
         drawModelOptions(state);
     }
     // The slider spans the useful resolutions; the command line takes the whole range.
@@ -221,7 +356,7 @@ void drawSceneSection(AppState& state) {
 
 void drawModelOptions(AppState& state) {
     // S2, S3, S5: how a model file becomes cells; every change builds the scene again.
-    if (!ImGui::TreeNode("model options")) return;
+    if (!ImGui::TreeNodeEx("model options", openWhereRoomy())) return;
     SceneRequest& request = state.scene.request;
     ImGui::BeginDisabled(request.modelPath.empty()); // procedural shapes are solid already
     if (ImGui::Checkbox("robust inside test (open meshes)", &request.robust)) state.commands.push(Command::Rebuild);
@@ -233,6 +368,7 @@ void drawModelOptions(AppState& state) {
     ImGui::BeginDisabled(request.kind != sandcore::SceneKind::Hourglass);
     if (ImGui::Checkbox("carve the upper bulb to drain", &request.drainCompletely)) state.commands.push(Command::Rebuild);
     ImGui::EndDisabled();
+    drawModelShapeOptions(state);
     ImGui::TreePop();
 }
 
@@ -256,7 +392,7 @@ void drawPaintingSection(AppState& state) {
     ImGui::SameLine();
     ImGui::RadioButton("thin", &thin, 1);
     painting.thinLines = thin == 1;
-    ImGui::SliderInt("brush radius (cells)", &painting.brushRadius, 0, 8);
+    ImGui::SliderInt("brush radius", &painting.brushRadius, 0, 8);
 
     // P6: the colour of new grains.
     ImGui::Checkbox("default sand", &painting.defaultSandColor);
@@ -273,7 +409,7 @@ void drawPaintingSection(AppState& state) {
     ImGui::BeginDisabled(painting.loadedDraft.empty());
     ImGui::Checkbox("draft image", &painting.showDraft);
     ImGui::EndDisabled();
-    if (ImGui::TreeNode("choose draft")) {
+    if (ImGui::TreeNodeEx("choose draft", openWhereRoomy())) {
         const std::string shown =
             painting.loadedDraft.empty() ? "(none)" : std::filesystem::path(painting.loadedDraft).filename().string();
         if (ImGui::BeginCombo("draft", shown.c_str())) {
@@ -291,7 +427,12 @@ void drawPaintingSection(AppState& state) {
             painting.draftPath = path;
             state.commands.push(Command::LoadDraft);
         }
-        ImGui::TextDisabled("or drop a PNG or JPEG on the window");
+        if (ImGui::Button("Open draft...")) {
+            state.files.choosing = FileChoice::Draft;
+            state.commands.push(Command::ChooseFile);
+        }
+        ImGui::SameLine();
+        hint("or drop a PNG or JPEG on the window");
         ImGui::TreePop();
     }
 
@@ -307,8 +448,16 @@ void drawPaintingSection(AppState& state) {
     ImGui::Text("%zu kept (%.1f MiB compressed)", painting.undoSteps, double(painting.undoBytes) / double(1 << 20));
 
     // SPEC G2 / R11: a box of INVALID cells in the lower grid; sand piles on it.
-    if (ImGui::TreeNode("obstacles")) {
-        ImGui::TextDisabled("box in lower-grid cells, max exclusive");
+    if (ImGui::TreeNodeEx("obstacles", openWhereRoomy())) {
+        ObstacleDrag& drag = state.obstacleDrag;
+        if (!drag.armed && !drag.dragging) {
+            if (ImGui::Button("Place with the mouse")) drag.armed = true;
+        } else {
+            if (ImGui::Button("Cancel placing")) drag = {};
+            ImGui::SameLine();
+            ImGui::TextWrapped("drag a box on the canvas floor");
+        }
+        hint("or type it, in lower-grid cells (max exclusive; y: height)");
         ImGui::InputInt3("min x y z", painting.obstacleMin.data());
         ImGui::InputInt3("max x y z", painting.obstacleMax.data());
         if (ImGui::Button("Add obstacle")) state.commands.push(Command::AddObstacle);
@@ -319,32 +468,57 @@ void drawPaintingSection(AppState& state) {
 }
 
 void drawFileSection(AppState& state) {
-    // SPEC E1, E2: typed paths (a path dropped on the window still loads drafts and models).
+    // SPEC E1, E2, E4: typed paths, each with the desktop's file dialog beside it (a file
+    // dropped on the window still opens: .sand states, drafts on the canvas, models).
     FileSettings& files = state.files;
+    auto browse = [&](const char* id, FileChoice choice, bool sameLine = true) {
+        if (sameLine) ImGui::SameLine();
+        if (ImGui::Button(id)) {
+            files.choosing = choice;
+            state.commands.push(Command::ChooseFile);
+        }
+    };
     char path[512] = {};
     files.statePath.copy(path, sizeof path - 1);
     if (ImGui::InputText("state file", path, sizeof path)) files.statePath = path;
     if (ImGui::Button("Save (Ctrl+S)")) state.commands.push(Command::SaveState);
+    browse("Save as...", FileChoice::SaveState);
     ImGui::SameLine();
     if (ImGui::Button("Open (Ctrl+O)")) state.commands.push(Command::LoadState);
+    browse("Open...", FileChoice::OpenState);
+    if (files.unsavedEdits > 0) ImGui::TextUnformatted("unsaved changes");
     char exportPath[512] = {};
     files.exportPath.copy(exportPath, sizeof exportPath - 1);
     if (ImGui::InputText("export file", exportPath, sizeof exportPath)) files.exportPath = exportPath;
     if (ImGui::Button("Export")) state.commands.push(Command::Export);
-    ImGui::TextDisabled(".ply points, .vox voxels, .obj .stl .glb surface");
+    browse("Export as...", FileChoice::Export);
+    ImGui::TextUnformatted(".ply points, .vox voxels, .obj .stl .glb surface");
+    char folder[512] = {};
+    files.screenshotFolder.copy(folder, sizeof folder - 1);
+    if (ImGui::InputText("screenshots", folder, sizeof folder)) files.screenshotFolder = folder;
+    browse("Folder...", FileChoice::ScreenshotFolder, false);
+    ImGui::SameLine();
+    ImGui::Checkbox("with the panels", &files.screenshotWithPanel);
+    if (!files.lastScreenshot.empty()) ImGui::TextWrapped("last screenshot: %s", files.lastScreenshot.c_str());
 }
 
 void drawStatisticsSection(AppState& state) {
     const FrameStatistics& stats = state.stats;
     ImGui::Text("%.1f fps   %.2f ms per frame", stats.framesPerSecond, stats.millisecondsPerFrame);
     // The ring buffer starts at the oldest frame, so the plot scrolls left.
+    // The label above the plot, never over the curve.
+    // The scale grows in steps of 50 ms so slow frames stay on the plot and the caption stays still.
+    const float slowest = *std::max_element(stats.frameMilliseconds.begin(), stats.frameMilliseconds.end());
+    const float top = 50.0f * std::ceil(std::max(slowest, 1.0f) / 50.0f);
+    ImGui::TextDisabled("frame time (0 to %.0f ms)", double(top));
     ImGui::PlotLines("##frametimes", stats.frameMilliseconds.data(), FrameStatistics::kHistory, stats.historyNext,
-                     "frame time (ms)", 0.0f, 50.0f, ImVec2(0.0f, 3.5f * ImGui::GetFontSize()));
+                     nullptr, 0.0f, top,
+                     ImVec2(ImGui::GetWindowWidth() - 2.0f * ImGui::GetStyle().WindowPadding.x, 3.0f * ImGui::GetFontSize()));
     ImGui::Text("grains %lld (upper %lld, lower %lld)", (long long)stats.grains, (long long)stats.grainsUpper,
                 (long long)stats.grainsLower);
     ImGui::Text("moving %lld   inner %lld", (long long)stats.movingGrains, (long long)stats.innerGrains);
-    ImGui::Text("steps %llu   %.1f steps/s   %.3f ms per step", (unsigned long long)stats.stepsDone,
-                stats.stepsPerSecond, stats.millisecondsPerStep);
+    ImGui::Text("steps %llu   %.1f steps/s", (unsigned long long)stats.stepsDone, stats.stepsPerSecond);
+    ImGui::Text("%.3f ms per step", stats.millisecondsPerStep);
     ImGui::Text("drawn %lld %s", (long long)stats.subGrainsDrawn,
                 state.render.mode == RenderMode::Points || state.render.mode == RenderMode::Sprites ? "points"
                                                                                                      : "quads");

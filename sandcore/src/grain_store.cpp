@@ -13,6 +13,17 @@ void GrainStore::clear() {
     fallFraction.clear();
 }
 
+void GrainStore::reserve(std::uint32_t count) {
+    level.reserve(count);
+    cell.reserve(count);
+    cameFrom.reserve(count);
+    movedAtStep.reserve(count);
+    identity.reserve(count);
+    color.reserve(count);
+    fallSpeed.reserve(count);
+    fallFraction.reserve(count);
+}
+
 std::uint32_t GrainStore::add(GridLevel where, std::uint32_t cellIndex, std::uint32_t grainIdentity,
                               std::uint32_t rgba) {
     level.push_back(where);

@@ -5,32 +5,56 @@
 #include "sandcore/worker_pool.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 
 namespace sandcore {
 
 namespace {
 // Below this many awake rows in a layer, handing strips to other threads costs more than it saves.
 constexpr int kMinAwakeRowsForThreads = 24;
+
+// The 8 slip successors of a cell away from the grid's sides, as bits 0..7 of a mask, in
+// LayerNeighbourhood::forEachAround's order (dz outside, dx inside): the k-th empty one is the
+// k-th set bit, exactly as chooseMove picks it.
+constexpr int kSlipDx[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
+constexpr int kSlipDz[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+
+// kSetBits[mask]: number of set bits of an 8-bit mask (a table: std::popcount is a library call
+// on CPUs the build does not assume to have POPCNT).
+constexpr auto kSetBits = [] {
+    std::array<std::uint8_t, 256> table{};
+    for (int mask = 0; mask < 256; ++mask) table[std::size_t(mask)] = std::uint8_t(std::popcount(unsigned(mask)));
+    return table;
+}();
+
+// kNthSetBit[mask][k]: position of the k-th set bit of mask (k < popcount(mask)).
+constexpr auto kNthSetBit = [] {
+    std::array<std::array<std::uint8_t, 8>, 256> table{};
+    for (int mask = 0; mask < 256; ++mask) {
+        int k = 0;
+        for (int bit = 0; bit < 8; ++bit)
+            if (mask >> bit & 1) table[std::size_t(mask)][std::size_t(k++)] = std::uint8_t(bit);
+    }
+    return table;
+}();
 } // namespace
 
 GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
     : size_(gridSize), bottomIsOutlet_(bottomIsOutlet), rowWords_((gridSize.x + 63) / 64) {
     const std::size_t rows = std::size_t(gridSize.y) * std::size_t(gridSize.z);
     words_.assign(rows * std::size_t(rowWords_), 0);
+    occupied_.assign(rows * std::size_t(rowWords_), 0);
     rowAwake_.assign(rows, 0);
-    movedByStrip_.resize(std::size_t((gridSize.z + kStripRows - 1) / kStripRows));
-}
-
-void GridSweep::takeMovedGrains(std::vector<std::uint32_t>& out) {
-    for (std::vector<std::uint32_t>& strip : movedByStrip_) {
-        out.insert(out.end(), strip.begin(), strip.end());
-        strip.clear();
-    }
+    logs_.resize(std::size_t((gridSize.z + kStripRows - 1) / kStripRows));
 }
 
 void GridSweep::wakeAt(int x, int y, int z) {
     const std::size_t row = std::size_t(y) * std::size_t(size_.z) + std::size_t(z);
-    words_[row * std::size_t(rowWords_) + std::size_t(x >> 6)] |= std::uint64_t{1} << (x & 63);
+    const std::size_t word = row * std::size_t(rowWords_) + std::size_t(x >> 6);
+    const std::uint64_t bit = std::uint64_t{1} << (x & 63);
+    words_[word] |= bit;
+    occupied_[word] |= bit; // every grain that enters a cell is woken there
     rowAwake_[row] = 1;
 }
 
@@ -41,20 +65,28 @@ void GridSweep::wake(std::uint32_t cell) {
     wakeAt(int(x), y, int(rest % std::uint32_t(size_.z)));
 }
 
-// Sets the awake bits x0..x1 (at most 63 apart) of one row with one or two word operations.
-void GridSweep::wakeSpan(std::size_t row, int x0, int x1) {
+// Sets the awake bits x0..x1 (at most 63 apart) of one row that may hold a grain, with one or
+// two word operations. EMPTY and INVALID cells stay asleep: that is exact, as in
+// wakeGrainsAround, since a grain that enters one of them later is woken by its move.
+inline void GridSweep::wakeSpan(std::size_t row, int x0, int x1) {
     std::uint64_t* words = words_.data() + row * std::size_t(rowWords_);
+    const std::uint64_t* occupied = occupied_.data() + row * std::size_t(rowWords_);
     const int first = x0 >> 6, last = x1 >> 6;
+    std::uint64_t woken;
     if (first == last) {
-        words[first] |= ((std::uint64_t{2} << (x1 - x0)) - 1) << (x0 & 63);
+        woken = (((std::uint64_t{2} << (x1 - x0)) - 1) << (x0 & 63)) & occupied[first];
+        words[first] |= woken;
     } else {
-        words[first] |= ~std::uint64_t{0} << (x0 & 63);
-        words[last] |= (std::uint64_t{2} << (x1 & 63)) - 1;
+        const std::uint64_t low = (~std::uint64_t{0} << (x0 & 63)) & occupied[first];
+        const std::uint64_t high = ((std::uint64_t{2} << (x1 & 63)) - 1) & occupied[last];
+        words[first] |= low;
+        words[last] |= high;
+        woken = low | high;
     }
-    rowAwake_[row] = 1;
+    if (woken) rowAwake_[row] = 1;
 }
 
-void GridSweep::wakePredecessorsOf(int x, int y, int z) {
+inline void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     const Int3 size = size_;
     if (y + 1 >= size.y) return;
     const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, size.x - 1);
@@ -127,6 +159,33 @@ void GridSweep::applyDeferredWakes() {
     deferredWakesAbove_.clear();
 }
 
+void GridSweep::writeLoggedMoves(GrainStore& grains, std::uint64_t step, int part, int parts) const {
+    if (granular_ || !recordsDeferred_) return; // written as they moved
+    const auto write = [&](auto partOf) {
+        for (const StripLog& log : logs_)
+            for (const LoggedMove& m : log.deferred) {
+                if (partOf(m.grain >> kGrainsPerPartBits) != std::uint32_t(part)) continue;
+                grains.cell[m.grain] = m.to;
+                grains.cameFrom[m.grain] = m.cameFrom;
+                grains.movedAtStep[m.grain] = step;
+            }
+    };
+    const auto count = std::uint32_t(parts);
+    if ((count & (count - 1)) == 0) // a power of two (1, 2, 4 threads): no division per move
+        write([mask = count - 1](std::uint32_t block) { return block & mask; });
+    else
+        write([count](std::uint32_t block) { return block % count; });
+}
+
+void GridSweep::takeLoggedMoves(std::vector<std::uint32_t>& moved) {
+    for (StripLog& log : logs_) {
+        for (const LoggedMove& m : log.deferred) moved.push_back(m.grain);
+        moved.insert(moved.end(), log.moved.begin(), log.moved.end());
+        log.deferred.clear();
+        log.moved.clear();
+    }
+}
+
 std::int64_t GridSweep::awakeRowCount() const { return std::count(rowAwake_.begin(), rowAwake_.end(), std::uint8_t{1}); }
 
 void GridSweep::wakeEveryGrain(const CellGrid& grid) {
@@ -137,6 +196,11 @@ void GridSweep::wakeEveryGrain(const CellGrid& grid) {
 
 void GridSweep::clear() {
     std::fill(words_.begin(), words_.end(), 0);
+    std::fill(occupied_.begin(), occupied_.end(), 0);
+    for (StripLog& log : logs_) {
+        log.deferred.clear();
+        log.moved.clear();
+    }
     std::fill(rowAwake_.begin(), rowAwake_.end(), 0);
 }
 
@@ -159,30 +223,67 @@ int GridSweep::awakeRowsInLayer(int y) const {
 // The hot path: `inline` keeps it inside the strip loop, which the compiler otherwise declines
 // at -O3 (a call per visited cell costs about a tenth of a step). The thesis's rules only: the
 // granular ones go through visitGranular, chosen once per sweep, so classic pays no test per grain.
-inline bool GridSweep::visitCell(const SweepContext& context, int x, int y, int z) {
-    CellGrid& grid = context.grid;
-    const std::uint32_t from = grid.index(x, y, z);
-    const CellValue grain = grid[from];
-    if (grain < 0) return false;
-    const CellNeighbourhood here(grid, x, y, z);
-    const auto target = chooseMove(here, [&] { return counterRandom(context.seed, context.step, std::uint64_t(context.level), from); });
-    if (!target) return false; // cannot move: it sleeps until a cell below it empties
+// Away from the grid's sides the 8 successors are read with no bounds tests and the slip is
+// picked from a mask of the empty ones without branches; at the sides chooseMove does it. Both
+// make the same choice. The grain's record is written after the sweep (applyLoggedMoves).
+inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int x, int y, int z) {
+    CellValue* cells = context.grid.cells().data();
+    const auto sizeX = std::uint32_t(size_.x);
+    const std::uint32_t layer = context.grid.layerSize();
+    const std::uint32_t from = context.grid.index(x, y, z);
+    const CellValue grain = cells[from];
+    const std::size_t word = (std::size_t(y) * std::size_t(size_.z) + std::size_t(z)) * std::size_t(rowWords_) + std::size_t(x >> 6);
+    const std::uint64_t bit = std::uint64_t{1} << (x & 63);
+    if (grain < 0) {
+        occupied_[word] &= ~bit;
+        return false;
+    }
+    const std::uint32_t straightBelow = from - layer;
+    auto random = [&] { return counterRandomFromKey(context.stepKey, std::uint64_t(context.level), from); };
+    int dx = 0, dz = 0;
+    if (cells[straightBelow] == kEmpty) {
+        // fall
+    } else if (x > 0 && x + 1 < size_.x && z > 0 && z + 1 < size_.z) {
+        const CellValue* before = cells + (straightBelow - sizeX);
+        const CellValue* middle = cells + straightBelow;
+        const CellValue* behind = cells + (straightBelow + sizeX);
+        const unsigned empty = unsigned(before[-1] == kEmpty) | unsigned(before[0] == kEmpty) << 1 |
+                               unsigned(before[1] == kEmpty) << 2 | unsigned(middle[-1] == kEmpty) << 3 |
+                               unsigned(middle[1] == kEmpty) << 4 | unsigned(behind[-1] == kEmpty) << 5 |
+                               unsigned(behind[0] == kEmpty) << 6 | unsigned(behind[1] == kEmpty) << 7;
+        if (!empty) return false; // cannot move: it sleeps until a cell below it empties
+        const std::uint8_t pick = kNthSetBit[empty][pickBelow(random(), kSetBits[empty])];
+        dx = kSlipDx[pick];
+        dz = kSlipDz[pick];
+    } else {
+        const CellNeighbourhood here(context.grid, x, y, z);
+        const auto target = chooseMove(here, random);
+        if (!target) return false;
+        dx = target->dx;
+        dz = target->dz;
+    }
 
-    const std::uint32_t to = here.index(target->dx, -1, target->dz);
-    grid[to] = grain;
-    grid[from] = kEmpty;
-    GrainStore& grains = context.grains;
-    grains.cell[std::size_t(grain)] = to;
-    grains.cameFrom[std::size_t(grain)] = packMove(-target->dx, 1, -target->dz);
-    grains.movedAtStep[std::size_t(grain)] = context.step;
-    movedByStrip_[std::size_t(z / kStripRows)].push_back(std::uint32_t(grain));
+    const std::uint32_t to = straightBelow + std::uint32_t(std::int64_t(dz) * sizeX + dx);
+    cells[to] = grain;
+    cells[from] = kEmpty;
+    occupied_[word] &= ~bit;
+    const MoveCode back = packMove(-dx, 1, -dz);
+    if (context.deferRecords) {
+        log.deferred.push_back({std::uint32_t(grain), to, back});
+    } else {
+        GrainStore& grains = context.grains;
+        grains.cell[std::size_t(grain)] = to;
+        grains.cameFrom[std::size_t(grain)] = back;
+        grains.movedAtStep[std::size_t(grain)] = context.step;
+        (context.movedList ? *context.movedList : log.moved).push_back(std::uint32_t(grain));
+    }
 
-    if (y - 1 > 0 || bottomIsOutlet_) wakeAt(x + target->dx, y - 1, z + target->dz); // it may move on next step
-    wakeAroundEmptiedBy<false>(grid, x, y, z);                                       // the cell it left is free
+    if (y - 1 > 0 || bottomIsOutlet_) wakeAt(x + dx, y - 1, z + dz); // it may move on next step
+    wakeAroundEmptiedBy<false>(context.grid, x, y, z);             // the cell it left is free
     return true;
 }
 
-bool GridSweep::visitGranular(const SweepContext& context, int x, int y, int z) {
+bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z) {
     const GranularOutcome outcome = granular_->visit(context.grid, context.grains, context.seed, context.step,
                                                      std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
     if (outcome.kind == GranularOutcome::Waiting) {
@@ -193,8 +294,9 @@ bool GridSweep::visitGranular(const SweepContext& context, int x, int y, int z) 
     }
     if (outcome.kind != GranularOutcome::Moved) return false;
     const Int3 to = outcome.to;
-    // Granular moves always go down a layer, so no grain moves twice in one sweep.
-    movedByStrip_[std::size_t(z / kStripRows)].push_back(std::uint32_t(context.grid.at(to.x, to.y, to.z)));
+    const std::uint32_t toCell = context.grid.index(to.x, to.y, to.z);
+    const auto grain = std::uint32_t(context.grid[toCell]);
+    (context.movedList ? *context.movedList : log.moved).push_back(grain); // the rules wrote its record
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
     wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
     return true;
@@ -206,6 +308,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
     SweepResult totals;
     const Int3 size = size_;
     const int zEnd = std::min((strip + 1) * kStripRows, size.z);
+    StripLog& log = logs_[std::size_t(strip)];
     for (int z = strip * kStripRows; z < zEnd; ++z) {
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size.z) + std::uint32_t(z);
         if (context.sleeping && !rowAwake_[row]) continue;
@@ -225,7 +328,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
                         words[w] &= ~(std::uint64_t{1} << bit);
                         ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
                         ++totals.visited;
-                        totals.moves += visitGranular(context, w * 64 + bit, y, z) ? 1 : 0;
+                        totals.moves += visitGranular(context, log, w * 64 + bit, y, z) ? 1 : 0;
                     }
                     continue;
                 }
@@ -237,9 +340,9 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
                 bits &= bits - 1;
                 ++totals.visited;
                 if constexpr (Granular)
-                    totals.moves += visitGranular(context, x, y, z) ? 1 : 0;
+                    totals.moves += visitGranular(context, log, x, y, z) ? 1 : 0;
                 else
-                    totals.moves += visitCell(context, x, y, z) ? 1 : 0;
+                    totals.moves += visitCell(context, log, x, y, z) ? 1 : 0;
             }
         }
     }
@@ -247,6 +350,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
 }
 
 SweepResult GridSweep::sweep(const SweepContext& context, WorkerPool* pool) {
+    recordsDeferred_ = context.deferRecords;
     return granular_ ? sweepBy<true>(context, pool) : sweepBy<false>(context, pool);
 }
 

@@ -20,6 +20,22 @@ class WorkerPool;
 class GranularRules;
 
 inline constexpr int kStripRows = 8;
+inline constexpr int kGrainsPerPartBits = 6; ///< writeLoggedMoves: 64 grain ids per block
+
+/// One classic move, kept by the strip that made it and written into the GrainStore after the
+/// sweep: the two grids' workers then never write the same grain records' cache lines.
+struct LoggedMove {
+    std::uint32_t grain; ///< its id
+    std::uint32_t to;    ///< the cell it entered
+    MoveCode cameFrom;   ///< offset back to the cell it left
+};
+
+/// What one strip of a sweep keeps of its moves: the moves whose records wait (deferRecords), or
+/// the ids of grains whose records were written at once.
+struct StripLog {
+    std::vector<LoggedMove> deferred; ///< moves whose grain records writeLoggedMoves writes
+    std::vector<std::uint32_t> moved; ///< ids of the other grains moved
+};
 
 struct SweepResult {
     std::int64_t moves = 0;   ///< grains moved
@@ -36,6 +52,13 @@ struct SweepContext {
     std::uint64_t step;  ///< this step's number, 1 = the first after a reset: picks the slips, stamps movedAtStep
     GridLevel level;     ///< which grid: picks the slips, so the two grids draw differently
     bool sleeping;       ///< R5: visit awake cells only; false = every cell (same result)
+    std::uint64_t stepKey; ///< counterRandomStepKey(seed, step), computed once per sweep
+    /// Classic moves leave the grain records to writeLoggedMoves (when another grid is swept at
+    /// the same time); false writes them at once, cheaper while no other thread writes records.
+    bool deferRecords;
+    /// When set (a sweep on one thread that writes records at once), the ids of moved grains are
+    /// appended here directly instead of to the strips' logs.
+    std::vector<std::uint32_t>* movedList;
 };
 
 class GridSweep {
@@ -65,11 +88,16 @@ public:
     void setDeferWakesAbove(bool defer) { deferWakesAbove_ = defer; }
     /// Applies the wakes kept while deferred.
     void applyDeferredWakes();
+    /// Writes the moves the last sweep logged into grains (cell, cameFrom, movedAtStep = step), of
+    /// the grains in `part` of `parts`: blocks of 2^kGrainsPerPartBits ids go to the parts in
+    /// turn, so parts on different threads write different cache lines. Granular sweeps write
+    /// the records as they move: nothing to do.
+    void writeLoggedMoves(GrainStore& grains, std::uint64_t step, int part, int parts) const;
+    /// Appends the ids of the grains the last sweep logged to `moved` and empties the logs. A
+    /// granular grain may be listed twice (it may move again in its own layer).
+    void takeLoggedMoves(std::vector<std::uint32_t>& moved);
     /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
     std::int64_t awakeRowCount() const;
-    /// Appends the ids of the grains the last sweep moved to out (strip by strip, so the order is
-    /// the same for any thread count) and forgets them.
-    void takeMovedGrains(std::vector<std::uint32_t>& out);
 
     /// Applies the rules to layers 1..top of context.grid, bottom-up; pool (may be null) shares
     /// busy layers' strips between threads.
@@ -104,13 +132,14 @@ private:
     template <bool Granular> SweepResult sweepBy(const SweepContext& context, WorkerPool* pool);
     template <bool Granular> SweepResult sweepStrip(const SweepContext& context, int y, int strip);
     template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
-    bool visitCell(const SweepContext& context, int x, int y, int z); // classic rules; true when a grain moved
+    // classic rules; true when a grain moved
+    bool visitCell(const SweepContext& context, StripLog& log, int x, int y, int z);
+    bool visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z);
     void clearRow(std::uint32_t row);
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
     void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, std::uint64_t mask);
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
-    bool visitGranular(const SweepContext& context, int x, int y, int z); // true when a grain moved
     int awakeRowsInLayer(int y) const;
 
     Int3 size_;
@@ -121,9 +150,13 @@ private:
     std::vector<std::uint32_t> deferredWakesAbove_; // x + sizeX * z of the outlet cells to wake
     int rowWords_;                       // 64-bit words per row of awake bits
     std::vector<std::uint64_t> words_;   // awake bits, row = y * sizeZ + z, padded to whole words
+    // Cells that may hold a grain, in the layout of words_: set by every wakeAt (each grain that
+    // enters a cell is woken there), cleared when a classic move or a visit finds the cell EMPTY.
+    // Waking the cells above an emptied cell ANDs with it, so EMPTY and INVALID cells stay asleep.
+    std::vector<std::uint64_t> occupied_;
+    std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
+    bool recordsDeferred_ = false;              // the last sweep left its records to writeLoggedMoves
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
-    // Ids moved by the current sweep, one list per strip: a strip runs on one thread at a time.
-    std::vector<std::vector<std::uint32_t>> movedByStrip_;
 };
 
 } // namespace sandcore

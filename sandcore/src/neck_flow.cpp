@@ -21,9 +21,4 @@ std::int64_t NeckFlow::allowance(std::uint64_t step) const {
     return upTo(step) - upTo(step - 1);
 }
 
-std::int64_t openCellsOfBottomLayer(const CellGrid& grid) {
-    const auto cells = grid.cells().subspan(0, grid.layerSize());
-    return std::count_if(cells.begin(), cells.end(), [](CellValue v) { return v != kInvalid; });
-}
-
 } // namespace sandcore

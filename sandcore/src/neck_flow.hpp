@@ -39,7 +39,4 @@ private:
     std::uint64_t rateQ32_ = 0; // rate in 32.32 fixed point: the allowance uses integers only
 };
 
-/// The open (non-INVALID) cells of a grid's layer 0: the neck's measured cross-section.
-std::int64_t openCellsOfBottomLayer(const CellGrid& grid);
-
 } // namespace sandcore

@@ -13,6 +13,9 @@ namespace sandcore {
 
 namespace {
 
+// Below this many moves in a step, one thread writes the grain records faster than several.
+constexpr std::int64_t kMinMovesForThreads = 2048;
+
 bool layoutOnly(const CellGrid& grid) {
     const auto cells = grid.cells();
     return std::all_of(cells.begin(), cells.end(), [](CellValue v) { return v == kEmpty || v == kInvalid; });
@@ -35,15 +38,18 @@ template <class Visit> void forEachCellIn(const CellGrid& grid, CellBox box, Vis
 
 Scene::Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::vector<std::uint32_t> upperFill,
              StepSettings settings)
-    : kind_(kind), settings_(settings), upperLayout_(std::move(upperLayout)), lowerLayout_(std::move(lowerLayout)),
-      upper_(upperLayout_), lower_(lowerLayout_), upperFill_(std::move(upperFill)) {
+    : kind_(kind), settings_(settings), upper_(std::move(upperLayout)), lower_(std::move(lowerLayout)),
+      upperFill_(std::move(upperFill)) {
     if (upper_.size().x != lower_.size().x || upper_.size().z != lower_.size().z)
         throw std::invalid_argument("upper and lower grid must have the same x and z size");
-    if (!layoutOnly(upperLayout_) || !layoutOnly(lowerLayout_))
+    if (!layoutOnly(upper_) || !layoutOnly(lower_))
         throw std::invalid_argument("grid layouts may hold only EMPTY and INVALID cells");
     for (std::uint32_t cell : upperFill_)
-        if (cell >= upper_.cellCount() || upperLayout_[cell] != kEmpty)
+        if (cell >= upper_.cellCount() || upper_[cell] != kEmpty)
             throw std::invalid_argument("a fill cell lies outside the upper grid or on an INVALID cell");
+    // The grids hold the layouts until reset() fills them: keep a bit per cell of each.
+    upperLayout_ = LayoutBits(upper_);
+    lowerLayout_ = LayoutBits(lower_);
     if (settings_.threads < 1) throw std::invalid_argument("threads must be at least 1");
     makeSweeps();
     pool_ = std::make_unique<WorkerPool>(settings_.threads);
@@ -57,7 +63,7 @@ void Scene::configurePhysics() {
     granular_ = granular ? std::make_unique<GranularRules>(physics) : nullptr;
     // Model only what a scene needs: the neck's discharge belongs to the hourglass.
     neckFlow_ = granular && kind_ == SceneKind::Hourglass
-                    ? std::make_unique<NeckFlow>(openCellsOfBottomLayer(upperLayout_), double(physics.gravity))
+                    ? std::make_unique<NeckFlow>(upperLayout_.openCellsOfBottomLayer(), double(physics.gravity))
                     : nullptr;
     upperSweep_->setGranular(granular_.get());
     lowerSweep_->setGranular(granular_.get());
@@ -90,8 +96,7 @@ GridSweep& Scene::sweepOf(GridLevel level) { return level == GridLevel::Upper ? 
 
 void Scene::rebuildCells(GridLevel level) {
     CellGrid& grid = gridRef(level);
-    const CellGrid& layout = level == GridLevel::Upper ? upperLayout_ : lowerLayout_;
-    std::copy(layout.cells().begin(), layout.cells().end(), grid.cells().begin());
+    (level == GridLevel::Upper ? upperLayout_ : lowerLayout_).writeInto(grid);
     for (const CellBox& box : obstacles(level))
         forEachCellIn(grid, box, [&](std::uint32_t n) { grid[n] = kInvalid; });
 }
@@ -100,8 +105,8 @@ void Scene::reset() {
     if (flipped_) {
         // The fill belongs to the upright hourglass: turn the layouts back first.
         flipLayouts();
-        upper_ = upperLayout_;
-        lower_ = lowerLayout_;
+        upper_ = CellGrid(upperLayout_.size());
+        lower_ = CellGrid(lowerLayout_.size());
     }
     grains_.clear();
     movedGrains_.clear();
@@ -111,14 +116,15 @@ void Scene::reset() {
     rebuildCells(GridLevel::Lower);
     upperSweep_->clear();
     lowerSweep_->clear();
+    grains_.reserve(std::uint32_t(upperFill_.size())); // a big fill grows no array piece by piece
+    movedGrains_.reserve(upperFill_.size());           // address space only, until steps move grains
     for (std::uint32_t cell : upperFill_) addGrain(GridLevel::Upper, cell);
 }
 
 void Scene::step() {
     const std::uint64_t stepNumber = counters_.stepsDone + 1;
     WorkerPool* pool = settings_.threads > 1 ? pool_.get() : nullptr;
-    const SweepContext lowerContext{lower_, grains_, settings_.seed, stepNumber, GridLevel::Lower, settings_.sleeping};
-    const SweepContext upperContext{upper_, grains_, settings_.seed, stepNumber, GridLevel::Upper, settings_.sleeping};
+    const std::uint64_t stepKey = counterRandomStepKey(settings_.seed, stepNumber);
     SweepResult lower, upper;
     // The two grids touch no common cell during their sweeps (the lower grid's wakes of the
     // outlet row wait until both are done), so when both have comparable work they run side by
@@ -128,6 +134,15 @@ void Scene::step() {
     const std::int64_t upperWork = settings_.sleeping ? upperSweep_->awakeRowCount() : std::int64_t(upper_.cellCount());
     const bool sideBySide = pool && std::min(lowerWork, upperWork) > 0 &&
                             4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
+    // Side by side, the two grids' threads would write the same cache lines of grain records
+    // (grains moving in both have nearby ids): each logs its moves, written after both sweeps.
+    // On one thread the sweeps list the moved grains in movedGrains_ directly.
+    movedGrains_.clear();
+    std::vector<std::uint32_t>* movedList = pool ? nullptr : &movedGrains_;
+    const SweepContext lowerContext{lower_,   grains_,           settings_.seed, stepNumber, GridLevel::Lower,
+                                    settings_.sleeping, stepKey, sideBySide,     movedList};
+    const SweepContext upperContext{upper_,   grains_,           settings_.seed, stepNumber, GridLevel::Upper,
+                                    settings_.sleeping, stepKey, sideBySide,     movedList};
     if (sideBySide) {
         lowerSweep_->setDeferWakesAbove(true);
         pool->parallelFor(2, [&](int grid) {
@@ -142,10 +157,24 @@ void Scene::step() {
         lower = lowerSweep_->sweep(lowerContext, pool);
         upper = upperSweep_->sweep(upperContext, pool);
     }
+    // The sweeps logged their moves instead of writing grain records that both grids' workers
+    // would share; written here, before the transition reads them, each thread its own blocks of ids.
+    const auto writeMoves = [&](int part, int parts) {
+        lowerSweep_->writeLoggedMoves(grains_, stepNumber, part, parts);
+        upperSweep_->writeLoggedMoves(grains_, stepNumber, part, parts);
+    };
+    if (pool && lower.moves + upper.moves >= kMinMovesForThreads)
+        pool->parallelFor(pool->threadCount(), [&](int part) { writeMoves(part, pool->threadCount()); });
+    else
+        writeMoves(0, 1);
+    lowerSweep_->takeLoggedMoves(movedGrains_);
+    upperSweep_->takeLoggedMoves(movedGrains_);
+    if (granular_) {
+        // A granular grain may move again in its own layer within one sweep: list it once.
+        std::sort(movedGrains_.begin(), movedGrains_.end());
+        movedGrains_.erase(std::unique(movedGrains_.begin(), movedGrains_.end()), movedGrains_.end());
+    }
     counters_.stepsDone = stepNumber;
-    movedGrains_.clear();
-    lowerSweep_->takeMovedGrains(movedGrains_);
-    upperSweep_->takeMovedGrains(movedGrains_);
     counters_.movesLastStep = lower.moves + upper.moves;
     counters_.visitedLastStep = lower.visited + upper.visited;
     if (granular_)
@@ -175,7 +204,7 @@ void Scene::transition() {
         if (grains_.movedAtStep[std::size_t(grain)] != counters_.stepsDone) {
             grains_.cameFrom[std::size_t(grain)] = kNoMove;
             grains_.movedAtStep[std::size_t(grain)] = counters_.stepsDone;
-            movedGrains_.push_back(std::uint32_t(grain)); // else the sweep listed it already
+            movedGrains_.push_back(std::uint32_t(grain)); // not yet listed by its sweep
         }
         lowerSweep_->wakeAt(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
@@ -242,7 +271,7 @@ void Scene::transitionGranular() {
         if (grains_.movedAtStep[grain] != step) {
             grains_.cameFrom[grain] = kNoMove;
             grains_.movedAtStep[grain] = step;
-            movedGrains_.push_back(std::uint32_t(grain)); // else the sweep listed it already
+            movedGrains_.push_back(std::uint32_t(grain)); // not yet listed by its sweep
         }
         lowerSweep_->wakeAt(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
@@ -298,15 +327,17 @@ SceneSnapshot Scene::snapshot() const {
 void Scene::restore(const SceneSnapshot& saved) {
     if (saved.flipped != flipped_) {
         flipLayouts();
-        upper_ = upperLayout_;
-        lower_ = lowerLayout_;
+        upper_ = CellGrid(upperLayout_.size());
+        lower_ = CellGrid(lowerLayout_.size());
     }
     if (!(saved.upper.size() == upper_.size()) || !(saved.lower.size() == lower_.size()))
         throw std::invalid_argument("the snapshot belongs to a scene with other grids");
     std::copy(saved.upper.cells().begin(), saved.upper.cells().end(), upper_.cells().begin());
     std::copy(saved.lower.cells().begin(), saved.lower.cells().end(), lower_.cells().begin());
     grains_ = saved.grains;
-    movedGrains_.clear();
+    movedGrains_.clear(); // the grains the saved state's last step moved
+    for (std::uint32_t id = 0; id < grains_.size(); ++id)
+        if (saved.counters.stepsDone > 0 && grains_.movedAtStep[id] == saved.counters.stepsDone) movedGrains_.push_back(id);
     nextIdentity_ = saved.nextIdentity;
     counters_ = saved.counters;
     upperObstacles_ = saved.upperObstacles;
@@ -332,9 +363,11 @@ bool Scene::removeGrain(GridLevel level, std::uint32_t cell) {
     if (cell >= grid.cellCount() || grid[cell] < 0) return false;
     const std::uint32_t id = std::uint32_t(grid[cell]);
     grid[cell] = kEmpty;
-    movedGrains_.clear(); // the swap renumbers a grain
     const std::uint32_t moved = grains_.removeBySwap(id);
     if (moved != id) gridRef(grains_.level[id])[grains_.cell[id]] = CellValue(id);
+    // The last step's list follows the renumbering: the removed grain leaves it, the last takes its id.
+    std::erase(movedGrains_, id);
+    if (moved != id) std::replace(movedGrains_.begin(), movedGrains_.end(), moved, id);
     const Int3 c = grid.coordinate(cell);
     sweepOf(level).wakeAroundEmptied(grid, c.x, c.y, c.z);
     (level == GridLevel::Upper ? counters_.grainsUpper : counters_.grainsLower) -= 1;
@@ -358,10 +391,10 @@ void Scene::clearObstacles(GridLevel level) {
     const std::vector<CellBox> removed = std::move(list);
     list.clear();
     CellGrid& grid = gridRef(level);
-    const CellGrid& layout = level == GridLevel::Upper ? upperLayout_ : lowerLayout_;
+    const LayoutBits& layout = level == GridLevel::Upper ? upperLayout_ : lowerLayout_;
     for (const CellBox& box : removed)
         forEachCellIn(grid, box, [&](std::uint32_t n) {
-            if (grid[n] != kInvalid || layout[n] != kEmpty) return;
+            if (grid[n] != kInvalid || !layout.open(n)) return;
             grid[n] = kEmpty;
             const Int3 c = grid.coordinate(n);
             sweepOf(level).wakeAroundEmptied(grid, c.x, c.y, c.z);

@@ -6,6 +6,7 @@
 #include "grid_sweep.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <utility>
 
 namespace sandcore {
@@ -25,7 +26,7 @@ std::vector<CellBox> mirroredInY(const std::vector<CellBox>& boxes, int sizeY) {
 // Layouts, obstacle lists and sweeps turn over; the live grids and grains are the caller's.
 void Scene::flipLayouts() {
     const int upperHeight = upperLayout_.size().y, lowerHeight = lowerLayout_.size().y;
-    CellGrid upperLayout = mirroredInY(lowerLayout_), lowerLayout = mirroredInY(upperLayout_);
+    LayoutBits upperLayout(mirroredInY(lowerLayout_.grid())), lowerLayout(mirroredInY(upperLayout_.grid()));
     std::vector<CellBox> upperObstacles = mirroredInY(lowerObstacles_, lowerHeight);
     std::vector<CellBox> lowerObstacles = mirroredInY(upperObstacles_, upperHeight);
     upperLayout_ = std::move(upperLayout);
@@ -52,7 +53,6 @@ bool Scene::flip() {
         grains_.cameFrom[id] = kNoMove;
         grains_.movedAtStep[id] = counters_.stepsDone;
     }
-    movedGrains_.clear(); // every grain changed cells, none by a step
     flipLayouts();
     upper_ = std::move(upper);
     lower_ = std::move(lower);
@@ -62,14 +62,16 @@ bool Scene::flip() {
     std::fill(grains_.fallFraction.begin(), grains_.fallFraction.end(), std::uint16_t{0});
     // Every grain changed its cell, so the scene is no longer settled.
     counters_.movesLastStep = grains_.size();
+    movedGrains_.resize(grains_.size());
+    std::iota(movedGrains_.begin(), movedGrains_.end(), 0u);
     markEverythingAwake();
     return true;
 }
 
 Scene Scene::clone() const {
     // Built upright, as its fill expects; restore() turns it as this scene is turned.
-    Scene copy(kind_, flipped_ ? mirroredInY(lowerLayout_) : upperLayout_,
-               flipped_ ? mirroredInY(upperLayout_) : lowerLayout_, upperFill_, settings_);
+    Scene copy(kind_, flipped_ ? mirroredInY(lowerLayout_.grid()) : upperLayout_.grid(),
+               flipped_ ? mirroredInY(upperLayout_.grid()) : lowerLayout_.grid(), upperFill_, settings_);
     copy.restore(snapshot());
     return copy;
 }

@@ -17,8 +17,9 @@ template <class Vector> constexpr std::uint64_t elementBytes() { return sizeof(t
 // follow the library when its records change; the static_asserts hold them at the numbers the
 // application's memory check has always used, so a change there is a deliberate one.
 
-// Each grid cell is held twice: the layout that reset returns to and the live grid.
-constexpr std::uint64_t kBytesPerGridCell = 2 * sizeof(CellValue);
+// Each grid cell: the live cell, a bit of the layout that reset returns to, and the sweep's
+// awake and occupied bits, rounded up to a whole byte.
+constexpr std::uint64_t kBytesPerGridCell = sizeof(CellValue) + 1;
 // One grain's record across GrainStore's arrays (22 bytes today), rounded up to a power of two
 // for the spare capacity the arrays keep as they grow.
 constexpr std::uint64_t kBytesPerGrain =
@@ -32,7 +33,7 @@ constexpr std::uint64_t kMaskBytesPerCell = elementBytes<decltype(InsideMask::in
 // The canvas starts empty; it keeps room for one poured grain per 8 cells.
 constexpr std::uint64_t kCanvasCellsPerGrain = 8;
 
-static_assert(kBytesPerGridCell == 8 && kBytesPerGrain == 32 && kBytesPerFillEntry == 4 && kMaskBytesPerCell == 2,
+static_assert(kBytesPerGridCell == 5 && kBytesPerGrain == 32 && kBytesPerFillEntry == 4 && kMaskBytesPerCell == 2,
               "the memory estimates changed: check the application's memory limits and their tests");
 
 // Products saturate instead of wrapping, so an absurd size gives an absurd estimate, never a small one.
@@ -84,15 +85,15 @@ std::uint64_t estimateSceneBytes(SceneKind kind, Int3 maskSize) {
     const SceneGridSizes sizes = sceneGridSizes(kind, maskSize);
     const std::uint64_t gridCells = plus(cellsOf(sizes.upper), cellsOf(sizes.lower));
     const std::uint64_t grids = times(gridCells, kBytesPerGridCell);
-    // The awake bits of the sweep (a bit per cell and a byte per row) fit in the slack below.
+    // The sweep's flag per row fits in the slack below.
     switch (kind) {
     // Grids at their upper bound (two mask volumes, where the split makes them about one) and a
     // grain for every mask cell (where at most the upper bulb fills): the slack holds the fill
-    // list and the masks the split makes. 48 bytes per mask cell.
+    // list and the masks the split makes. 42 bytes per mask cell.
     case SceneKind::Hourglass: return plus(grids, times(maskCells, kBytesPerGrain));
-    // Exact grids (12 mask volumes) and a grain and fill entry for every mask cell: 132 bytes per mask cell.
+    // Exact grids (12 mask volumes) and a grain and fill entry for every mask cell: 96 bytes per mask cell.
     case SceneKind::Sculpture: return plus(grids, times(maskCells, kBytesPerGrain + kBytesPerFillEntry));
-    // The grids and room for the sand a user pours: 12 bytes per grid cell.
+    // The grids and room for the sand a user pours: 9 bytes per grid cell.
     case SceneKind::Canvas: return plus(grids, times(gridCells, kBytesPerGrain / kCanvasCellsPerGrain));
     }
     return grids;

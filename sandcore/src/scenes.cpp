@@ -81,7 +81,13 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const HourglassSettings& h
 }
 
 Scene makeSculptureScene(const InsideMask& model, const StepSettings& step) {
+    return makeSculptureScene(model, InsideMask{}, step);
+}
+
+Scene makeSculptureScene(const InsideMask& model, const InsideMask& obstacles, const StepSettings& step) {
     requireInside(model, "the model");
+    if (!obstacles.inside.empty() && !(obstacles.size == model.size))
+        throw std::invalid_argument("the obstacles' mask differs in size from the model's");
     const Int3 m = model.size;
     const SceneGridSizes sizes = sceneGridSizes(SceneKind::Sculpture, m);
     CellGrid upper(sizes.upper, kEmpty);
@@ -93,7 +99,27 @@ Scene makeSculptureScene(const InsideMask& model, const StepSettings& step) {
         for (int z = 0; z < m.z; ++z)
             for (int x = 0; x < m.x; ++x)
                 if (model.at(x, y, z)) fill.push_back(upper.index(x + offsetX, y, z + offsetZ));
+                else if (!obstacles.inside.empty() && obstacles.at(x, y, z))
+                    upper[upper.index(x + offsetX, y, z + offsetZ)] = kInvalid;
     return Scene(SceneKind::Sculpture, std::move(upper), std::move(lower), std::move(fill), step);
+}
+
+Int3 maskOriginInScene(SceneKind kind, const InsideMask& mask) {
+    requireInside(mask, "the mask");
+    if (kind == SceneKind::Hourglass) {
+        int bottom = 0;
+        while (mask.countInsideLayer(bottom) == 0) ++bottom;
+        const InsideMask vessel = trimmedToInsideLayers(mask);
+        // Split at the neck, world height is the trimmed mask's; without a neck the vessel is the
+        // upper grid over a lower box of its own height (the shared row counted once).
+        const bool split = hasNeck(vessel, findNeckLayer(vessel));
+        return {0, -bottom + (split ? 0 : vessel.size.y - 1), 0};
+    }
+    if (kind == SceneKind::Sculpture) {
+        const SceneGridSizes sizes = sceneGridSizes(SceneKind::Sculpture, mask.size);
+        return {(sizes.upper.x - mask.size.x) / 2, sizes.lower.y - 1, (sizes.upper.z - mask.size.z) / 2};
+    }
+    throw std::invalid_argument("the canvas is built from no mask");
 }
 
 std::uint32_t pourCell(const Scene& scene) {

@@ -1,11 +1,13 @@
 #include "sandcore/triangle_mesh.hpp"
 
+#include "welded_mesh.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <bit>
 #include <limits>
 #include <stdexcept>
-#include <unordered_map>
+#include <functional>
 
 namespace sandcore {
 
@@ -37,41 +39,56 @@ MeshBounds boundsOf(const TriangleMesh& mesh) {
 
 namespace {
 
-struct PositionKey {
-    std::uint32_t x, y, z;
-    friend bool operator==(const PositionKey&, const PositionKey&) = default;
-};
-
-struct PositionHash {
-    std::size_t operator()(const PositionKey& k) const {
-        std::uint64_t h = k.x;
-        h = h * 0x9E3779B97F4A7C15ull ^ k.y;
-        h = h * 0x9E3779B97F4A7C15ull ^ k.z;
-        return std::size_t(h ^ (h >> 29));
-    }
-};
-
 // -0.0 and +0.0 are the same position; everything else is compared bit for bit.
 std::uint32_t bitsOf(float value) { return std::bit_cast<std::uint32_t>(value == 0.0f ? 0.0f : value); }
 
-std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
-    return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
+// Buckets the items by bucketOf(item) < bucketCount with a counting sort (stable), then sorts
+// each bucket with less: the same grouping as one std::sort, in linear time when the buckets
+// are small (a vertex's edges, a vertex's triangles).
+template <class Item, class BucketOf, class Less>
+std::vector<Item> bucketSorted(const std::vector<Item>& items, std::size_t bucketCount, BucketOf bucketOf, Less less) {
+    std::vector<std::uint32_t> start(bucketCount + 1, 0);
+    for (const Item& item : items) ++start[bucketOf(item) + 1];
+    for (std::size_t b = 0; b < bucketCount; ++b) start[b + 1] += start[b];
+    std::vector<Item> sorted(items.size());
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (const Item& item : items) sorted[next[bucketOf(item)]++] = item;
+    for (std::size_t b = 0; b < bucketCount; ++b)
+        if (start[b + 1] - start[b] > 1) std::sort(sorted.begin() + start[b], sorted.begin() + start[b + 1], less);
+    return sorted;
 }
-
 
 } // namespace
 
+// An open-addressing table of the distinct positions (a power-of-two size at most half full):
+// several times faster than std::unordered_map on a million vertices. Vertices keep the order
+// of their first use, as before.
 TriangleMesh weldVertices(const TriangleMesh& mesh) {
     TriangleMesh welded;
-    std::unordered_map<PositionKey, std::uint32_t, PositionHash> firstAt;
-    firstAt.reserve(mesh.vertices.size());
-    std::vector<std::uint32_t> remap(mesh.vertices.size());
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const std::size_t count = mesh.vertices.size();
+    std::size_t capacity = 16;
+    while (capacity < 2 * count) capacity *= 2;
+    constexpr std::uint32_t kFree = ~std::uint32_t{0};
+    std::vector<std::uint32_t> slots(capacity, kFree);
+    std::vector<std::array<std::uint32_t, 3>> keys; // bits of each welded vertex
+    keys.reserve(count);
+    welded.vertices.reserve(count);
+    std::vector<std::uint32_t> remap(count);
+    for (std::size_t i = 0; i < count; ++i) {
         const Vec3 v = mesh.vertices[i];
-        const auto [it, isNew] =
-            firstAt.try_emplace({bitsOf(v.x), bitsOf(v.y), bitsOf(v.z)}, std::uint32_t(welded.vertices.size()));
-        if (isNew) welded.vertices.push_back(v);
-        remap[i] = it->second;
+        const std::array<std::uint32_t, 3> key{bitsOf(v.x), bitsOf(v.y), bitsOf(v.z)};
+        std::uint64_t h = key[0];
+        h = h * 0x9E3779B97F4A7C15ull ^ key[1];
+        h = h * 0x9E3779B97F4A7C15ull ^ key[2];
+        h *= 0x9E3779B97F4A7C15ull;
+        std::size_t slot = std::size_t(h >> 32) & (capacity - 1);
+        while (slots[slot] != kFree && keys[slots[slot]] != key) slot = (slot + 1) & (capacity - 1);
+        if (slots[slot] == kFree) {
+            slots[slot] = std::uint32_t(welded.vertices.size());
+            welded.vertices.push_back(v);
+            keys.push_back(key);
+        }
+        remap[i] = slots[slot];
     }
     welded.triangles.reserve(mesh.triangles.size());
     for (const auto& t : mesh.triangles) {
@@ -84,65 +101,95 @@ TriangleMesh weldVertices(const TriangleMesh& mesh) {
 
 namespace {
 
-// One use of an edge by a triangle: the undirected edge, the triangle, and whether the
-// triangle runs along it from the smaller vertex index to the larger.
+// One use of an edge by a triangle, filed under the edge's smaller vertex: the larger vertex,
+// the triangle, and whether the triangle runs along the edge from the smaller vertex to the larger.
 struct EdgeUse {
-    std::uint64_t key;
-    std::uint32_t triangle;
-    bool forward;
-    bool operator<(const EdgeUse& other) const { return key < other.key; }
+    std::uint32_t other;
+    std::uint32_t triangleAndForward; // triangle << 1 | forward
+    std::uint32_t triangle() const { return triangleAndForward >> 1; }
+    bool forward() const { return triangleAndForward & 1u; }
 };
 
-// Every edge use of the non-degenerate triangles, grouped by edge. Sorting groups the uses of
-// each edge; cheaper and more compact than a hash map.
-std::vector<EdgeUse> sortedEdgeUses(const TriangleMesh& welded) {
-    std::vector<EdgeUse> uses;
-    uses.reserve(welded.triangles.size() * 3);
+// Calls visit(uses, count) once per edge of the non-degenerate triangles with the uses of that
+// edge, edges in ascending (smaller vertex, larger vertex) order, the uses of one edge in
+// triangle order. The uses are filed under their edge's smaller vertex by a counting sort (two
+// passes over the triangles) and each vertex's few uses put in order by insertion sort: linear
+// time, and half the memory of sorting 64-bit edge keys.
+template <class Visit> void forEachEdge(const TriangleMesh& welded, Visit&& visit) {
+    if (welded.triangles.size() >= (std::size_t{1} << 31)) throw std::invalid_argument("the mesh has too many triangles");
+    const auto degenerate = [](const std::array<std::uint32_t, 3>& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; };
+    std::vector<std::uint32_t> start(welded.vertices.size() + 1, 0);
+    for (const auto& t : welded.triangles)
+        if (!degenerate(t))
+            for (std::size_t e = 0; e < 3; ++e) ++start[std::size_t(std::min(t[e], t[(e + 1) % 3])) + 1];
+    for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+    std::vector<EdgeUse> uses(start.back());
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
     for (std::size_t n = 0; n < welded.triangles.size(); ++n) {
         const auto& t = welded.triangles[n];
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
-        for (int e = 0; e < 3; ++e) {
-            const std::uint32_t a = t[std::size_t(e)], b = t[std::size_t((e + 1) % 3)];
-            uses.push_back({edgeKey(a, b), std::uint32_t(n), a < b});
+        if (degenerate(t)) continue;
+        for (std::size_t e = 0; e < 3; ++e) {
+            const std::uint32_t a = t[e], b = t[(e + 1) % 3];
+            uses[next[std::min(a, b)]++] = {std::max(a, b), std::uint32_t(n) << 1 | std::uint32_t(a < b)};
         }
     }
-    std::sort(uses.begin(), uses.end());
-    return uses;
+    for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+        EdgeUse* first = uses.data() + start[v];
+        EdgeUse* last = uses.data() + start[v + 1];
+        // Stable, so the uses of one edge stay in triangle order; a fan of many triangles around one
+        // vertex (a cone's apex) takes the O(n log n) sort.
+        const auto byOther = [](const EdgeUse& p, const EdgeUse& q) { return p.other < q.other; };
+        if (last - first > 32)
+            std::stable_sort(first, last, byOther);
+        else
+            for (EdgeUse* i = first + 1; i < last; ++i)
+                for (EdgeUse* j = i; j > first && byOther(*j, j[-1]); --j) std::swap(j[-1], *j);
+        while (first < last) {
+            EdgeUse* group = first;
+            while (first < last && first->other == group->other) ++first;
+            visit(group, std::size_t(first - group));
+        }
+    }
 }
 
 } // namespace
 
-MeshClosedness closednessOf(const TriangleMesh& mesh) {
-    const std::vector<EdgeUse> edges = sortedEdgeUses(weldVertices(mesh));
+MeshClosedness closednessOfWelded(const TriangleMesh& welded) {
     MeshClosedness result;
-    for (std::size_t i = 0; i < edges.size();) {
-        std::size_t j = i;
-        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
-        const std::size_t uses = j - i;
-        if (uses % 2 == 1) ++result.boundaryEdges;
-        if (uses > 2) ++result.nonManifoldEdges;
-        if (uses == 2 && edges[i].forward == edges[i + 1].forward) ++result.inconsistentEdges;
-        i = j;
-    }
+    forEachEdge(welded, [&](const EdgeUse* uses, std::size_t count) {
+        if (count % 2 == 1) ++result.boundaryEdges;
+        if (count > 2) ++result.nonManifoldEdges;
+        if (count == 2 && uses[0].forward() == uses[1].forward()) ++result.inconsistentEdges;
+    });
     result.closed = result.boundaryEdges == 0;
     return result;
 }
 
-TriangleMesh withoutRepeatedTriangles(const TriangleMesh& mesh) {
-    TriangleMesh welded = weldVertices(mesh);
+MeshClosedness closednessOf(const TriangleMesh& mesh) { return closednessOfWelded(weldVertices(mesh)); }
+
+std::vector<char> trianglesToKeep(const TriangleMesh& welded) {
     // Each triangle rotated so its smallest index comes first: the same face with the same
-    // orientation gives the same triple.
-    std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint32_t>> keyed;
+    // orientation gives the same triple. Of equal triples the first triangle stays.
+    using Keyed = std::pair<std::array<std::uint32_t, 3>, std::uint32_t>;
+    std::vector<Keyed> keyed;
     keyed.reserve(welded.triangles.size());
     for (std::size_t n = 0; n < welded.triangles.size(); ++n) {
         auto t = welded.triangles[n];
         while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
         keyed.push_back({t, std::uint32_t(n)});
     }
-    std::sort(keyed.begin(), keyed.end());
+    keyed = bucketSorted(keyed, welded.vertices.size(), [](const Keyed& k) { return std::size_t(k.first[0]); },
+                         std::less<Keyed>());
     std::vector<char> keep(welded.triangles.size(), 1);
+    bool any = false;
     for (std::size_t n = 1; n < keyed.size(); ++n)
-        if (keyed[n].first == keyed[n - 1].first) keep[keyed[n].second] = 0;
+        if (keyed[n].first == keyed[n - 1].first) keep[keyed[n].second] = 0, any = true;
+    if (!any) keep.clear();
+    return keep;
+}
+
+TriangleMesh keptTriangles(TriangleMesh welded, const std::vector<char>& keep) {
+    if (keep.empty()) return welded;
     std::vector<std::array<std::uint32_t, 3>> kept;
     kept.reserve(welded.triangles.size());
     for (std::size_t n = 0; n < welded.triangles.size(); ++n)
@@ -151,23 +198,38 @@ TriangleMesh withoutRepeatedTriangles(const TriangleMesh& mesh) {
     return welded;
 }
 
-TriangleMesh orientedOutward(const TriangleMesh& mesh) {
-    TriangleMesh out = weldVertices(mesh);
+TriangleMesh withoutRepeatedTriangles(const TriangleMesh& mesh) {
+    TriangleMesh welded = weldVertices(mesh);
+    const std::vector<char> keep = trianglesToKeep(welded);
+    return keptTriangles(std::move(welded), keep);
+}
+
+TriangleMesh orientedOutward(const TriangleMesh& mesh) { return orientedOutwardWelded(weldVertices(mesh)).mesh; }
+
+OrientedMesh orientedOutwardWelded(TriangleMesh out) {
+    OrientedMesh result;
     const std::size_t count = out.triangles.size();
-    // Neighbours across edges used by exactly two triangles; `flip` says whether the two must
-    // differ in flipping (they run along the edge in the same direction) to agree.
-    std::vector<std::vector<std::pair<std::uint32_t, bool>>> neighbours(count);
-    const std::vector<EdgeUse> edges = sortedEdgeUses(out);
-    for (std::size_t i = 0; i < edges.size();) {
-        std::size_t j = i;
-        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
-        if (j - i == 2 && edges[i].triangle != edges[i + 1].triangle) {
-            const bool flip = edges[i].forward == edges[i + 1].forward;
-            neighbours[edges[i].triangle].push_back({edges[i + 1].triangle, flip});
-            neighbours[edges[i + 1].triangle].push_back({edges[i].triangle, flip});
-        }
-        i = j;
-    }
+    // Neighbours across edges used by exactly two triangles, at most one per edge, so at most 3
+    // per triangle, in ascending edge order; `flip` says whether the two must differ in flipping
+    // (they run along the edge in the same direction) to agree.
+    // Each neighbour is other << 1 | flip; kNone ends a list. The same pass measures closedness.
+    constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    std::vector<std::array<std::uint32_t, 3>> neighbours(count, {kNone, kNone, kNone});
+    const auto add = [&](std::uint32_t t, std::uint32_t other, bool flip) {
+        auto& list = neighbours[t];
+        *std::find(list.begin(), list.end(), kNone) = other << 1 | std::uint32_t(flip);
+    };
+    MeshClosedness& closedness = result.closedness;
+    forEachEdge(out, [&](const EdgeUse* uses, std::size_t n) {
+        if (n % 2 == 1) ++closedness.boundaryEdges;
+        if (n > 2) ++closedness.nonManifoldEdges;
+        if (n != 2 || uses[0].triangle() == uses[1].triangle()) return;
+        const bool flip = uses[0].forward() == uses[1].forward();
+        if (flip) ++closedness.inconsistentEdges;
+        add(uses[0].triangle(), uses[1].triangle(), flip);
+        add(uses[1].triangle(), uses[0].triangle(), flip);
+    });
+    closedness.closed = closedness.boundaryEdges == 0;
     std::vector<std::int8_t> flipped(count, -1); // -1: not reached yet
     std::vector<std::uint32_t> part, queue;
     for (std::size_t seed = 0; seed < count; ++seed) {
@@ -179,11 +241,14 @@ TriangleMesh orientedOutward(const TriangleMesh& mesh) {
             const std::uint32_t t = queue.back();
             queue.pop_back();
             part.push_back(t);
-            for (const auto& [other, flip] : neighbours[t])
+            for (const std::uint32_t entry : neighbours[t]) {
+                if (entry == kNone) break;
+                const std::uint32_t other = entry >> 1;
                 if (flipped[other] < 0) {
-                    flipped[other] = std::int8_t(flipped[t] ^ int(flip));
+                    flipped[other] = std::int8_t(flipped[t] ^ int(entry & 1u));
                     queue.push_back(other);
                 }
+            }
         }
         // Orient the part as a whole so its signed volume about its own centre is positive.
         std::array<double, 3> low, high;
@@ -216,9 +281,15 @@ TriangleMesh orientedOutward(const TriangleMesh& mesh) {
         if (sixTimesVolume < 0.0)
             for (std::uint32_t t : part) flipped[t] ^= 1;
     }
+    // A pair still inconsistent after the flips: it needed different flips and got the same, or the other way.
+    for (std::size_t t = 0; t < count; ++t)
+        for (const std::uint32_t entry : neighbours[t])
+            if (entry != kNone && (entry >> 1) > t && ((entry & 1u) ^ std::uint32_t(flipped[t] != flipped[entry >> 1])))
+                ++result.inconsistentAfter;
     for (std::size_t t = 0; t < count; ++t)
         if (flipped[t]) std::swap(out.triangles[t][1], out.triangles[t][2]);
-    return out;
+    result.mesh = std::move(out);
+    return result;
 }
 
 double signedVolume(const TriangleMesh& mesh) {

@@ -1,12 +1,16 @@
 #include "sandcore/voxelizer.hpp"
 
+#include "welded_mesh.hpp"
+
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/worker_pool.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace sandcore {
 
@@ -203,7 +207,11 @@ InsideMask insideFromGridPoints(const std::vector<std::array<double, 3>>& grid,
 
 // What the rays see: a face written twice counts once, and faces are oriented outward for the
 // winding number of robust mode (parity ignores orientation).
-TriangleMesh preparedForRays(const TriangleMesh& mesh) { return orientedOutward(withoutRepeatedTriangles(mesh)); }
+TriangleMesh preparedForRays(const TriangleMesh& mesh) {
+    TriangleMesh welded = weldVertices(mesh);
+    const std::vector<char> keep = trianglesToKeep(welded);
+    return orientedOutwardWelded(keptTriangles(std::move(welded), keep)).mesh;
+}
 
 } // namespace
 
@@ -246,7 +254,15 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     VoxelizeResult result;
     result.placement = placeInGrid(mesh, settings);
     const VoxelPlacement& p = result.placement;
-    const TriangleMesh prepared = preparedForRays(mesh);
+    // Welded once; the walk over the edges that orients the faces also measures closedness, of
+    // the mesh as loaded unless repeated faces had to go first (then that takes a walk of its own).
+    TriangleMesh welded = weldVertices(mesh);
+    const std::vector<char> keep = trianglesToKeep(welded);
+    std::optional<MeshClosedness> asLoaded;
+    if (!keep.empty()) asLoaded = closednessOfWelded(welded);
+    OrientedMesh oriented = orientedOutwardWelded(keptTriangles(std::move(welded), keep));
+    result.closedness = asLoaded ? *asLoaded : oriented.closedness;
+    const TriangleMesh& prepared = oriented.mesh;
     std::vector<std::array<double, 3>> grid(prepared.vertices.size());
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const Vec3 v = prepared.vertices[i];
@@ -255,12 +271,10 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     }
     result.mask = insideFromGridPoints(grid, prepared.triangles, p.size, settings);
     result.cellsInside = result.mask.countInside();
-    result.closedness = closednessOf(mesh);
     // The volume of the outward-oriented mesh: a model with some faces flipped keeps its
     // volume; where orientation cannot be made consistent (a non-orientable or non-manifold
     // surface) the volume means nothing and is not reported as if it did.
-    const MeshClosedness orientedClosedness = closednessOf(prepared);
-    result.volumeMeaningful = result.closedness.closed && orientedClosedness.inconsistentEdges == 0;
+    result.volumeMeaningful = result.closedness.closed && oriented.inconsistentAfter == 0;
     result.meshVolume = std::abs(signedVolume(prepared)) * p.scale[0] * p.scale[1] * p.scale[2];
     return result;
 }

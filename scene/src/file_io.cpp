@@ -1,6 +1,8 @@
 #include "scene/file_io.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -82,8 +84,11 @@ void requireWritableFileTarget(const std::filesystem::path& file) {
     if (::stat(file.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) throw FileError(file, nonRegularKind(info.st_mode));
 }
 
-void writeFileAtomically(const std::filesystem::path& file, std::span<const std::uint8_t> bytes) {
-    requireWritableFileTarget(file);
+namespace {
+
+// Writes bytes to a new temporary file beside `file` (named after it), flushed to disk, with the
+// usual permissions; returns its path. On failure nothing is left behind and FileError names `file`.
+std::string writeTemporaryBeside(const std::filesystem::path& file, std::span<const std::uint8_t> bytes) {
     std::string temporary = file.string() + ".XXXXXX";
     Descriptor out;
     out.fd = ::mkstemp(temporary.data());
@@ -107,11 +112,102 @@ void writeFileAtomically(const std::filesystem::path& file, std::span<const std:
     const int fd = out.fd;
     out.fd = -1;
     if (::close(fd) != 0) fail("write failed (" + systemCause(errno) + "); the file was not changed");
-    if (::rename(temporary.c_str(), file.c_str()) != 0) fail("cannot be replaced (" + systemCause(errno) + ")");
+    return temporary;
+}
+
+} // namespace
+
+void writeFileAtomically(const std::filesystem::path& file, std::span<const std::uint8_t> bytes) {
+    requireWritableFileTarget(file);
+    const std::string temporary = writeTemporaryBeside(file, bytes);
+    if (::rename(temporary.c_str(), file.c_str()) != 0) {
+        const int error = errno;
+        ::unlink(temporary.c_str());
+        throw FileError(file, "cannot be replaced (" + systemCause(error) + ")");
+    }
+}
+
+std::filesystem::path writeNewNumberedFile(const std::filesystem::path& folder, const std::string& stem,
+                                           const std::string& extension, std::span<const std::uint8_t> bytes,
+                                           int firstNumber) {
+    auto numbered = [&](int number) { return folder / (stem + "-" + std::to_string(number) + extension); };
+    requireWritableFileTarget(numbered(firstNumber));
+    const std::string temporary = writeTemporaryBeside(numbered(firstNumber), bytes);
+    // link() refuses a name that exists, so even a file made meanwhile by another program
+    // is never replaced; the first free number wins.
+    for (int number = std::max(1, firstNumber); number < kMaxNumberedFiles; ++number) {
+        const std::filesystem::path target = numbered(number);
+        if (::link(temporary.c_str(), target.c_str()) == 0) {
+            ::unlink(temporary.c_str());
+            return target;
+        }
+        if (errno != EEXIST) {
+            const int error = errno;
+            ::unlink(temporary.c_str());
+            throw FileError(target, "cannot be written (" + systemCause(error) + ")");
+        }
+    }
+    ::unlink(temporary.c_str());
+    throw FileError(folder, "holds " + std::to_string(kMaxNumberedFiles) + " files named " + stem + "-N" + extension +
+                                " already");
 }
 
 void writeFileAtomically(const std::filesystem::path& file, const std::string& text) {
     writeFileAtomically(file, std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+}
+
+namespace {
+
+// The value of KEY in the XDG user-dirs file ("KEY=\"$HOME/Pictures\""), with $HOME expanded;
+// empty when the file or the key is missing.
+std::string userDirFromConfig(const std::filesystem::path& config, const std::string& key, const std::string& home) {
+    std::vector<std::uint8_t> bytes;
+    try {
+        bytes = readFileBytes(config, 1 << 20);
+    } catch (const FileError&) {
+        return {};
+    }
+    const std::string text(bytes.begin(), bytes.end());
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(start, end - start);
+        start = end + 1;
+        if (line.rfind(key + "=", 0) != 0) continue;
+        std::string value = line.substr(key.size() + 1);
+        if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
+        if (value.rfind("$HOME", 0) == 0) value = home + value.substr(5);
+        return value;
+    }
+    return {};
+}
+
+bool isFolder(const std::filesystem::path& path) {
+    std::error_code error;
+    return !path.empty() && std::filesystem::is_directory(path, error);
+}
+
+} // namespace
+
+std::filesystem::path defaultPicturesFolder() {
+    const char* home = std::getenv("HOME");
+    const std::string homeFolder = home ? home : "";
+    if (const char* fromEnvironment = std::getenv("XDG_PICTURES_DIR"); fromEnvironment && isFolder(fromEnvironment))
+        return fromEnvironment;
+    if (!homeFolder.empty()) {
+        const char* configHome = std::getenv("XDG_CONFIG_HOME");
+        const std::filesystem::path config = (configHome && *configHome ? std::filesystem::path(configHome)
+                                                                        : std::filesystem::path(homeFolder) / ".config") /
+                                             "user-dirs.dirs";
+        const std::filesystem::path fromConfig = userDirFromConfig(config, "XDG_PICTURES_DIR", homeFolder);
+        // user-dirs.dirs names the home folder itself when there is no pictures folder.
+        if (isFolder(fromConfig) && fromConfig != std::filesystem::path(homeFolder)) return fromConfig;
+        if (isFolder(std::filesystem::path(homeFolder) / "Pictures")) return std::filesystem::path(homeFolder) / "Pictures";
+    }
+    std::error_code error;
+    const std::filesystem::path current = std::filesystem::current_path(error);
+    return error ? std::filesystem::path(".") : current;
 }
 
 } // namespace sandglass

@@ -19,11 +19,13 @@
 #include "isolated_import.hpp"
 
 #include <assimp/Importer.hpp>
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -64,10 +66,26 @@ Matrix multiply(const Matrix& a, const Matrix& b) {
 void appendNode(const aiScene& scene, const aiNode& node, const Matrix& parent, ImportedTriangles& out, int depth) {
     if (depth > 1000) throw std::runtime_error("the node hierarchy is deeper than 1000 levels");
     const Matrix transform = multiply(parent, toDouble(node.mTransformation));
+    // S7: a node with meshes is one part, named after the node (or its first named mesh).
+    ImportedPart part;
+    part.name = node.mName.C_Str();
+    const std::size_t firstTriangle = out.triangles.size();
     for (unsigned m = 0; m < node.mNumMeshes; ++m) {
-        if (node.mMeshes == nullptr || node.mMeshes[m] >= scene.mNumMeshes || scene.mMeshes == nullptr)
+        if (node.mMeshes == nullptr || node.mMeshes[m] >= scene.mNumMeshes || scene.mMeshes == nullptr ||
+            scene.mMeshes[node.mMeshes[m]] == nullptr)
             throw std::runtime_error("a node refers to a missing mesh");
         const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
+        if (part.name.empty()) part.name = mesh.mName.C_Str();
+        aiColor4D diffuse;
+        if (!part.hasColour && mesh.mMaterialIndex < scene.mNumMaterials && scene.mMaterials != nullptr &&
+            scene.mMaterials[mesh.mMaterialIndex] != nullptr &&
+            (scene.mMaterials[mesh.mMaterialIndex]->Get(AI_MATKEY_BASE_COLOR, diffuse) == AI_SUCCESS ||
+             scene.mMaterials[mesh.mMaterialIndex]->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS) &&
+            std::isfinite(diffuse.r) && std::isfinite(diffuse.g) && std::isfinite(diffuse.b)) {
+            part.hasColour = true;
+            part.colour = {std::clamp(float(diffuse.r), 0.0f, 1.0f), std::clamp(float(diffuse.g), 0.0f, 1.0f),
+                           std::clamp(float(diffuse.b), 0.0f, 1.0f)};
+        }
         if (mesh.mNumVertices > 0 && mesh.mVertices == nullptr) throw std::runtime_error("a mesh has no positions");
         const std::size_t base = out.vertices.size();
         if (base + mesh.mNumVertices > 0xffffffffull) throw std::runtime_error("more than 2^32 vertices");
@@ -90,6 +108,8 @@ void appendNode(const aiScene& scene, const aiNode& node, const Matrix& parent, 
             out.triangles.push_back(t);
         }
     }
+    part.triangleCount = out.triangles.size() - firstTriangle;
+    if (part.triangleCount > 0) out.parts.push_back(std::move(part));
     for (unsigned c = 0; c < node.mNumChildren; ++c)
         if (node.mChildren != nullptr && node.mChildren[c] != nullptr)
             appendNode(scene, *node.mChildren[c], transform, out, depth + 1);
@@ -124,8 +144,9 @@ std::string plyHeaderProblem(const std::string& path) {
 
 void put(std::vector<std::uint8_t>& out, const void* data, std::size_t size) {
     if (size == 0) return;
-    const auto* bytes = static_cast<const std::uint8_t*>(data);
-    out.insert(out.end(), bytes, bytes + size);
+    const std::size_t at = out.size();
+    out.resize(at + size);
+    std::memcpy(out.data() + at, data, size);
 }
 
 // Reads from a pipe until the writer closes it or the deadline passes; false on timeout.
@@ -203,6 +224,11 @@ ImportedTriangles importInThisProcess(const std::string& path) {
 
 std::vector<std::uint8_t> encodeImport(const ImportedTriangles& imported) {
     std::vector<std::uint8_t> out;
+    // Room for the whole reply first (also keeps GCC 12 from a false -Wstringop-overflow).
+    std::size_t names = 0;
+    for (const ImportedPart& part : imported.parts) names += part.name.size();
+    out.reserve(5 + 8 + imported.error.size() + 24 + imported.vertices.size() * 24 + imported.triangles.size() * 12 +
+                imported.parts.size() * 29 + names);
     put(out, kMagic, sizeof kMagic);
     const std::uint8_t failed = imported.error.empty() ? 0 : 1;
     put(out, &failed, 1);
@@ -214,11 +240,21 @@ std::vector<std::uint8_t> encodeImport(const ImportedTriangles& imported) {
     }
     const auto vertexCount = std::uint64_t(imported.vertices.size());
     const auto triangleCount = std::uint64_t(imported.triangles.size());
-    out.reserve(out.size() + 16 + vertexCount * 24 + triangleCount * 12);
     put(out, &vertexCount, sizeof vertexCount);
     put(out, imported.vertices.data(), imported.vertices.size() * sizeof(imported.vertices[0]));
     put(out, &triangleCount, sizeof triangleCount);
     put(out, imported.triangles.data(), imported.triangles.size() * sizeof(imported.triangles[0]));
+    const auto partCount = std::uint64_t(imported.parts.size());
+    put(out, &partCount, sizeof partCount);
+    for (const ImportedPart& part : imported.parts) {
+        const auto nameLength = std::uint64_t(part.name.size());
+        put(out, &nameLength, sizeof nameLength);
+        put(out, part.name.data(), part.name.size());
+        put(out, &part.triangleCount, sizeof part.triangleCount);
+        const std::uint8_t hasColour = part.hasColour ? 1 : 0;
+        put(out, &hasColour, 1);
+        put(out, part.colour.data(), sizeof part.colour);
+    }
     return out;
 }
 
@@ -255,20 +291,37 @@ ImportedTriangles decodeImport(const std::vector<std::uint8_t>& bytes) {
     }
     out.vertices.resize(std::size_t(count));
     take(out.vertices.data(), out.vertices.size() * 24);
-    if (!take(&count, sizeof count) || count != (bytes.size() - at) / 12 || (bytes.size() - at) % 12 != 0) {
+    auto fail = [&] {
         out = {};
         out.error = garbled;
         return out;
-    }
+    };
+    if (!take(&count, sizeof count) || count > (bytes.size() - at) / 12) return fail();
     out.triangles.resize(std::size_t(count));
     take(out.triangles.data(), out.triangles.size() * 12);
     for (const auto& t : out.triangles)
         for (std::uint32_t i : t)
-            if (i >= out.vertices.size()) {
-                out = {};
-                out.error = garbled;
-                return out;
-            }
+            if (i >= out.vertices.size()) return fail();
+    // The parts: each at least 8 + 8 + 1 + 12 bytes, their triangles adding up to all of them.
+    if (!take(&count, sizeof count) || count > (bytes.size() - at) / 29) return fail();
+    out.parts.resize(std::size_t(count));
+    std::uint64_t covered = 0;
+    for (ImportedPart& part : out.parts) {
+        std::uint64_t nameLength = 0;
+        if (!take(&nameLength, sizeof nameLength) || nameLength > bytes.size() - at) return fail();
+        part.name.assign(reinterpret_cast<const char*>(bytes.data() + at), std::size_t(nameLength));
+        at += std::size_t(nameLength);
+        std::uint8_t hasColour = 0;
+        if (!take(&part.triangleCount, sizeof part.triangleCount) || !take(&hasColour, 1) ||
+            !take(part.colour.data(), sizeof part.colour))
+            return fail();
+        part.hasColour = hasColour != 0;
+        for (float& channel : part.colour)
+            if (!(channel >= 0.0f && channel <= 1.0f)) return fail();
+        if (part.triangleCount > out.triangles.size() - covered) return fail();
+        covered += part.triangleCount;
+    }
+    if (covered != out.triangles.size() || at != bytes.size()) return fail();
     return out;
 }
 

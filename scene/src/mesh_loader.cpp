@@ -1,6 +1,6 @@
 #include "scene/mesh_loader.hpp"
 
-#include "isolated_import.hpp"
+#include "checked_import.hpp"
 #include "scene/file_io.hpp"
 
 #include <algorithm>
@@ -34,14 +34,21 @@ double timeLimitFor(const std::string& path, const MeshLoadOptions& options) {
 
 } // namespace
 
-sandcore::TriangleMesh loadMesh(const std::string& path, const MeshLoadOptions& options) {
+sandcore::Vec3 CheckedImport::centred(std::uint32_t i) const {
+    const auto& p = imported.vertices[i];
+    return {float(p[0] - centre[0]), float(p[1] - centre[1]), float(p[2] - centre[2])};
+}
+
+CheckedImport importChecked(const std::string& path, const MeshLoadOptions& options) {
     try {
         requireReadableRegularFile(path); // a FIFO would block the importer forever
     } catch (const FileError& e) {
         // FileError's message is "path: cause" already.
         throw ModelError(path, std::string(e.what()).substr(std::min(path.size() + 2, std::string(e.what()).size())));
     }
-    const ImportedTriangles imported = importInChildProcess(path, timeLimitFor(path, options));
+    CheckedImport out;
+    out.imported = importInChildProcess(path, timeLimitFor(path, options));
+    const ImportedTriangles& imported = out.imported;
     if (!imported.error.empty()) throw ModelError(path, imported.error);
     if (imported.triangles.empty()) throw ModelError(path, "contains no triangles (only points or lines, or nothing)");
 
@@ -76,14 +83,18 @@ sandcore::TriangleMesh loadMesh(const std::string& path, const MeshLoadOptions& 
     for (std::size_t a = 0; a < 3; ++a)
         if (!(high[a] - low[a] > 0.0))
             throw ModelError(path, std::string("has zero extent along ") + axes[a] + " (a flat model encloses no volume)");
+    for (std::size_t a = 0; a < 3; ++a) out.centre[a] = 0.5 * (low[a] + high[a]);
+    return out;
+}
 
+sandcore::TriangleMesh loadMesh(const std::string& path, const MeshLoadOptions& options) {
+    const CheckedImport checked = importChecked(path, options);
     // Relative to the bounding-box centre, in double, before anything is rounded to float.
     sandcore::TriangleMesh mesh;
-    mesh.vertices.reserve(imported.vertices.size());
-    for (const auto& p : imported.vertices)
-        mesh.vertices.push_back({float(p[0] - 0.5 * (low[0] + high[0])), float(p[1] - 0.5 * (low[1] + high[1])),
-                                 float(p[2] - 0.5 * (low[2] + high[2]))});
-    mesh.triangles = imported.triangles;
+    mesh.vertices.reserve(checked.imported.vertices.size());
+    for (std::uint32_t i = 0; i < std::uint32_t(checked.imported.vertices.size()); ++i)
+        mesh.vertices.push_back(checked.centred(i));
+    mesh.triangles = checked.imported.triangles;
     return sandcore::weldVertices(mesh);
 }
 

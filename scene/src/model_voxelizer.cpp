@@ -54,7 +54,11 @@ std::uint64_t availableMemoryBytes() {
 
 ModelVoxelization voxelizeModelFile(const std::string& path, const sandcore::VoxelizeSettings& settings, ModelUse use,
                                     std::uint64_t memoryLimit) {
-    const sandcore::TriangleMesh mesh = loadMesh(path);
+    return voxelizeLoadedMesh(path, loadMesh(path), settings, use, memoryLimit);
+}
+
+ModelVoxelization voxelizeLoadedMesh(const std::string& path, const sandcore::TriangleMesh& mesh,
+                                     const sandcore::VoxelizeSettings& settings, ModelUse use, std::uint64_t memoryLimit) {
     ModelVoxelization out;
     out.path = path;
     out.triangles = std::int64_t(mesh.triangles.size());

@@ -26,25 +26,29 @@ int integerIn(std::uint64_t random, int lowest, int highest) {
 
 } // namespace
 
-std::vector<SandPattern> makeSandPatterns(int count) {
+std::vector<SandPattern> makeSandPatterns(int count, SandPalette palette) {
+    const PaletteTint tint = paletteTint(palette);
     std::vector<SandPattern> patterns(std::size_t(std::max(count, 1)));
     for (std::size_t p = 0; p < patterns.size(); ++p) {
         SandPattern& pattern = patterns[p];
-        // One tint per pattern (thesis: "a light yellow that differs slightly per cell")...
-        const int red = integerIn(patternRandom(p, kTint, 0), 220, 240);
-        const int green = integerIn(patternRandom(p, kTint, 1), 220, 240);
-        const int blueBase = integerIn(patternRandom(p, kTint, 2), 150, 190);
+        // One tint per pattern (thesis: "a light yellow that differs slightly per cell"), warm as
+        // real sand is (S12): green below red and blue below green, never drawn independently...
+        const int red = integerIn(patternRandom(p, kTint, 0), tint.redLow, tint.redHigh);
+        const int greenGap = integerIn(patternRandom(p, kTint, 1), tint.greenGapLow, tint.greenGapHigh);
+        const int blueGap = integerIn(patternRandom(p, kTint, 2), tint.blueGapLow, tint.blueGapHigh);
         for (std::size_t i = 0; i < pattern.offsets.size(); ++i) {
             for (std::size_t axis = 0; axis < 3; ++axis) {
                 const float unit = sandcore::unitFloat(patternRandom(p, kOffset, 3 * i + axis)); // [0, 1)
                 pattern.offsets[i][axis] = i == 0 ? 0.0f : 2.0f * unit - 1.0f;
             }
-            // ...and a little variation per sub-grain, kept inside the thesis's range.
-            const auto wobble = [&](std::size_t channel) { return integerIn(patternRandom(p, kWobble, 3 * i + channel), -6, 6); };
-            const auto r = std::uint32_t(std::clamp(red + wobble(0), 220, 240));
-            const auto g = std::uint32_t(std::clamp(green + wobble(1), 220, 240));
-            const auto b = std::uint32_t(std::clamp(blueBase + wobble(2), 150, 190));
-            pattern.colors[i] = r | (g << 8) | (b << 16) | (255u << 24);
+            // ...and a little variation per sub-grain that keeps red > green > blue.
+            const auto wobble = [&](std::size_t channel, int size) {
+                return integerIn(patternRandom(p, kWobble, 3 * i + channel), -size, size);
+            };
+            const int r = std::clamp(red + wobble(0, 6), tint.redLow, tint.redHigh);
+            const int g = std::max(tint.greenLow, r - std::max(1, greenGap + wobble(1, 2)));
+            const int b = std::clamp(g - std::max(1, blueGap + wobble(2, 4)), tint.blueLow, std::min(tint.blueHigh, g - 1));
+            pattern.colors[i] = std::uint32_t(r) | (std::uint32_t(g) << 8) | (std::uint32_t(b) << 16) | (255u << 24);
         }
     }
     return patterns;

@@ -35,7 +35,12 @@ SceneHost::SceneHost(const SceneSettings& settings) {
     clock_.setMaxStepsPerFrame(kMaxStepsPerFrame);
     SceneSettings checked = settings;
     applySceneDefaults(checked);
-    adopt(buildScene(checked), checked);
+    adopt(buildSceneWithReport(checked), checked);
+}
+
+SceneHost::SceneHost(sandcore::Scene scene, const SceneSettings& settings) {
+    clock_.setMaxStepsPerFrame(kMaxStepsPerFrame);
+    adoptLoaded(std::move(scene), settings);
 }
 
 SceneHost::~SceneHost() {
@@ -54,8 +59,9 @@ sandcore::Scene& SceneHost::editLayout() {
     return editScene();
 }
 
-void SceneHost::adopt(sandcore::Scene scene, const SceneSettings& settings) {
-    scene_ = std::make_unique<sandcore::Scene>(std::move(scene));
+void SceneHost::adopt(BuiltScene built, const SceneSettings& settings) {
+    scene_ = std::make_unique<sandcore::Scene>(std::move(built.scene));
+    drawing_ = std::move(built.drawing);
     loaded_ = settings;
     lastStepOutsideClock_ = false;
     rate_.clear();
@@ -64,11 +70,37 @@ void SceneHost::adopt(sandcore::Scene scene, const SceneSettings& settings) {
     upkeepStale_ = true;
 }
 
+namespace {
+
+// The drawing of the model a loaded scene was built from: the build is made again and its
+// drawing kept only when its grids are the loaded scene's (turned over, the grids swap).
+std::shared_ptr<const ModelDrawing> drawingOfLoaded(const sandcore::Scene& loaded, const SceneSettings& settings) {
+    if (settings.request.modelPath.empty()) return nullptr;
+    try {
+        const BuiltScene again = buildSceneWithReport(settings);
+        const sandcore::GridLevel upper = loaded.flipped() ? sandcore::GridLevel::Lower : sandcore::GridLevel::Upper;
+        const sandcore::GridLevel lower = loaded.flipped() ? sandcore::GridLevel::Upper : sandcore::GridLevel::Lower;
+        const bool same = again.scene.grid(sandcore::GridLevel::Upper).size() == loaded.grid(upper).size() &&
+                          again.scene.grid(sandcore::GridLevel::Lower).size() == loaded.grid(lower).size();
+        return same ? again.drawing : nullptr;
+    } catch (const std::exception&) {
+        return nullptr; // the model file is gone or broken: the loaded scene still runs, with its voxel hull
+    }
+}
+
+} // namespace
+
+void SceneHost::adoptLoaded(sandcore::Scene scene, const SceneSettings& settings) {
+    BuiltScene loaded(std::move(scene));
+    loaded.drawing = drawingOfLoaded(loaded.scene, settings);
+    adopt(std::move(loaded), settings);
+}
+
 void SceneHost::startBuild(SceneSettings settings) {
     building_ = settings;
     buildStarted_ = Clock::now();
     // Scenes are built off the main thread so the window stays responsive.
-    build_ = std::async(std::launch::async, [settings = std::move(settings)] { return buildScene(settings); });
+    build_ = std::async(std::launch::async, [settings = std::move(settings)] { return buildSceneWithReport(settings); });
 }
 
 void SceneHost::requestBuild(const SceneSettings& settings) {
@@ -86,13 +118,13 @@ std::optional<BuildOutcome> SceneHost::pollBuild() {
     if (!build_.valid() || build_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
     BuildOutcome outcome;
     try {
-        sandcore::Scene scene = build_.get();
+        BuiltScene built = build_.get();
         if (waiting_) {
             // Newer settings arrived while this one was built: it is stale, build those instead.
             startBuild(*std::exchange(waiting_, std::nullopt));
             return std::nullopt;
         }
-        adopt(std::move(scene), building_);
+        adopt(std::move(built), building_);
         outcome.adopted = true;
         outcome.message = std::string("built ") + sceneKindName(scene_->kind()) + ", " +
                           std::to_string(scene_->grainCount()) + " grains";

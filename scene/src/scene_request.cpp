@@ -54,7 +54,8 @@ std::string defaultModelPath() { return std::string(SANDGLASS_SOURCE_DIR) + "/mo
 
 std::string defaultModelFor(SceneKind kind) {
     switch (kind) {
-    case SceneKind::Hourglass: return defaultModelPath();
+    // SPEC S12: the default scene shows a glass with thickness in its frame (S7-S10).
+    case SceneKind::Hourglass: return std::string(SANDGLASS_SOURCE_DIR) + "/models/framed_hourglass.obj";
     case SceneKind::Sculpture: return std::string(SANDGLASS_SOURCE_DIR) + "/models/snowman.obj";
     case SceneKind::Canvas: return {};
     }
@@ -122,6 +123,10 @@ void applySceneDefaults(SceneSettings& settings) {
     if (!request.shape.empty()) requireKnownShape(request.shape);
     if (request.kind == SceneKind::Canvas && (!request.modelPath.empty() || !request.shape.empty()))
         throw std::invalid_argument("the canvas takes no model or shape (they are for the hourglass and the sculpture)");
+    if (!request.upAxis.empty() && !sandcore::parseUpAxis(request.upAxis))
+        throw std::invalid_argument("--up must be one of +x, -x, +y, -y, +z, -z, got '" + request.upAxis + "'");
+    if (request.modelPath.empty() && (!request.upAxis.empty() || !request.partRoles.empty()))
+        throw std::invalid_argument(std::string(request.upAxis.empty() ? "--part" : "--up") + " applies to a model file (--model)");
 }
 
 BuiltScene buildSceneWithReport(const SceneSettings& requested) {
@@ -136,7 +141,7 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
         requireMemory("the canvas is", resolution, sandcore::estimateSceneBytes(SceneKind::Canvas, width),
                       request.memoryLimit);
         const sandcore::CanvasSettings canvas = sandcore::canvasSettingsForWidth(resolution);
-        return {sandcore::makeCanvasScene(canvas, step), std::nullopt, 0};
+        return BuiltScene(sandcore::makeCanvasScene(canvas, step));
     }
     const bool hourglass = request.kind == SceneKind::Hourglass;
     sandcore::HourglassSettings settings;
@@ -150,29 +155,46 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
         requireMemory("the " + shape + " is", resolution, sandcore::estimateSceneBytes(request.kind, size),
                       request.memoryLimit);
         const sandcore::InsideMask mask = makeProceduralMask(shape, resolution, request.neckRadius);
-        if (!hourglass) return {sandcore::makeSculptureScene(mask, step), std::nullopt, 0};
-        return {sandcore::makeHourglassScene(mask, settings, step), std::nullopt, 0};
+        if (!hourglass) return BuiltScene(sandcore::makeSculptureScene(mask, step));
+        return BuiltScene(sandcore::makeHourglassScene(mask, settings, step));
     }
     sandcore::VoxelizeSettings voxelize;
     voxelize.resolution = resolution;
     voxelize.stretch = request.stretch;
     voxelize.robust = request.robust;
     voxelize.threads = std::max(1, step.threads);
-    ModelVoxelization model = voxelizeModelFile(request.modelPath, voxelize,
-                                                hourglass ? ModelUse::Hourglass : ModelUse::Sculpture,
-                                                request.memoryLimit);
-    sandcore::InsideMask mask = model.voxels.mask;
+    ModelShapeRequest shape;
+    shape.kind = request.kind;
+    shape.roles = request.partRoles;
+    if (!request.upAxis.empty()) shape.up = sandcore::parseUpAxis(request.upAxis);
+    SandSpace space = loadSandSpace(request.modelPath, voxelize, hourglass ? ModelUse::Hourglass : ModelUse::Sculpture,
+                                    shape, request.memoryLimit);
+    sandcore::InsideMask mask = std::move(space.space);
     // thesis §3.4 noNoise: single cells and spikes left by discretisation; the hourglass split then
     // carves the upper bulb with noSharpEdges (makeHourglassScene).
     const std::int64_t removed = request.noiseThreshold >= 0 ? sandcore::removeNoise(mask, request.noiseThreshold) : 0;
     if (mask.countInside() == 0)
         throw ModelError(request.modelPath, "no cell lies inside the model at resolution " +
                                                 std::to_string(resolution) +
-                                                (model.voxels.closedness.closed ? "" : " (the mesh is open; try --robust)"));
+                                                (space.model.voxels.closedness.closed ? "" : " (the mesh is open; try --robust)"));
     try {
         sandcore::Scene scene = hourglass ? sandcore::makeHourglassScene(mask, settings, step)
-                                          : sandcore::makeSculptureScene(mask, step);
-        return {std::move(scene), std::move(model), removed};
+                                          : sandcore::makeSculptureScene(mask, space.obstacles, step);
+        BuiltScene built(std::move(scene));
+        built.model = std::move(space.model);
+        built.noiseCellsRemoved = removed;
+        built.parts = summarize(space.parts);
+        built.vessel = space.vessel;
+        built.upAxis = space.up;
+        built.upAxisFound = space.upFound;
+        built.cavityMilliseconds = space.cavityMilliseconds;
+        built.sandSpaceCells = mask.countInside();
+        ModelToWorld toWorld{space.model.voxels.placement, space.up, sandcore::maskOriginInScene(request.kind, mask)};
+        const sandcore::Int3 upperOrigin = built.scene.gridOrigin(sandcore::GridLevel::Upper);
+        const float height = float(upperOrigin.y + built.scene.grid(sandcore::GridLevel::Upper).size().y);
+        ModelDrawing drawing = makeModelDrawing(space.parts, toWorld, height);
+        if (!drawing.parts.empty()) built.drawing = std::make_shared<const ModelDrawing>(std::move(drawing));
+        return built;
     } catch (const std::invalid_argument& e) {
         throw ModelError(request.modelPath, e.what());
     }

@@ -163,8 +163,8 @@ std::uint64_t stateChecksum(std::span<const std::uint8_t> bytes, std::uint64_t s
 
 std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const SceneRequest& request) {
     ByteWriter out;
-    out.reserve(encodedSnapshotBytes(scene) + 2 * std::size_t(scene.layout(GridLevel::Upper).cellCount()) +
-                2 * std::size_t(scene.layout(GridLevel::Lower).cellCount()) + 4 * scene.fillCells().size() + 4096);
+    out.reserve(encodedSnapshotBytes(scene) + 2 * std::size_t(scene.grid(GridLevel::Upper).cellCount()) +
+                2 * std::size_t(scene.grid(GridLevel::Lower).cellCount()) + 4 * scene.fillCells().size() + 4096);
     out.put<std::uint8_t>(std::uint8_t(scene.kind()));
     out.put<std::uint64_t>(scene.settings().seed);
     out.put<std::int32_t>(scene.settings().threads);

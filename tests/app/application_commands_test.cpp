@@ -6,6 +6,8 @@
 #include "app/application.hpp"
 #include "app/frame_benchmark_runner.hpp"
 
+#include <GLFW/glfw3.h>
+
 #include "sandcore/display_positions.hpp"
 
 #include <doctest/doctest.h>
@@ -162,4 +164,36 @@ TEST_CASE("application: seed and threads from the panel apply to the next step w
     CHECK(app->scene().settings().threads == 2);
     CHECK(app->scene().settings().seed == 5);
     CHECK(app->scene().counters().stepsDone == stepsBefore); // the same scene runs on
+}
+
+TEST_CASE("application: Esc during the frame benchmark stops it without quitting, and says so") {
+    if (!testing::requireDisplay("cancelling the benchmark")) return;
+    std::optional<Application> app = open(smallHourglass(0));
+    if (!app) return;
+    GLFWwindow* handle = app->window().handle();
+    const GLFWkeyfun keyCallback = glfwSetKeyCallback(handle, nullptr);
+    glfwSetKeyCallback(handle, keyCallback);
+    REQUIRE(bool(keyCallback));
+    BenchmarkTiming timing;
+    timing.minFrames = 2;
+    timing.maxFrames = 2;
+    timing.warmupFrames = 0;
+    int frames = 0;
+    std::vector<Application::BenchmarkProgress> seen;
+    const std::vector<BenchmarkCase> cases(6, BenchmarkCase{});
+    const BenchmarkReport report = runFrameBenchmark(*app, cases, timing, [&] {
+        seen.push_back(app->benchmarkProgress());
+        if (++frames == 5) keyCallback(handle, GLFW_KEY_ESCAPE, 0, GLFW_PRESS, 0); // Esc in the third row
+    });
+    CHECK(report.cancelled);
+    CHECK(report.rows.size() == 2); // the rows finished before Esc
+    REQUIRE(seen.size() >= 5);
+    CHECK(seen.front().running);
+    CHECK(seen.front().rows == 6);
+    CHECK(seen[4].rowsDone == 2);
+    CHECK_FALSE(app->state().commands.contains(Command::Quit)); // Esc stopped the benchmark, not the program
+    CHECK_FALSE(app->benchmarkProgress().running);
+    // Esc after the benchmark quits, as ever.
+    keyCallback(handle, GLFW_KEY_ESCAPE, 0, GLFW_PRESS, 0);
+    CHECK(app->state().commands.contains(Command::Quit));
 }

@@ -7,7 +7,10 @@
 
 #include <doctest/doctest.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <fstream>
+#include <thread>
 #include <optional>
 
 using namespace sandglass;
@@ -48,4 +51,84 @@ TEST_CASE("file commands: save, run on, open gives back the saved scene, and a d
     app->serveCommands();
     CHECK(app->scene().stateHash() == running);
     CHECK(app->state().statusLine.rfind((folder / "broken.sand").string() + ": ", 0) == 0);
+}
+
+TEST_CASE("file commands: a window started on a state file builds nothing else first") {
+    TemporaryFolder folder;
+    ApplicationOptions first;
+    first.window = {96, 96, false, false, "sandglass start-state test"};
+    first.offscreen = true;
+    first.initial.showGui = false;
+    first.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
+    first.initial.scene.request.modelPath.clear();
+    first.initial.scene.request.shape = "hourglass";
+    first.initial.scene.request.resolution = 20;
+    std::uint64_t saved = 0;
+    {
+        std::optional<Application> app = testing::openApplication(first, "starting on a state file");
+        if (!app) return;
+        app->runSteps(25);
+        saved = app->scene().stateHash();
+        app->state().files.statePath = (folder / "start.sand").string();
+        app->state().commands.push(Command::SaveState);
+        app->serveCommands();
+    }
+    // Settings that cannot be built: they would fail if anything but the state were built.
+    ApplicationOptions options = first;
+    options.initial.scene.request.modelPath = (folder / "no-such-model.obj").string();
+    options.stateFile = folder / "start.sand";
+    std::optional<Application> app = testing::openApplication(options, "starting on a state file");
+    if (!app) return;
+    CHECK(app->scene().stateHash() == saved);
+    CHECK(app->state().files.statePath == (folder / "start.sand").string());
+    CHECK(app->state().loaded.request.shape == "hourglass");
+    CHECK(app->state().files.unsavedEdits == 0);
+}
+
+TEST_CASE("file commands: a .sand file chosen in the file dialog opens, and Cancel changes nothing") {
+    TemporaryFolder folder;
+    ApplicationOptions options;
+    options.window = {96, 96, false, false, "sandglass file dialog test"};
+    options.offscreen = true;
+    options.initial.showGui = false;
+    options.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
+    options.initial.scene.request.modelPath.clear();
+    options.initial.scene.request.shape = "hourglass";
+    options.initial.scene.request.resolution = 20;
+    std::optional<Application> app = testing::openApplication(std::move(options), "the file dialog");
+    if (!app) return;
+    app->runSteps(15);
+    const std::uint64_t saved = app->scene().stateHash();
+    app->state().files.statePath = (folder / "chosen.sand").string();
+    app->state().commands.push(Command::SaveState);
+    app->serveCommands();
+    app->runSteps(15);
+    REQUIRE(app->scene().stateHash() != saved);
+    // A stand-in for zenity that answers with the saved file.
+    const std::filesystem::path chooser = folder / "chooser.sh";
+    std::ofstream(chooser) << "#!/bin/sh\necho '" << (folder / "chosen.sand").string() << "'\n";
+    std::filesystem::permissions(chooser, std::filesystem::perms::owner_all);
+    ::setenv("SANDGLASS_FILE_CHOOSER", chooser.c_str(), 1);
+    app->state().files.statePath = "elsewhere.sand";
+    app->state().files.choosing = FileChoice::OpenState;
+    app->state().commands.push(Command::ChooseFile);
+    app->serveCommands();
+    for (int frame = 0; frame < 1000 && app->scene().stateHash() != saved; ++frame) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        app->serveCommands();
+    }
+    CHECK(app->scene().stateHash() == saved);
+    CHECK(app->state().files.statePath == (folder / "chosen.sand").string());
+    // Cancel: the dialog ends without a path and nothing changes.
+    std::ofstream(chooser) << "#!/bin/sh\nexit 1\n";
+    app->runSteps(5);
+    const std::uint64_t running = app->scene().stateHash();
+    app->state().commands.push(Command::ChooseFile);
+    app->serveCommands();
+    for (int frame = 0; frame < 100; ++frame) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        app->serveCommands();
+    }
+    CHECK(app->scene().stateHash() == running);
+    CHECK(app->state().files.statePath == (folder / "chosen.sand").string());
 }

@@ -1,4 +1,5 @@
 // SPEC E1, E2 through the real executable: simulate --save / --load / --export, voxelize --out.
+#include "support/display_guard.hpp"
 #include "support/run_process.hpp"
 #include "support/temporary_folder.hpp"
 
@@ -89,4 +90,22 @@ TEST_CASE("voxelize --out writes the inside cells as .binvox or .vox") {
     const auto bad = runSandglass("voxelize " + kVessel + " --res 24 --out " + quoted(folder / "glass.png"));
     CHECK(bad.exitCode == 2);
     CHECK(lineCount(bad.err) == 1);
+}
+
+TEST_CASE("gui --load opens the saved state in the window, and a damaged file is one line and exit 1") {
+    if (!sandglass::testing::requireDisplay("gui --load")) return;
+    TemporaryFolder folder;
+    const auto state = folder / "glass.sand";
+    REQUIRE(runSandglass("simulate --scene hourglass --shape hourglass --res 20 --steps 30 --save " + quoted(state)).exitCode == 0);
+    const auto opened = runSandglass("gui --frames 1 --size 160x120 --load " + quoted(state));
+    INFO(opened.out, opened.err);
+    REQUIRE(opened.exitCode == 0);
+    CHECK(opened.out.find("frames 1, steps 30,") != std::string::npos);
+    std::ofstream(folder / "broken.sand") << "SANDGLASS but not really";
+    const auto broken = runSandglass("gui --frames 1 --size 160x120 --load " + quoted(folder / "broken.sand"));
+    CHECK(broken.exitCode == 1);
+    CHECK(lineCount(broken.err) == 1);
+    CHECK(broken.err.find((folder / "broken.sand").string()) != std::string::npos);
+    // The state says what the scene is: scene options beside --load are a usage error.
+    CHECK(runSandglass("gui --frames 1 --res 30 --load " + quoted(state)).exitCode == 2);
 }

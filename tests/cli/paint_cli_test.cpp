@@ -1,5 +1,5 @@
-// SPEC P5 at the command line: --draft loads a draft (a bad one is one line on stderr and the
-// canvas still opens), --paint-demo pours a drawing over it through the mouse path.
+// SPEC P5 at the command line: --draft loads a draft (a bad one is one line on stderr and a
+// failed run, as a bad --load), --paint-demo pours a drawing over it through the mouse path.
 #include "support/display_guard.hpp"
 #include "support/run_process.hpp"
 
@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-TEST_CASE("cli: --paint-demo pours sand over the draft, a bad --draft is one line and the canvas runs on") {
+TEST_CASE("cli: --paint-demo pours sand over the draft, a bad --draft is one line and a failed run") {
     if (!sandglass::testing::requireDisplay("the painting demo")) return;
     const std::string sun = std::string(SANDGLASS_SOURCE_DIR) + "/models/draft_sun.png";
     const cli::ProcessResult demo =
@@ -19,9 +19,9 @@ TEST_CASE("cli: --paint-demo pours sand over the draft, a bad --draft is one lin
 
     const cli::ProcessResult bad =
         cli::runSandglass("gui --scene canvas --res 32 --size 320x240 --frames 1 --draft no-such-draft.png");
-    CHECK(bad.exitCode == 0);
+    CHECK(bad.exitCode == 1);
     CHECK(bad.err == "sandglass: no-such-draft.png: no such file\n");
-    CHECK(bad.out.find("frames 1") != std::string::npos);
+    CHECK(bad.out.find("frames 1") == std::string::npos);
 
     const cli::ProcessResult misuse = cli::runSandglass("gui --paint-demo 2 --frames 1");
     CHECK(misuse.exitCode != 0);

@@ -4,7 +4,10 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdlib>
 #include <fstream>
+#include <iterator>
+#include <vector>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -66,4 +69,47 @@ TEST_CASE("an atomic write replaces the file whole, and a failed one leaves the 
         std::filesystem::permissions(readOnly, std::filesystem::perms::owner_all);
     }
     CHECK(contentOf(file) == "second");
+}
+
+TEST_CASE("numbered files: the first free number is taken and no existing file is ever replaced") {
+    TemporaryFolder folder;
+    const std::vector<std::uint8_t> first{1, 2, 3}, second{4, 5}, third{6};
+    CHECK(writeNewNumberedFile(folder.path(), "shot", ".png", first) == folder / "shot-1.png");
+    CHECK(writeNewNumberedFile(folder.path(), "shot", ".png", second) == folder / "shot-2.png");
+    // A file another program made, and one of an earlier run, stay as they are.
+    std::ofstream(folder / "shot-3.png") << "someone else's";
+    CHECK(writeNewNumberedFile(folder.path(), "shot", ".png", third, 2) == folder / "shot-4.png");
+    CHECK(contentOf(folder / "shot-1.png") == std::string("\1\2\3"));
+    CHECK(contentOf(folder / "shot-2.png") == std::string("\4\5"));
+    CHECK(contentOf(folder / "shot-3.png") == "someone else's");
+    CHECK(contentOf(folder / "shot-4.png") == std::string("\6"));
+    // Nothing but the four files: no temporary file is left behind.
+    CHECK(std::distance(std::filesystem::directory_iterator(folder.path()), std::filesystem::directory_iterator()) == 4);
+}
+
+TEST_CASE("numbered files: a missing folder is one line naming it, and nothing is written") {
+    TemporaryFolder folder;
+    const std::string message =
+        errorOf([&] { writeNewNumberedFile(folder / "missing", "shot", ".png", std::vector<std::uint8_t>{1}); });
+    CHECK(message.find((folder / "missing").string()) != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+    CHECK(std::filesystem::is_empty(folder.path()));
+}
+
+TEST_CASE("pictures folder: the desktop's user-dirs entry, else ~/Pictures, else the current folder") {
+    TemporaryFolder home;
+    ::setenv("HOME", home.path().c_str(), 1);
+    ::unsetenv("XDG_PICTURES_DIR");
+    ::unsetenv("XDG_CONFIG_HOME");
+    CHECK(defaultPicturesFolder() == std::filesystem::current_path());
+    std::filesystem::create_directory(home / "Pictures");
+    CHECK(defaultPicturesFolder() == home / "Pictures");
+    std::filesystem::create_directories(home / ".config");
+    std::filesystem::create_directory(home / "Bilder");
+    std::ofstream(home / ".config" / "user-dirs.dirs") << "# written by xdg-user-dirs-update\n"
+                                                          "XDG_DESKTOP_DIR=\"$HOME/Desktop\"\n"
+                                                          "XDG_PICTURES_DIR=\"$HOME/Bilder\"\n";
+    CHECK(defaultPicturesFolder() == home / "Bilder");
+    ::setenv("XDG_PICTURES_DIR", home.path().c_str(), 1);
+    CHECK(defaultPicturesFolder() == home.path());
 }

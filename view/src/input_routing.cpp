@@ -37,6 +37,7 @@ KeyCommand keyCommand(const InputCapture& capture, int glfwKey, int glfwModifier
     }
     switch (glfwKey) {
     case GLFW_KEY_SPACE: return KeyCommand::ToggleGui;
+    case GLFW_KEY_F1: return KeyCommand::Help;
     case GLFW_KEY_F: return KeyCommand::PrintFrameRate;
     case GLFW_KEY_B: return KeyCommand::RunBenchmark;
     case GLFW_KEY_ESCAPE: return KeyCommand::Quit;
@@ -54,12 +55,13 @@ KeyCommand keyCommand(const InputCapture& capture, int glfwKey, int glfwModifier
 }
 
 KeyCommand characterCommand(const InputCapture& capture, unsigned codepoint) {
-    // '#', '+' and '-' sit on different keys per keyboard layout, so they come as characters.
+    // '#', '+', '-' and '?' sit on different keys per keyboard layout, so they come as characters.
     if (capture.keyboard) return KeyCommand::None;
     switch (codepoint) {
     case '#': return KeyCommand::PrintFilledCells;
     case '+': return KeyCommand::ZoomIn;
     case '-': return KeyCommand::ZoomOut;
+    case '?': return KeyCommand::Help;
     default: return KeyCommand::None;
     }
 }

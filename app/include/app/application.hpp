@@ -5,6 +5,7 @@
 #include "app/imgui_layer.hpp"
 #include "view/app_state.hpp"
 #include "view/camera.hpp"
+#include "view/file_chooser.hpp"
 #include "view/input_routing.hpp"
 #include "view/paint/canvas_controller.hpp"
 #include "view/render/framebuffer.hpp"
@@ -32,6 +33,8 @@ struct ApplicationOptions {
     std::filesystem::path benchmarkFolder = "."; ///< where the B key writes benchmark.txt and .csv
     UndoLimits undo;                 ///< P7: strokes and bytes the canvas keeps for undo (32, 256 MiB)
     float cameraZoom = 1.0f;         ///< start closer (< 1) or farther (> 1) than the framing distance
+    std::filesystem::path stateFile; ///< E1: open this saved state instead of building `initial.scene`
+    std::filesystem::path screenshotFolder; ///< E4: where P saves; empty = the desktop's pictures folder
 };
 
 /// The window loop: poll -> new frame -> panels -> commands -> steps by the clock -> scene ->
@@ -40,8 +43,9 @@ struct ApplicationOptions {
 /// `sandglass render` and the frames the frame-rate benchmark measures.
 class Application {
 public:
-    /// Opens the window and builds the scene; throws WindowError (no display / GL context),
-    /// std::invalid_argument (bad scene settings) or std::runtime_error (shader problem).
+    /// Opens the window and builds the scene (or opens options.stateFile); throws WindowError (no
+    /// display / GL context), std::invalid_argument (bad scene settings), FileError or
+    /// StateFileError (a state file that cannot be opened) or std::runtime_error (shader problem).
     explicit Application(ApplicationOptions options);
     ~Application();
     Application(const Application&) = delete;
@@ -65,6 +69,11 @@ public:
     /// The canvas mouse path: the window's mouse handling calls it every frame in the canvas
     /// scene, tests call it with scripted samples. Returns true when grains changed.
     bool handleCanvasPointer(const PointerSample& sample);
+    /// Obstacle placement with the mouse (after PaintingSettings "Place with the mouse" arms
+    /// AppState::obstacleDrag): a left press on the canvas floor starts a box, moves stretch it,
+    /// the release queues AddObstacle with the box (and the typed form's heights). The window's
+    /// mouse handling calls it while armed; tests call it with scripted samples.
+    void handleObstacleDrag(double x, double y, bool leftDown, const InputCapture& capture);
     /// The canvas column under a cursor position (window coordinates) on the surface the
     /// painting settings pick (source or target); the same lookup a stroke makes.
     std::optional<CanvasColumn> columnUnderCursor(double cursorX, double cursorY);
@@ -78,6 +87,20 @@ public:
     bool loadStateFile(const std::string& path);
     /// Serves the commands the panels and keys queued (rebuild, reset, undo, draft, obstacles...).
     void serveCommands();
+    /// A mouse button pressed or released at (x, y) window units: the GLFW callback calls this
+    /// for every event, so several clicks between two frames each reach the panels.
+    void queueMouseButton(int button, bool pressed, double x, double y);
+
+    /// The frame benchmark's progress (B key, bench --render): rows done of rows, and whether
+    /// Esc asked to stop it.
+    struct BenchmarkProgress {
+        bool running = false;
+        bool cancelRequested = false;
+        int rowsDone = 0;
+        int rows = 0;
+    };
+    BenchmarkProgress& benchmarkProgress() { return benchmark_; }
+
     /// Runs simulation steps now, outside the clock (for scripted drawings and tests).
     void runSteps(int steps) { host_.runSteps(steps); }
     /// Share (0..1) of the last step's glide that frames draw now.
@@ -108,8 +131,14 @@ private:
     void drawOverlays();
     void drawBrushOutline();
     bool saveScreenshot(const std::filesystem::path& file);
-    std::filesystem::path nextScreenshotName();
+    void saveNumberedScreenshot(const RgbImage& image);
+    bool saveStateFile();
+    void askToQuit();
+    void serveChosenFile(const ChosenFile& chosen);
     void runInteractiveBenchmark();
+    void buildWindows();
+    void drawBenchmarkProgress();
+    void drawObstacleBox();
 
     ApplicationOptions options_;
     AppState state_;
@@ -128,6 +157,10 @@ private:
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
     std::int64_t framesDrawn_ = 0;
     int screenshotsTaken_ = 0;
+    BenchmarkProgress benchmark_;
+    std::optional<RgbImage> sceneOnlyFrame_; // this frame before the panels, for a screenshot without them
+    bool quitRequested_ = false;             // the loop ends after this frame
+    FileChooser fileChooser_;
 };
 
 } // namespace sandglass

@@ -47,6 +47,7 @@ struct BenchmarkReport {
     std::string glVersion;    ///< GL_VERSION
     int width = 0, height = 0; ///< framebuffer, pixels
     std::vector<BenchmarkRow> rows; ///< in thesisBenchmarkCases order
+    bool cancelled = false;    ///< stopped by Esc before every row ran (rows holds those that finished)
 };
 
 /// How long each row runs: at least minFrames, then until maxFrames or maxSeconds.

@@ -6,14 +6,17 @@
 #include "app/application.hpp"
 #include "app/frame_benchmark.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace sandglass {
 
 /// Runs each case on a fresh scene built from the settings of the application's running scene,
 /// for the frames `timing` asks; returns the rows with the GPU named. Used by the B key and by
-/// `sandglass bench --render`. Throws what building the scene throws.
+/// `sandglass bench --render`. Esc in the window stops it (BenchmarkReport::cancelled);
+/// `afterEachFrame` runs after every frame (tests press keys there). Throws what building the
+/// scene throws.
 BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkCase>& cases,
-                                  const BenchmarkTiming& timing);
+                                  const BenchmarkTiming& timing, const std::function<void()>& afterEachFrame = {});
 
 } // namespace sandglass

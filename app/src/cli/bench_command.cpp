@@ -4,6 +4,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/checked_options.hpp"
 #include "app/cli/view_options.hpp"
+#include "app/cli/terminal_progress.hpp"
 #include "app/frame_benchmark_runner.hpp"
 
 #include "bench/speed_error_report.hpp"
@@ -59,7 +60,11 @@ int runSpeedErrorReport(const BenchOptions& options) {
     if (options.step.threads != 2) report.commandLine += " --threads " + std::to_string(options.step.threads);
     if (options.step.seed != 1) report.commandLine += " --seed " + std::to_string(options.step.seed);
     if (options.step.physics.level != sandcore::PhysicsLevel::Classic) report.commandLine += " --physics granular";
-    const bool passed = sandbench::writeSpeedErrorReport(report, std::cerr);
+    bool passed = false;
+    {
+        ElapsedTicker ticker("bench", std::cerr); // the stages' lines scroll above the elapsed time
+        passed = sandbench::writeSpeedErrorReport(report, ticker.stream());
+    }
     std::cout << "report written to " << (report.outDir / "README.md").string() << "\n";
     if (!passed) std::cerr << "sandglass: some checks of the report failed (see the report)\n";
     return passed ? 0 : 1;

@@ -20,8 +20,11 @@ struct GuiOptions {
     std::string benchmarkFolder = ".";
     std::string draft;
     std::string load; ///< E1: a saved state to open instead of the built scene
+    std::string screenshotFolder; ///< E4: where P saves screenshots
     int paintDemoPasses = 0;
     int timerSeconds = 0;
+    std::string panelTab; ///< the panel tab shown first
+    bool showHelp = false; ///< open with the keys and mouse controls shown
 };
 
 int runGui(const GuiOptions& options) {
@@ -30,14 +33,16 @@ int runGui(const GuiOptions& options) {
     settings.frameLimit = options.frames;
     settings.screenshotFile = options.screenshot;
     settings.benchmarkFolder = options.benchmarkFolder;
+    settings.stateFile = options.load; // opened in place of the scene: nothing else is built first
+    settings.screenshotFolder = options.screenshotFolder;
     Application application(std::move(settings));
-    if (!options.load.empty() && !application.loadStateFile(options.load)) {
+    // A draft asked for on the command line that cannot be read fails the run, like --load.
+    if (!options.draft.empty() && !application.loadDraft(options.draft)) {
         std::fprintf(stderr, "sandglass: %s\n", application.state().statusLine.c_str());
         return 1;
     }
-    // A bad draft is reported and the canvas opens without one (SPEC P5, §8).
-    if (!options.draft.empty() && !application.loadDraft(options.draft))
-        std::fprintf(stderr, "sandglass: %s\n", application.state().statusLine.c_str());
+    application.state().openTab = options.panelTab;
+    application.state().showHelp = options.showHelp;
     if (options.paintDemoPasses > 0)
         std::printf("paint demo: %lld grains poured\n", (long long)paintDraftDemo(application, options.paintDemoPasses));
     if (options.timerSeconds > 0) {
@@ -63,11 +68,17 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
     addViewOptions(*cmd, options->view);
     cmd->add_flag("--run", options->run, "start with the simulation on (the thesis starts with it off)");
     addNumberOption(*cmd, "--frames", options->frames, 0, 100'000'000, "close after this many frames (for tests and screenshots)");
-    cmd->add_option("--screenshot", options->screenshot, "with --frames: save the last frame as PNG");
+    cmd->add_option("--screenshot", options->screenshot, "with --frames: save the last frame, panels included, as PNG");
+    cmd->add_option("--screenshot-dir", options->screenshotFolder,
+                    "where the P key saves sandglass-N.png (default: the desktop's pictures folder, else the current one)");
     cmd->add_option("--benchmark-dir", options->benchmarkFolder, "where the B key writes benchmark.txt and .csv")
         ->capture_default_str();
-    cmd->add_option("--load", options->load, "open a saved .sand state (simulate --save, Ctrl+S)");
-    cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image (P5)");
+    auto* load = cmd->add_option("--load", options->load, "open a saved .sand state (simulate --save, Ctrl+S) instead of building a scene");
+    for (const char* sceneOption : {"--scene", "--model", "--shape", "--res"}) load->excludes(sceneOption);
+    cmd->add_option("--draft", options->draft, "canvas: show this PNG or JPEG as the draft image to paint over");
+    cmd->add_option("--panel", options->panelTab, "open the panel on this tab")
+        ->check(CLI::IsMember({"run", "view", "scene", "paint", "file"}));
+    cmd->add_flag("--show-controls", options->showHelp, "open with the keys and mouse controls shown (F1 in the window)");
     addNumberOption(*cmd, "--paint-demo", options->paintDemoPasses, 1, 50,
                     "canvas with --draft: pour this many layers of sand over the draft, colour from draft");
     addNumberOption(*cmd, "--timer", options->timerSeconds, 1, 999 * 60 + 59,
@@ -79,6 +90,8 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
             throw std::invalid_argument("--screenshot needs --frames N (the key P saves screenshots interactively)");
         // Checked before the window opens, so a run does not end in a failed write.
         if (!options->screenshot.empty()) requireWritableFileTarget(options->screenshot);
+        if (!options->screenshotFolder.empty()) requireWritableFileTarget(std::filesystem::path(options->screenshotFolder) / "sandglass-1.png");
+        if (!options->load.empty()) requireReadableRegularFile(options->load);
         exitCode = runGui(*options);
     });
 }

@@ -24,6 +24,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& options) {
     command.add_flag("--robust", request.robust, "model: majority-vote inside test for open meshes");
     addNumberOption(command, "--noise", request.noiseThreshold, kNoiseRange.min, kNoiseRange.max,
                     "model: remove cells with at most this many inside face neighbours (-1 = off, default 1)");
+    command.add_option("--part", options.parts,
+                       "model: set a part's role, NAME=ROLE with ROLE vessel, frame, sand or static (repeatable)");
+    command.add_option("--up", request.upAxis,
+                       "model: the axis that points up, +x -x +y -y +z -z (default: found for the hourglass, +y for the sculpture)");
     addNumberOption(command, "--seed", step.seed, std::uint64_t{0}, std::numeric_limits<std::uint64_t>::max(),
                     "seed of the slip randomness (default 1)");
     addNumberOption(command, "--threads", step.threads, kThreadsRange.min, kThreadsRange.max,
@@ -40,6 +44,7 @@ void addSceneOptions(CLI::App& command, SceneOptions& options) {
 SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     SceneSettings settings = options.settings;
     settings.request.kind = parseSceneKind(options.scene);
+    for (const std::string& part : options.parts) settings.request.partRoles.push_back(parsePartRoleChoice(part));
     const auto physics = sandcore::parsePhysicsLevel(options.physics);
     if (!physics) throw std::invalid_argument("--physics must be classic or granular, got '" + options.physics + "'");
     settings.step.physics.level = *physics;

@@ -2,6 +2,8 @@
 // and the speed, as text or one JSON object.
 #include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
+#include "app/cli/model_shape_json.hpp"
+#include "app/cli/terminal_progress.hpp"
 #include "app/cli/scene_options.hpp"
 #include "scene/file_io.hpp"
 #include "scene/hex.hpp"
@@ -47,15 +49,16 @@ struct SimulateOptions {
 };
 
 // The scene to run: a loaded state (the file's seed and settings, unless given here) or a new build.
-sandcore::Scene sceneFor(const SimulateOptions& options, const CLI::App& command, SceneSettings& settings) {
-    if (options.load.empty()) return buildScene(settings);
+// A built scene carries the model's report (S7-S9); a loaded state has none.
+BuiltScene sceneFor(const SimulateOptions& options, const CLI::App& command, SceneSettings& settings) {
+    if (options.load.empty()) return buildSceneWithReport(settings);
     LoadedState loaded = loadState(options.load);
     if (command.count("--threads")) loaded.scene.setThreads(settings.step.threads);
     if (command.count("--seed")) loaded.scene.setSeed(settings.step.seed);
     if (options.fullSweep) loaded.scene.setSleeping(false);
     settings = loaded.settings;
     settings.step = loaded.scene.settings();
-    return std::move(loaded.scene);
+    return BuiltScene(std::move(loaded.scene));
 }
 
 int runSimulate(const SimulateOptions& options, const CLI::App& command) {
@@ -68,7 +71,8 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         exportFormatOf(options.exportFile);
         requireWritableFileTarget(options.exportFile);
     }
-    sandcore::Scene scene = sceneFor(options, command, settings);
+    BuiltScene built = sceneFor(options, command, settings);
+    sandcore::Scene& scene = built.scene;
     const bool canvas = settings.request.kind == sandcore::SceneKind::Canvas;
     if (options.pour > 0 && !canvas)
         throw std::invalid_argument("--pour releases sand on the canvas; use it with --scene canvas");
@@ -107,7 +111,10 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     std::int64_t moves = 0, visited = 0, done = 0, poured = 0;
     std::string trace = options.trace.empty() ? std::string() : "step,grains_upper,grains_lower,moves\n";
     const auto start = Clock::now();
+    // On a terminal only: --json and piped output stay as they are.
+    TerminalProgress progress("simulate", "steps");
     while (done < stepLimit) {
+        progress.update(double(done), options.untilSettled ? 0.0 : double(stepLimit));
         // A pour waits while its cell is still taken, so every grain asked for is released.
         if (poured < options.pour && scene.addGrain(sandcore::GridLevel::Upper, pourAt) >= 0) ++poured;
         const auto before = Clock::now();
@@ -124,6 +131,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         flipDue(done);
         if (options.untilSettled && poured >= options.pour && scene.settled()) break;
     }
+    progress.finish();
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!options.trace.empty()) writeFileAtomically(options.trace, trace);
     const double stepsPerSecond = seconds > 0 ? double(done) / seconds : 0.0;
@@ -161,6 +169,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         if (!options.load.empty()) out["loaded"] = options.load;
         if (!options.save.empty()) out["saved"] = options.save;
         if (!options.exportFile.empty()) out["exported"] = options.exportFile;
+        addModelShapeJson(out, built);
         std::cout << out.dump() << "\n";
         return 0;
     }

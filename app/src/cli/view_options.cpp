@@ -10,12 +10,15 @@ namespace sandglass {
 void addViewOptions(CLI::App& command, ViewOptions& options) {
     addSceneOptions(command, options.scene);
     command.add_option("--mode", options.mode, "points, sprites, billboards or pseudo")->capture_default_str();
+    command.add_option("--palette", options.palette, "sand colours: desert, beach, white, volcanic or layers")
+        ->capture_default_str();
     addNumberOption(command, "--grains-per-cell", options.grainsPerCell, 1, kMaxGrainsPerCell,
                     "grains drawn per cell (default 4)");
     command.add_flag("--light", options.light, "lighting from estimated normals");
     command.add_flag("--no-inner", options.hideInner, "skip grains hidden by their neighbours");
     command.add_flag("--black", options.black, "black background (default white)");
     command.add_flag("--no-hull", options.noHull, "do not draw the glass vessel");
+    command.add_flag("--voxel-hull", options.voxelHull, "draw a model's vessel as its voxel cells, not as modelled");
     command.add_option("--size", options.size, "window or image size in pixels, WxH");
     addNumberOption(command, "--steps", options.steps, 0, 100'000'000, "simulation steps before the first frame");
     addNumberOption(command, "--zoom", options.zoom, 0.05f, 20.0f,
@@ -33,11 +36,16 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
     const std::optional<RenderMode> mode = parseRenderMode(options.mode);
     if (!mode) throw std::invalid_argument("--mode: unknown mode '" + options.mode + "' (points, sprites, billboards or pseudo)");
     state.render.mode = *mode;
+    const std::optional<SandPalette> palette = parseSandPalette(options.palette);
+    if (!palette)
+        throw std::invalid_argument("--palette: unknown palette '" + options.palette + "' (desert, beach, white, volcanic or layers)");
+    state.render.palette = *palette;
     state.render.grainsPerCell = options.grainsPerCell;
     state.render.lighting = options.light;
     state.render.innerGrains = !options.hideInner;
     state.render.blackBackground = options.black;
     state.render.hull = !options.noHull;
+    state.render.voxelHull = options.voxelHull;
     result.cameraZoom = options.zoom;
     result.window.width = defaultWidth;
     result.window.height = defaultHeight;

@@ -2,8 +2,11 @@
 // the inside cells, the mesh and voxel volumes and whether the mesh is closed.
 #include "app/cli/checked_options.hpp"
 #include "app/cli/commands.hpp"
+#include "app/cli/model_shape_json.hpp"
 #include "scene/file_io.hpp"
+#include "app/cli/terminal_progress.hpp"
 #include "scene/model_voxelizer.hpp"
+#include "scene/sand_space.hpp"
 #include "scene/scene_export.hpp"
 #include "scene/scene_request.hpp"
 
@@ -13,7 +16,9 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace sandglass {
 
@@ -22,6 +27,9 @@ namespace {
 struct VoxelizeOptions {
     std::string file;
     sandcore::VoxelizeSettings settings;
+    std::string scene = "hourglass";
+    std::vector<std::string> parts;
+    std::string up;
     bool json = false;
     std::string out; ///< E2: write the inside cells here (.vox or .binvox)
 };
@@ -33,8 +41,23 @@ int runVoxelize(const VoxelizeOptions& options) {
             throw std::invalid_argument("--out " + options.out + ": the voxels go to a .vox or .binvox file");
         requireWritableFileTarget(options.out);
     }
-    const ModelVoxelization model = voxelizeModelFile(options.file, options.settings, ModelUse::MaskOnly);
-    if (!options.out.empty()) writeInsideMask(options.out, model.voxels.mask, &model.voxels.placement);
+    ModelShapeRequest request;
+    request.kind = parseSceneKind(options.scene);
+    if (request.kind == sandcore::SceneKind::Canvas) throw std::invalid_argument("--scene: the canvas has no model");
+    for (const std::string& part : options.parts) request.roles.push_back(parsePartRoleChoice(part));
+    if (!options.up.empty()) {
+        request.up = sandcore::parseUpAxis(options.up);
+        if (!request.up) throw std::invalid_argument("--up must be one of +x, -x, +y, -y, +z, -z, got '" + options.up + "'");
+    }
+    const SandSpace space = [&] {
+        const ElapsedTicker ticker("voxelize " + std::filesystem::path(options.file).filename().string(), std::cerr);
+        return loadSandSpace(options.file, options.settings, ModelUse::MaskOnly, request);
+    }();
+    const ModelVoxelization& model = space.model;
+    // The placement is in the model's axes; a turned mask is written without it.
+    if (!options.out.empty())
+        writeInsideMask(options.out, model.voxels.mask,
+                        space.up == sandcore::UpAxis::PlusY ? &model.voxels.placement : nullptr);
     const sandcore::VoxelizeResult& v = model.voxels;
     const sandcore::Int3 g = v.mask.size;
     const bool closed = v.closedness.closed;
@@ -53,6 +76,13 @@ int runVoxelize(const VoxelizeOptions& options) {
         out["threads"] = options.settings.threads;
         out["robust"] = options.settings.robust;
         if (!options.out.empty()) out["out"] = options.out;
+        out["parts"] = partsJson(summarize(space.parts));
+        out["vessel"] = vesselKindName(space.vessel);
+        out["up_axis"] = sandcore::upAxisName(space.up);
+        out["up_axis_found"] = space.upFound;
+        out["sand_space_cells"] = space.space.countInside();
+        out["cavities"] = space.cavities;
+        out["cavity_milliseconds"] = space.cavityMilliseconds;
         std::cout << out.dump() << "\n";
         return 0;
     }
@@ -69,6 +99,12 @@ int runVoxelize(const VoxelizeOptions& options) {
         std::printf("no mesh volume: the mesh is open%s\n", options.settings.robust ? "" : " (try --robust)");
     std::printf("voxelized in %.2f ms with %d thread(s)\n", model.milliseconds, options.settings.threads);
     if (!options.out.empty()) std::printf("wrote the inside cells to %s\n", options.out.c_str());
+    for (const ModelPart& part : space.parts)
+        std::printf("part %s: %zu triangles, %s, %s\n", part.name.c_str(), part.mesh.triangles.size(),
+                    part.closed ? "closed" : "open", partRoleName(part.role));
+    std::printf("sand space: %s, %lld cells, %d cavities (%.2f ms), up axis %s%s\n", vesselKindName(space.vessel),
+                (long long)space.space.countInside(), space.cavities, space.cavityMilliseconds,
+                sandcore::upAxisName(space.up), space.upFound ? " (found)" : "");
     return 0;
 }
 
@@ -84,6 +120,9 @@ void addVoxelizeCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("--stretch", options->settings.stretch, "scale every axis to --res cells (aspect not kept)");
     addNumberOption(*cmd, "--threads", options->settings.threads, kThreadsRange.min, kThreadsRange.max,
                     "threads that share the rows (default 1; same result for any count)");
+    cmd->add_option("--scene", options->scene, "hourglass (finds the cavity and up axis) or sculpture")->capture_default_str();
+    cmd->add_option("--part", options->parts, "set a part's role, NAME=ROLE (vessel, frame, sand, static; repeatable)");
+    cmd->add_option("--up", options->up, "the axis that points up: +x -x +y -y +z -z (default: found for the hourglass)");
     cmd->add_flag("--json", options->json, "print one JSON object");
     cmd->add_option("--out", options->out, "write the inside cells to this .vox (MagicaVoxel) or .binvox file");
     cmd->callback([options, &exitCode] { exitCode = runVoxelize(*options); });

@@ -5,10 +5,27 @@
 
 #include "view/app_state.hpp"
 
+#include <string>
+
 namespace sandglass {
 
-/// Builds the panels for this frame (between ImGui::NewFrame and ImGui::Render).
+/// Builds the panels for this frame (between ImGui::NewFrame and ImGui::Render): a Help button,
+/// what is loaded, then tabs (Run, Paint on the canvas, View, Scene, File) and the status line.
 void drawPanels(AppState& state);
+
+/// SPEC U3: the one line naming the scene that runs, e.g. "sculpture: snowman.obj, resolution 64".
+std::string sceneSummary(const SceneRequest& loaded);
+/// A hint line in the lighter grey, wrapped to the panel's width.
+void hint(const char* text);
+/// SPEC U2: ImGuiTreeNodeFlags_DefaultOpen where the window is tall enough for the panel's
+/// folded parts to start open, else 0.
+int openWhereRoomy();
+/// SPEC U2: the panel's width for a window this wide (window units) at this font size.
+float panelWidth(float displayWidth, float fontSize);
+/// Where a window of this size is shown in a display of this size: the chosen place, moved just
+/// enough to stay inside (top-left corner wins when it cannot fit).
+WindowPlacement placeOnScreen(const WindowPlacement& chosen, float width, float height, float displayWidth,
+                              float displayHeight);
 
 /// Thesis §3.7 "Kontrolle": simulation on/off, reset, single step, exit.
 void drawControlSection(AppState& state);

@@ -3,6 +3,7 @@
 // kEmpty, or kInvalid. Index layout: x fastest, then z, then y, so one layer is sizeX*sizeZ
 // cells and the cell above n is n + layerSize().
 
+#include "sandcore/large_pages.hpp"
 #include "sandcore/vec3.hpp"
 
 #include <cstdint>
@@ -71,7 +72,7 @@ private:
 
     Int3 size_;
     std::uint32_t layerSize_ = 0;
-    std::vector<CellValue> cells_;
+    std::vector<CellValue, LargePageAllocator<CellValue>> cells_; // huge pages for big grids
 };
 
 /// The grid upside down: cell (x, y, z) of the result is cell (x, sizeY - 1 - y, z) of `grid`.

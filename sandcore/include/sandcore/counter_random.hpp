@@ -16,10 +16,20 @@ constexpr std::uint64_t mix64(std::uint64_t v) {
     return v;
 }
 
+/// The part of counterRandom that depends on (seed, step) only: a sweep computes it once.
+constexpr std::uint64_t counterRandomStepKey(std::uint64_t seed, std::uint64_t step) {
+    return mix64(mix64(seed ^ 0x5851f42d4c957f2dull) ^ step);
+}
+
+/// counterRandom(seed, step, stream, index) from stepKey = counterRandomStepKey(seed, step).
+constexpr std::uint64_t counterRandomFromKey(std::uint64_t stepKey, std::uint64_t stream, std::uint64_t index) {
+    return mix64(stepKey ^ (index + (stream << 40)));
+}
+
 /// A random 64-bit value for (seed, step, stream, index): the same inputs always give the same value.
 constexpr std::uint64_t counterRandom(std::uint64_t seed, std::uint64_t step, std::uint64_t stream,
                                       std::uint64_t index) {
-    return mix64(mix64(mix64(seed ^ 0x5851f42d4c957f2dull) ^ step) ^ (index + (stream << 40)));
+    return counterRandomFromKey(counterRandomStepKey(seed, step), stream, index);
 }
 
 /// Maps a random value to [0, count) without division (Lemire's multiply-shift).

@@ -46,6 +46,7 @@ struct GrainStore {
 
     std::uint32_t size() const { return std::uint32_t(cell.size()); } ///< number of grains
     void clear();                                                      ///< removes every grain
+    void reserve(std::uint32_t count); ///< room for count grains without reallocating
     /// Appends a grain and returns its id.
     std::uint32_t add(GridLevel where, std::uint32_t cellIndex, std::uint32_t grainIdentity, std::uint32_t rgba);
     /// Moves the last grain into id (dropping id's record); returns the id the last grain had.

@@ -4,6 +4,7 @@
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
+#include "sandcore/layout_bits.hpp"
 #include "sandcore/physics_settings.hpp"
 
 #include <cstdint>
@@ -82,12 +83,11 @@ public:
     const CellGrid& grid(GridLevel level) const { return level == GridLevel::Upper ? upper_ : lower_; } ///< a grid
     const GrainStore& grains() const { return grains_; } ///< per-grain records for drawing
     const SceneCounters& counters() const { return counters_; } ///< R14
+    /// Ids of the grains the last step moved (transitions included), each once, in no particular order.
+    std::span<const std::uint32_t> movedGrains() const;
     std::int64_t grainCount() const { return std::int64_t(grains_.size()); } ///< grains in both grids
     /// True once a step has moved nothing: no later step will move anything until the scene is edited.
     bool settled() const { return counters_.stepsDone > 0 && counters_.movesLastStep == 0; }
-    /// Ids of the grains the last step moved (transitions included), each once, in no particular order.
-    /// Emptied by edits that renumber or rebuild grains (reset, restore, flip, grain removal).
-    std::span<const std::uint32_t> movedGrains() const;
     /// R7: a 64-bit hash of both grids' cell contents, stable across runs and platforms.
     std::uint64_t stateHash() const;
 
@@ -138,7 +138,8 @@ public:
     /// A grid's layout (EMPTY and INVALID cells only, no obstacles, no grains), turned over as the
     /// scene is (flipped()): with fillCells(), kind() and settings() what the constructor needs
     /// to build this scene again, after mirroring both layouts back when it is turned over.
-    const CellGrid& layout(GridLevel level) const { return level == GridLevel::Upper ? upperLayout_ : lowerLayout_; }
+    /// Built on each call from the one bit per cell the scene keeps.
+    CellGrid layout(GridLevel level) const { return (level == GridLevel::Upper ? upperLayout_ : lowerLayout_).grid(); }
     /// The upper-grid cells reset() fills with sand, in the order they are filled.
     const std::vector<std::uint32_t>& fillCells() const { return upperFill_; }
     /// The identity the next new grain gets (part of snapshot(), without copying the grids).
@@ -157,7 +158,7 @@ private:
 
     SceneKind kind_;
     StepSettings settings_;
-    CellGrid upperLayout_, lowerLayout_;
+    LayoutBits upperLayout_, lowerLayout_;
     CellGrid upper_, lower_;
     std::vector<std::uint32_t> upperFill_;
     std::vector<CellBox> upperObstacles_, lowerObstacles_;
@@ -170,7 +171,7 @@ private:
     std::unique_ptr<GranularRules> granular_; // null: classic
     std::unique_ptr<NeckFlow> neckFlow_;      // granular hourglass only
     std::vector<std::uint32_t> transitionReady_; // scratch of transitionGranular
-    std::vector<std::uint32_t> movedGrains_;     // the last step's moves (movedGrains())
+    std::vector<std::uint32_t> movedGrains_;     // movedGrains(); a flip moves every grain
 };
 
 } // namespace sandcore

@@ -29,6 +29,17 @@ Scene makeHourglassScene(const InsideMask& vessel, const HourglassSettings& hour
 /// high as the model. Throws std::invalid_argument for an empty mask.
 Scene makeSculptureScene(const InsideMask& model, const StepSettings& step = {});
 
+/// S11: as makeSculptureScene, with the cells of `obstacles` (the model's static parts, a mask of
+/// the model's size, or an empty mask for none) INVALID where the model is not: the sand
+/// collapses onto and around them. Throws std::invalid_argument for a mask of another size.
+Scene makeSculptureScene(const InsideMask& model, const InsideMask& obstacles, const StepSettings& step);
+
+/// S10: where makeHourglassScene (kind Hourglass) or makeSculptureScene (kind Sculpture) puts the
+/// cell (0, 0, 0) of the mask it is given, in world cells (the upper grid sits on the lower one,
+/// sharing a row), so that a model can be drawn where its cells are. Throws
+/// std::invalid_argument for an empty mask or a canvas.
+Int3 maskOriginInScene(SceneKind kind, const InsideMask& mask);
+
 /// The cell of the upper grid's top row over the grid's centre, where `simulate --pour` releases sand.
 std::uint32_t pourCell(const Scene& scene);
 

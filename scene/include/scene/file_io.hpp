@@ -39,4 +39,19 @@ void writeFileAtomically(const std::filesystem::path& file, std::span<const std:
 /// As above, for text.
 void writeFileAtomically(const std::filesystem::path& file, const std::string& text);
 
+/// Numbered files a folder may hold before writeNewNumberedFile gives up.
+inline constexpr int kMaxNumberedFiles = 1'000'000;
+
+/// Writes bytes to the first free FOLDER/STEM-N.EXTENSION with N >= firstNumber and returns the
+/// path written. Never replaces a file, not even one another program makes at the same moment
+/// (the complete file is linked into place, which fails on an existing name). Throws FileError
+/// (folder missing or not writable, disk full), leaving nothing behind.
+std::filesystem::path writeNewNumberedFile(const std::filesystem::path& folder, const std::string& stem,
+                                           const std::string& extension, std::span<const std::uint8_t> bytes,
+                                           int firstNumber = 1);
+
+/// Where pictures go by default: the desktop's pictures folder (XDG_PICTURES_DIR, from the
+/// environment or ~/.config/user-dirs.dirs), else ~/Pictures, when it exists; else the current folder.
+std::filesystem::path defaultPicturesFolder();
+
 } // namespace sandglass

@@ -35,4 +35,9 @@ std::uint64_t availableMemoryBytes();
 ModelVoxelization voxelizeModelFile(const std::string& path, const sandcore::VoxelizeSettings& settings,
                                     ModelUse use, std::uint64_t memoryLimit = 0);
 
+/// As voxelizeModelFile for a mesh already loaded from `path` (named in messages).
+ModelVoxelization voxelizeLoadedMesh(const std::string& path, const sandcore::TriangleMesh& mesh,
+                                     const sandcore::VoxelizeSettings& settings, ModelUse use,
+                                     std::uint64_t memoryLimit = 0);
+
 } // namespace sandglass

@@ -5,6 +5,8 @@
 // Pure CPU code in the scene layer: the renderer uploads the patterns, the exporters (E2) take
 // their colours for grains that have none of their own.
 
+#include "scene/sand_palette.hpp"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -20,9 +22,10 @@ struct SandPattern {
 /// Number of patterns the renderer uploads (the thesis's mCount).
 inline constexpr int kSandPatternCount = 64;
 
-/// The patterns, the same on every run: colours in RGB (220-240, 220-240, 150-190) with one
-/// tint per pattern and a small variation per sub-grain; sub-grain 0 sits at the cell centre.
-std::vector<SandPattern> makeSandPatterns(int count = kSandPatternCount);
+/// The patterns, the same on every run: one warm tint per pattern from the palette (Desert: RGB in
+/// (220-240, 220-240, 150-190), red > green > blue) and a small variation per sub-grain that
+/// keeps red > green > blue; sub-grain 0 sits at the cell centre. Offsets do not depend on the palette.
+std::vector<SandPattern> makeSandPatterns(int count = kSandPatternCount, SandPalette palette = SandPalette::Desert);
 
 /// The colour a grain is exported with, RGBA8 with alpha 255: its own colour, or for rgba 0 the
 /// tint of its pattern (identity mod patterns.size(), the pattern's sub-grain 0).

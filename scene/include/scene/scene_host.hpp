@@ -50,6 +50,9 @@ class SceneHost {
 public:
     /// Builds the scene now, on this thread; throws as buildScene does.
     explicit SceneHost(const SceneSettings& settings);
+    /// Runs a scene made elsewhere (a loaded state file) with the settings it was built from,
+    /// drawn as modelled when its model file still gives its grids (as adoptLoaded).
+    SceneHost(sandcore::Scene scene, const SceneSettings& settings);
     ~SceneHost();
     SceneHost(const SceneHost&) = delete;
     SceneHost& operator=(const SceneHost&) = delete;
@@ -59,12 +62,17 @@ public:
     sandcore::Scene& editScene();
     /// As editScene, for edits that also change which cells are INVALID (obstacles).
     sandcore::Scene& editLayout();
+    /// S10: the running scene's model as modelled (upright world cells); null for a procedural
+    /// scene, a canvas, or a loaded scene whose model file is gone or changed.
+    const std::shared_ptr<const ModelDrawing>& modelDrawing() const { return drawing_; }
     /// The settings the running scene was built from: what the panel shows as loaded.
     const SceneSettings& loaded() const { return loaded_; }
 
     /// E1: runs a scene that was loaded from a state file in place of the running one, with the
     /// settings it was built from; a build still running replaces it when done, as any request.
-    void adoptLoaded(sandcore::Scene scene, const SceneSettings& settings) { adopt(std::move(scene), settings); }
+    /// S10: a scene from a model file is drawn as modelled again when the file still gives the
+    /// same grids (else, or when it cannot be read, the voxel hull is drawn).
+    void adoptLoaded(sandcore::Scene scene, const SceneSettings& settings);
 
     /// Starts building `settings` on a worker thread. While a build runs, the newest request
     /// waits and starts when it is done; the ones in between are dropped.
@@ -127,13 +135,14 @@ public:
     std::uint64_t layoutRevision() const { return layoutRevision_; }
 
 private:
-    void adopt(sandcore::Scene scene, const SceneSettings& settings);
+    void adopt(BuiltScene built, const SceneSettings& settings);
     void startBuild(SceneSettings settings);
     void stepOnce();
 
     std::unique_ptr<sandcore::Scene> scene_;
     SceneSettings loaded_;
-    std::future<sandcore::Scene> build_;
+    std::shared_ptr<const ModelDrawing> drawing_;
+    std::future<BuiltScene> build_;
     SceneSettings building_;                 // what build_ builds
     std::optional<SceneSettings> waiting_;   // the newest request made while build_ ran
     std::chrono::steady_clock::time_point buildStarted_;

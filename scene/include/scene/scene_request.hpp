@@ -3,11 +3,15 @@
 // command line, the benchmark and the window all build scenes through here, and every value of a
 // request is given its default and checked in one place (applySceneDefaults), with one range each.
 
+#include "scene/model_drawing.hpp"
+#include "scene/model_parts.hpp"
 #include "scene/model_voxelizer.hpp"
+#include "scene/sand_space.hpp"
 
 #include "sandcore/inside_mask.hpp"
 #include "sandcore/scene.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -45,6 +49,8 @@ struct SceneRequest {
     int noiseThreshold = 1;     ///< model: S3 noNoise removes cells with at most this many inside face neighbours; -1 = off
     bool drainCompletely = true; ///< hourglass: S3 noSharpEdges carves the upper bulb so it drains completely
     std::uint64_t memoryLimit = 0; ///< model: bytes a scene may use; 0 = the memory available now
+    std::vector<PartRoleChoice> partRoles; ///< model: S7 roles the user set (--part NAME=ROLE); others automatic
+    std::string upAxis;         ///< model: S9 "+x" ... "-z" (--up); empty = found (hourglass) or +y (sculpture)
 };
 
 /// Everything that decides a scene and its steps: the request and the library's step settings
@@ -63,9 +69,20 @@ void applySceneDefaults(SceneSettings& settings);
 
 /// A scene and, when it came from a model file, the voxelization report the GUI and CLI show.
 struct BuiltScene {
+    /// A scene without a model report.
+    explicit BuiltScene(sandcore::Scene built) : scene(std::move(built)) {}
     sandcore::Scene scene;                  ///< ready to step
     std::optional<ModelVoxelization> model; ///< set when request.modelPath was given
     std::int64_t noiseCellsRemoved = 0;     ///< cells the S3 noNoise clean-up removed from the model
+    std::vector<PartSummary> parts;         ///< S7: the model's parts with their roles; empty without a model
+    VesselKind vessel = VesselKind::Solid;  ///< S8: hourglass from a model: its inside or its cavity
+    std::optional<sandcore::UpAxis> upAxis; ///< S9: the model axis turned up; set when a model was loaded
+    bool upAxisFound = false;               ///< S9: the up axis was found, not given
+    double cavityMilliseconds = 0.0;        ///< S8: time of the walls' voxelization and cavity search, ms
+    std::int64_t sandSpaceCells = 0;        ///< cells sand may take (hourglass: both bulbs; sculpture: the model)
+    /// S10: the model's parts as modelled, in the scene's world cells (upright); null without a
+    /// model or when no part is drawn (a sculpture that is all sand).
+    std::shared_ptr<const ModelDrawing> drawing;
 };
 
 /// "hourglass", "sculpture" or "canvas" to a scene kind; throws std::invalid_argument otherwise.
@@ -91,10 +108,10 @@ BuiltScene buildSceneWithReport(const SceneSettings& settings);
 /// The resolution a scene gets when none is asked for: 64 cells, the canvas 60 (R10's 60x10x60 over 60x40x60).
 int defaultResolution(sandcore::SceneKind kind);
 
-/// The bundled default vessel, models/hourglass.obj in the source tree.
+/// The bundled one-surface vessel, models/hourglass.obj in the source tree (the voxelizer's benchmark shape).
 std::string defaultModelPath();
 
-/// The model a scene shows when the user names none: models/hourglass.obj for the hourglass,
+/// The model a scene shows when the user names none: models/framed_hourglass.obj for the hourglass,
 /// models/snowman.obj for the sculpture, none (empty) for the canvas.
 std::string defaultModelFor(sandcore::SceneKind kind);
 

@@ -3,6 +3,7 @@
 // commands; the application carries the commands out after the panels are built. Nothing here
 // points into the simulation's grids.
 
+#include "view/file_chooser.hpp"
 #include "view/render/render_settings.hpp"
 #include "scene/scene_request.hpp"
 
@@ -36,10 +37,29 @@ struct PaintingSettings {
     std::size_t redoSteps = 0;   ///< undone strokes that Redo can bring back
 };
 
+/// Where a panel window sits, top-left corner in window units; negative until first placed.
+struct WindowPlacement {
+    float x = -1.0f;
+    float y = -1.0f;
+};
+
+/// A box dragged out on the canvas floor with the mouse (obstacle placement), in lower-grid columns.
+struct ObstacleDrag {
+    bool armed = false;    ///< the next left drag on the canvas places an obstacle instead of sand
+    bool dragging = false; ///< the button is down and the box follows the cursor
+    int startX = 0, startZ = 0, endX = 0, endZ = 0; ///< the columns at the drag's start and end
+};
+
 /// SPEC E1, E2: where the File section saves, opens and exports.
 struct FileSettings {
     std::string statePath = "sandglass.sand"; ///< the .sand file Save writes and Open reads
     std::string exportPath = "sand.ply";      ///< .ply, .vox, .obj, .stl or .glb for Export
+    std::string screenshotFolder;             ///< E4: where P saves sandglass-N.png (set at start)
+    bool screenshotWithPanel = false;         ///< E4: screenshots show the panels too
+    std::string lastScreenshot;               ///< the file the last screenshot went to
+    int unsavedEdits = 0;                     ///< U5: painting and obstacle changes since the last save or open (0 = nothing to lose)
+    bool confirmQuit = false;                 ///< U5: the "quit without saving?" question is shown
+    FileChoice choosing = FileChoice::OpenState; ///< what the next ChooseFile command opens the dialog for
 };
 
 /// What the panels and keys ask the application to do; served once per frame, in order.
@@ -50,7 +70,10 @@ enum class Command {
     SingleStep,        ///< one step while paused
     Screenshot,        ///< save this frame as PNG
     Benchmark,         ///< run the frame-rate benchmark
-    Quit,              ///< close the window
+    Quit,              ///< close the window (asks first when there are unsaved edits)
+    QuitNow,           ///< close the window without asking (the answer to that question)
+    SaveAndQuit,       ///< save to FileSettings::statePath, then close when the save worked
+    ChooseFile,        ///< open the desktop's file dialog for FileSettings::choosing
     FrameCamera,       ///< reset the camera to frame the scene
     Undo,              ///< take back the last stroke (Ctrl+Z)
     Redo,              ///< bring back the last undone stroke (Ctrl+Y, Ctrl+Shift+Z)
@@ -122,11 +145,20 @@ struct AppState {
     bool simulationRunning = false; ///< thesis default: simulation off
     double stepsPerSecond = 30.0;   ///< flow speed (R9)
     bool showGui = true;            ///< Space hides the panels
+    bool showHelp = false;          ///< F1, ? or the Help button: the keys and mouse controls
+    bool showHelpHint = true;       ///< the one-line hint on where help is, until help is opened
+    float uiScale = 1.0f;           ///< text and control size chosen in the panel (on top of the monitor's)
+    ObstacleDrag obstacleDrag;      ///< a box being dragged out on the canvas floor
     float panelCoverage = 0.0f;     ///< share of the window's width the panel covers from the left edge
+    WindowPlacement panelPlacement; ///< where the user put the panel (shown clamped to the window)
+    WindowPlacement panelSize;      ///< the panel's size in the last frame (x width, y height)
+    std::string openTab;            ///< a panel tab to select once ("run", "view", "scene", "paint", "file")
     std::string glRenderer;         ///< GL_RENDERER, for the statistics panel
     std::string glVersion;          ///< GL_VERSION
     std::string statusLine;         ///< the last message (error or confirmation) for the user
     std::vector<std::string> modelFiles; ///< files found in models/, for the model list
+    std::string partsListPath;      ///< S7: the model file partsList was read from; empty = not read
+    std::vector<PartSummary> partsList; ///< S7: that model's parts with their roles, for the checklist
     FrameStatistics stats;          ///< numbers shown in the statistics panel
     CommandQueue commands;          ///< requests to serve after the panels are built
     bool building = false;          ///< a scene is being built in the background

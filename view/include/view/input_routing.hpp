@@ -29,6 +29,7 @@ enum class KeyCommand {
     Redo,              ///< Ctrl+Y or Ctrl+Shift+Z: bring back the last undone stroke (E3)
     Save,              ///< Ctrl+S: save the state (E1)
     Open,              ///< Ctrl+O: open a saved state (E1)
+    Help,              ///< F1 or ?: show or hide the keys and mouse controls
     RotateLeft, RotateRight, RotateUp, RotateDown, ///< arrow keys
     ZoomIn, ZoomOut,   ///< + and -
     ViewPerspective,   ///< 1

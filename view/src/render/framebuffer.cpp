@@ -44,10 +44,8 @@ RgbImage readPixels(int width, int height) {
     return image;
 }
 
-void writePng(const std::filesystem::path& file, const RgbImage& image) {
-    if (image.width <= 0 || image.height <= 0) throw std::runtime_error("no image to write to " + file.string());
-    // Encoded in memory, then written through a temporary file renamed into place: a full disk
-    // or a missing folder is an error and never leaves a truncated PNG over an existing one.
+std::vector<std::uint8_t> encodePng(const RgbImage& image) {
+    if (image.width <= 0 || image.height <= 0) throw std::runtime_error("no image to encode");
     std::vector<std::uint8_t> encoded;
     const auto append = [](void* context, void* data, int size) {
         auto* out = static_cast<std::vector<std::uint8_t>*>(context);
@@ -55,8 +53,15 @@ void writePng(const std::filesystem::path& file, const RgbImage& image) {
         out->insert(out->end(), bytes, bytes + size);
     };
     if (stbi_write_png_to_func(append, &encoded, image.width, image.height, 3, image.pixels.data(), image.width * 3) == 0)
-        throw std::runtime_error(file.string() + ": cannot encode the PNG image");
-    writeFileAtomically(file, std::span<const std::uint8_t>(encoded));
+        throw std::runtime_error("cannot encode the PNG image");
+    return encoded;
+}
+
+void writePng(const std::filesystem::path& file, const RgbImage& image) {
+    if (image.width <= 0 || image.height <= 0) throw std::runtime_error("no image to write to " + file.string());
+    // Encoded in memory, then written through a temporary file renamed into place: a full disk
+    // or a missing folder is an error and never leaves a truncated PNG over an existing one.
+    writeFileAtomically(file, std::span<const std::uint8_t>(encodePng(image)));
 }
 
 } // namespace sandglass

@@ -56,6 +56,8 @@ std::span<const GrainInstance> GrainInstanceBuilder::build(const sandcore::Scene
     sandcore::writeDisplayPositions(scene, stepFraction, {settings.cellSize, settings.jitter}, positions_);
     const sandcore::GrainStore& grains = scene.grains();
     instances_.resize(count);
+    // S12 layers: six bands over the fill, by identity (the hourglass fills from the bottom up).
+    const auto band = std::uint32_t(std::max<std::size_t>(count / 6, 1));
     std::size_t written = 0;
     for (std::size_t i = 0; i < count; ++i) {
         if (!settings.innerGrains && inner_[i]) continue;
@@ -65,7 +67,7 @@ std::span<const GrainInstance> GrainInstanceBuilder::build(const sandcore::Scene
         out.z = positions_[i].z;
         out.normal = packedNormals_[i];
         out.identity = grains.identity[i];
-        out.color = grains.color[i];
+        out.color = grains.color[i] != 0 ? grains.color[i] : layerColor(settings.palette, grains.identity[i], band);
     }
     builtCount_ = written;
     return {instances_.data(), written};

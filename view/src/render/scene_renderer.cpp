@@ -35,7 +35,7 @@ constexpr int kGrainTexturesUnit = 3; // places, looks, jitters, gradient normal
 // Display settings whose change invalidates the uploaded grains even when nothing moved.
 bool sameGrainInputs(const RenderSettings& a, const RenderSettings& b) {
     return a.innerGrains == b.innerGrains && a.lighting == b.lighting && a.normals == b.normals &&
-           a.jitter == b.jitter && a.cellSize == b.cellSize;
+           a.jitter == b.jitter && a.cellSize == b.cellSize && a.palette == b.palette;
 }
 
 } // namespace
@@ -46,7 +46,7 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
       hullProgram_(loadShaderProgram(shaderFolder / "hull.vert", shaderFolder / "hull.frag")),
       grainArray_(newVertexArray()), hullArray_(newVertexArray()), lineArray_(newVertexArray()),
       grainBuffer_(newBuffer()), hullBuffer_(newBuffer()), lineBuffer_(newBuffer()),
-      patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
+      model_(shaderFolder), patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
     // Per-instance attributes; the vertex shader needs no per-vertex data (it uses gl_VertexID).
     glBindVertexArray(grainArray_.get());
     glBindBuffer(GL_ARRAY_BUFFER, grainBuffer_.get());
@@ -68,22 +68,16 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
     // The Scribble patterns as two small textures: 32 sub-grains wide, one row per pattern.
     const std::vector<SandPattern> patterns = makeSandPatterns();
     std::vector<float> offsets;
-    std::vector<std::uint32_t> colors;
     for (const SandPattern& pattern : patterns)
-        for (std::size_t i = 0; i < pattern.offsets.size(); ++i) {
+        for (std::size_t i = 0; i < pattern.offsets.size(); ++i)
             offsets.insert(offsets.end(), {pattern.offsets[i][0], pattern.offsets[i][1], pattern.offsets[i][2], 0.0f});
-            colors.push_back(pattern.colors[i]);
-        }
     const auto rows = GLsizei(patterns.size());
     glBindTexture(GL_TEXTURE_2D, patternOffsets_.get());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kMaxGrainsPerCell, rows, 0, GL_RGBA, GL_FLOAT, offsets.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D, patternColors_.get());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kMaxGrainsPerCell, rows, 0, GL_RGBA, GL_UNSIGNED_BYTE, colors.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
+    uploadPatternColors(SandPalette::Desert);
 
     for (const GlProgram* program : {&grainProgram_, &grainGpuProgram_}) {
         glUseProgram(program->get());
@@ -97,7 +91,21 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
     glUseProgram(0);
 }
 
-void SceneRenderer::setScene(const sandcore::Scene& scene, float cellSize) {
+void SceneRenderer::uploadPatternColors(SandPalette palette) {
+    const std::vector<SandPattern> patterns = makeSandPatterns(kSandPatternCount, palette);
+    std::vector<std::uint32_t> colors;
+    for (const SandPattern& pattern : patterns) colors.insert(colors.end(), pattern.colors.begin(), pattern.colors.end());
+    glBindTexture(GL_TEXTURE_2D, patternColors_.get());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kMaxGrainsPerCell, GLsizei(patterns.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 colors.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    patternPalette_ = palette;
+}
+
+void SceneRenderer::setScene(const sandcore::Scene& scene, float cellSize, const ModelDrawing* drawing) {
+    model_.set(drawing, scene.flipped(), cellSize);
     const HullMesh mesh = buildHullMesh(scene, cellSize);
     hullUpperObstacles_ = scene.obstacles(sandcore::GridLevel::Upper);
     hullLowerObstacles_ = scene.obstacles(sandcore::GridLevel::Lower);
@@ -220,6 +228,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (width <= 0 || height <= 0) return;
 
+    if (settings.palette != patternPalette_) uploadPatternColors(settings.palette);
     // Past what this GL's buffer textures hold, the grains go the earlier way.
     const GrainPath path = gpuStore_.holds(scene) ? settings.grainPath : GrainPath::CpuFullUpload;
     if (path != path_) sceneChanged(); // the other path's buffers are stale
@@ -231,8 +240,14 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
         instanceCount_ = setGpuUniforms(scene, stepFraction, settings);
     }
     drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale);
+    // S10: the model as modelled, its opaque parts with the sand, its glass over both.
+    const bool modelled = settings.hull && !settings.voxelHull && !model_.empty();
+    const ModelLight frame{glm::value_ptr(viewProjection), camera.position(),
+                           camera.position() - camera.up() * (0.15f * camera.distance()), settings.blackBackground};
+    if (modelled) model_.drawOpaque(frame);
     draft_.draw(draftPlacement_, glm::value_ptr(viewProjection));
-    if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
+    if (modelled) model_.drawGlass(frame);
+    else if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
     glBindVertexArray(0);
     glUseProgram(0);
 }

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace sandglass {
 
@@ -15,10 +16,11 @@ struct SceneOptions {
     std::string scene = "hourglass"; ///< hourglass, sculpture or canvas
     std::string physics = "classic"; ///< classic or granular (SPEC PH1)
     SceneSettings settings;          ///< request and step settings, filled by the options
+    std::vector<std::string> parts;  ///< --part NAME=ROLE, as typed (parsed by sceneSettingsFrom)
 };
 
-/// Adds --scene --model --shape --res --neck --fill --stretch --robust --noise --seed --threads
-/// --physics --repose --gravity.
+/// Adds --scene --model --shape --res --neck --fill --stretch --robust --noise --part --up --seed
+/// --threads --physics --repose --gravity.
 void addSceneOptions(CLI::App& command, SceneOptions& options);
 
 /// The settings the options stand for, defaults applied and every value checked; throws

@@ -15,11 +15,13 @@ namespace sandglass {
 struct ViewOptions {
     SceneOptions scene;               ///< scene, model or shape, resolution, seed, threads
     std::string mode = "points";      ///< points, sprites, billboards or pseudo
+    std::string palette = "desert";   ///< S12: desert, beach, white, volcanic or layers
     int grainsPerCell = 4;            ///< 1..32
     bool light = false;               ///< lighting from estimated normals
     bool hideInner = false;           ///< skip inner grains
     bool black = false;               ///< black background
     bool noHull = false;              ///< no glass
+    bool voxelHull = false;           ///< S10: the voxel hull instead of the model as modelled
     std::string size;                 ///< "WxH" in pixels; empty = the command's default
     int steps = 0;                    ///< simulation steps before the first frame
     float zoom = 1.0f;                ///< camera distance as a share of the distance that frames the scene

@@ -35,5 +35,7 @@ private:
 RgbImage readPixels(int width, int height);
 /// Writes a PNG; throws std::runtime_error with one line naming the file on failure.
 void writePng(const std::filesystem::path& file, const RgbImage& image);
+/// The image as PNG file content; throws std::runtime_error for an empty image.
+std::vector<std::uint8_t> encodePng(const RgbImage& image);
 
 } // namespace sandglass

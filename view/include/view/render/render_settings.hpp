@@ -2,6 +2,8 @@
 // How grains are drawn (SPEC V1-V6): the display half of the application state. The panels
 // change it; the renderer reads it every frame.
 
+#include "scene/sand_palette.hpp"
+
 #include "sandcore/normals.hpp"
 
 #include <cstdint>
@@ -50,10 +52,12 @@ struct RenderSettings {
     bool innerGrains = true;              ///< V4: draw grains hidden by their 6 neighbours; default on
     bool blackBackground = false;         ///< V5: thesis default white
     bool hull = true;                     ///< V6: translucent vessel hull (beyond the thesis)
+    bool voxelHull = false;               ///< S10: a model's vessel as the voxel hull, not as modelled
     float pointSize = 3.0f;               ///< points and sprites: diameter in pixels at content scale 1
     float quadSize = 0.9f;                ///< billboards: quad edge in cells at 1 grain per cell (shrinks with k)
     float jitter = 0.5f;                  ///< R8 jitter 0..1 of a grain inside its cell
     float cellSize = 1.0f;                ///< world units per cell (the thesis's mSize)
+    SandPalette palette = SandPalette::Desert; ///< S12: the sand's colours; default warm desert sand
     sandcore::NormalMethod normals = sandcore::NormalMethod::OccupancyGradient; ///< R12 estimate used by V3; beyond the thesis (its method is ColumnHeights)
     GrainPath grainPath = GrainPath::GpuInterpolated; ///< V8 upload path; both draw the same picture
 };

@@ -8,6 +8,7 @@
 #include "view/render/gl_objects.hpp"
 #include "view/render/grain_gpu_store.hpp"
 #include "view/render/grain_instances.hpp"
+#include "view/render/model_surfaces.hpp"
 #include "view/render/render_settings.hpp"
 
 #include "sandcore/scene.hpp"
@@ -38,8 +39,10 @@ public:
     /// context. Throws std::runtime_error with one line on a shader problem.
     explicit SceneRenderer(const std::filesystem::path& shaderFolder);
 
-    /// Takes a new scene: rebuilds the hull mesh and forgets cached grain data.
-    void setScene(const sandcore::Scene& scene, float cellSize);
+    /// Takes a new scene: rebuilds the hull mesh and forgets cached grain data. With a model
+    /// drawing (S10) the vessel is drawn as modelled instead of the voxel hull, unless the
+    /// settings ask for the voxel hull; the drawing is mirrored when the scene is turned over.
+    void setScene(const sandcore::Scene& scene, float cellSize, const ModelDrawing* drawing = nullptr);
     /// True when the hull was built with exactly the scene's obstacles (same boxes, same order,
     /// both grids); after an edit that may have changed them, false means setScene is due.
     bool hullShowsObstaclesOf(const sandcore::Scene& scene) const;
@@ -83,10 +86,12 @@ private:
     void drawGrains(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection,
                     float pixelScale);
     void drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection);
+    void uploadPatternColors(SandPalette palette); // S12: the pattern colours of a palette
 
     GlProgram grainProgram_, grainGpuProgram_, hullProgram_;
     GlVertexArray grainArray_, hullArray_, lineArray_;
     GlBuffer grainBuffer_, hullBuffer_, lineBuffer_;
+    ModelSurfaces model_; // S10: the model as modelled
     GlTexture patternOffsets_, patternColors_;
     GrainInstanceBuilder builder_;
     GrainGpuStore gpuStore_;
@@ -98,6 +103,7 @@ private:
     std::int64_t instanceCount_ = 0;
     std::int64_t hullVertices_ = 0, lineVertices_ = 0;
     std::vector<sandcore::CellBox> hullUpperObstacles_, hullLowerObstacles_; // what the hull shows
+    SandPalette patternPalette_ = SandPalette::Desert; // the palette the colour texture holds
     bool grainsStale_ = true;
     RenderSettings uploadedWith_;
     RenderStats stats_;

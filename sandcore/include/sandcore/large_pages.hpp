@@ -1,0 +1,31 @@
+#pragma once
+// Memory for the big arrays of a scene (cell grids): blocks of 2 MiB and more are aligned to
+// 2 MiB and offered to the kernel as transparent huge pages (madvise), so a sweep over a grid of
+// a million cells takes a few TLB entries instead of thousands of 4 KiB ones. Smaller blocks
+// come from operator new as usual.
+
+#include <cstddef>
+#include <new>
+
+namespace sandcore {
+
+/// Smallest block handed to huge pages, bytes.
+inline constexpr std::size_t kLargePageBytes = std::size_t{2} << 20;
+
+/// bytes of memory, 2 MiB aligned and advised as huge pages when bytes >= kLargePageBytes.
+/// Throws std::bad_alloc when no memory is left.
+void* allocateLarge(std::size_t bytes);
+/// Frees a block of allocateLarge(bytes), given the same byte count.
+void freeLarge(void* block, std::size_t bytes) noexcept;
+
+/// A std::allocator that takes its memory from allocateLarge.
+template <class T> struct LargePageAllocator {
+    using value_type = T;
+    LargePageAllocator() = default;
+    template <class U> LargePageAllocator(const LargePageAllocator<U>&) noexcept {}
+    T* allocate(std::size_t n) { return static_cast<T*>(allocateLarge(n * sizeof(T))); }
+    void deallocate(T* p, std::size_t n) noexcept { freeLarge(p, n * sizeof(T)); }
+    template <class U> bool operator==(const LargePageAllocator<U>&) const noexcept { return true; }
+};
+
+} // namespace sandcore
