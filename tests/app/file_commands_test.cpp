@@ -16,14 +16,7 @@
 using namespace sandglass;
 
 TEST_CASE("file commands: save, run on, open gives back the saved scene, and a damaged file changes nothing") {
-    ApplicationOptions options;
-    options.window = {96, 96, false, false, "sandglass file test"};
-    options.offscreen = true;
-    options.initial.showGui = false;
-    options.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
-    options.initial.scene.request.modelPath.clear();
-    options.initial.scene.request.shape = "hourglass";
-    options.initial.scene.request.resolution = 24;
+    ApplicationOptions options = testing::proceduralHourglassOptions(96, 96, 24, "sandglass file test");
     std::optional<Application> app = testing::openApplication(std::move(options), "file commands");
     if (!app) return;
     TemporaryFolder folder;
@@ -55,14 +48,7 @@ TEST_CASE("file commands: save, run on, open gives back the saved scene, and a d
 
 TEST_CASE("file commands: a window started on a state file builds nothing else first") {
     TemporaryFolder folder;
-    ApplicationOptions first;
-    first.window = {96, 96, false, false, "sandglass start-state test"};
-    first.offscreen = true;
-    first.initial.showGui = false;
-    first.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
-    first.initial.scene.request.modelPath.clear();
-    first.initial.scene.request.shape = "hourglass";
-    first.initial.scene.request.resolution = 20;
+    ApplicationOptions first = testing::proceduralHourglassOptions(96, 96, 20, "sandglass start-state test");
     std::uint64_t saved = 0;
     {
         std::optional<Application> app = testing::openApplication(first, "starting on a state file");
@@ -87,14 +73,7 @@ TEST_CASE("file commands: a window started on a state file builds nothing else f
 
 TEST_CASE("file commands: a .sand file chosen in the file dialog opens, and Cancel changes nothing") {
     TemporaryFolder folder;
-    ApplicationOptions options;
-    options.window = {96, 96, false, false, "sandglass file dialog test"};
-    options.offscreen = true;
-    options.initial.showGui = false;
-    options.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
-    options.initial.scene.request.modelPath.clear();
-    options.initial.scene.request.shape = "hourglass";
-    options.initial.scene.request.resolution = 20;
+    ApplicationOptions options = testing::proceduralHourglassOptions(96, 96, 20, "sandglass file dialog test");
     std::optional<Application> app = testing::openApplication(std::move(options), "the file dialog");
     if (!app) return;
     app->runSteps(15);

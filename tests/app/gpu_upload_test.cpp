@@ -22,14 +22,7 @@ using namespace sandglass;
 namespace {
 
 ApplicationOptions hourglassOptions(int resolution, int steps, RenderSettings render = {}) {
-    ApplicationOptions options;
-    options.window = {160, 160, false, false, "sandglass gpu upload test"};
-    options.offscreen = true;
-    options.initial.showGui = false;
-    options.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
-    options.initial.scene.request.modelPath.clear();
-    options.initial.scene.request.shape = "hourglass";
-    options.initial.scene.request.resolution = resolution;
+    ApplicationOptions options = testing::proceduralHourglassOptions(160, 160, resolution, "sandglass gpu upload test");
     options.initial.render = render;
     options.initial.simulationRunning = false;
     options.stepsBeforeStart = steps;

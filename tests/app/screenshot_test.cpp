@@ -16,14 +16,8 @@ using namespace sandglass;
 namespace {
 
 ApplicationOptions hourglassWithPanels(const std::filesystem::path& screenshotFolder) {
-    ApplicationOptions options;
-    options.window = {480, 320, false, false, "sandglass screenshot test"};
-    options.offscreen = true;
+    ApplicationOptions options = testing::proceduralHourglassOptions(480, 320, 20, "sandglass screenshot test");
     options.initial.showGui = true;
-    options.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
-    options.initial.scene.request.modelPath.clear();
-    options.initial.scene.request.shape = "hourglass";
-    options.initial.scene.request.resolution = 20;
     options.screenshotFolder = screenshotFolder;
     options.frameLimit = 1; // each run() draws one more frame
     return options;

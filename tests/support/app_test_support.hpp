@@ -47,6 +47,20 @@ inline ApplicationOptions canvasOptions(int width, int height, int resolution, c
     return options;
 }
 
+/// A hidden, offscreen window of width x height pixels on the procedural hourglass (no model
+/// file), panels off, simulation paused.
+inline ApplicationOptions proceduralHourglassOptions(int width, int height, int resolution, const char* title) {
+    ApplicationOptions options;
+    options.window = {width, height, false, false, title};
+    options.offscreen = true;
+    options.initial.showGui = false;
+    options.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
+    options.initial.scene.request.modelPath.clear();
+    options.initial.scene.request.shape = "hourglass";
+    options.initial.scene.request.resolution = resolution;
+    return options;
+}
+
 /// One pixel of a captured frame, 0..255 per channel.
 struct Pixel {
     int r, g, b;
