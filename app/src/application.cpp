@@ -108,7 +108,7 @@ struct ApplicationCallbacks {
         // The window's close button asks first too, when there are unsaved edits (U5).
         if (of(window).state_.files.unsavedEdits == 0) return;
         glfwSetWindowShouldClose(window, GLFW_FALSE);
-        of(window).state_.commands.push(Command::Quit);
+        of(window).state_.files.confirmQuit = true; // a second click keeps the question up
     }
     static void focus(GLFWwindow* window, int focused) { ImGui_ImplGlfw_WindowFocusCallback(window, focused); }
     static void enter(GLFWwindow* window, int entered) { ImGui_ImplGlfw_CursorEnterCallback(window, entered); }
@@ -117,8 +117,9 @@ struct ApplicationCallbacks {
         AppState& state = of(window).state_;
         // A .sand file opens; an image dropped on the canvas is a draft; every other file is a model.
         if (isStateFile(paths[0])) {
-            state.files.statePath = paths[0];
-            state.commands.push(Command::LoadState);
+            // Opened straight away: the state path changes only when it opens, so a file that
+            // fails to open is never the one the next Save writes over.
+            of(window).loadStateFile(paths[0]);
             return;
         }
         if (of(window).scene().kind() == sandcore::SceneKind::Canvas && isDraftImageFile(paths[0])) {
@@ -632,6 +633,9 @@ bool Application::saveScreenshot(const std::filesystem::path& file) {
 void Application::saveNumberedScreenshot(const RgbImage& image) {
     // E4: the first free sandglass-N.png in the chosen folder; an earlier file is never replaced.
     try {
+        // Numbers count from 1 again in a folder newly chosen.
+        if (state_.files.screenshotFolder != screenshotFolderUsed_) screenshotsTaken_ = 0;
+        screenshotFolderUsed_ = state_.files.screenshotFolder;
         const std::filesystem::path file = writeNewNumberedFile(state_.files.screenshotFolder, "sandglass", ".png",
                                                                 encodePng(image), screenshotsTaken_ + 1);
         const std::string number = file.stem().string().substr(std::string("sandglass-").size());

@@ -6,6 +6,7 @@
 #include "layer_neighbourhood.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace sandcore {
 
@@ -128,7 +129,10 @@ void SurfaceUpkeep::refreshGradientAround(const Scene& scene, GridLevel level, s
 
 void SurfaceUpkeep::update(const Scene& scene) {
     const GrainStore& grains = scene.grains();
-    if (inner_.size() != grains.size() || heights_[0].empty() || gradient_.size() != (trackGradient_ ? grains.size() : 0)) {
+    // A rebuild also restarts the stamps before the 32-bit update number could wrap (after
+    // about 1.4e9 steps), when an old stamp could look current.
+    if (inner_.size() != grains.size() || heights_[0].empty() || gradient_.size() != (trackGradient_ ? grains.size() : 0) ||
+        updateNumber_ > UINT32_MAX - 8) {
         rebuild(scene);
         return;
     }

@@ -69,9 +69,10 @@ std::vector<std::uint8_t> readFileBytes(const std::filesystem::path& file, std::
     return bytes;
 }
 
-void requireWritableFileTarget(const std::filesystem::path& file) {
-    if (file.empty()) throw FileError(file, "no file name given");
-    const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+namespace {
+
+// Throws FileError naming `file` unless `folder` exists, is a folder and can be written.
+void requireWritableFolder(const std::filesystem::path& folder, const std::filesystem::path& file) {
     struct stat info {};
     if (::stat(folder.c_str(), &info) != 0) {
         const int error = errno;
@@ -81,6 +82,27 @@ void requireWritableFileTarget(const std::filesystem::path& file) {
     if (!S_ISDIR(info.st_mode)) throw FileError(file, folder.string() + " is not a folder");
     if (::access(folder.c_str(), W_OK | X_OK) != 0)
         throw FileError(file, "the folder " + folder.string() + " is not writable (" + systemCause(errno) + ")");
+}
+
+// Writes every byte to fd; false (errno set) on failure.
+bool writeAll(int fd, std::span<const std::uint8_t> bytes) {
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (wrote < 0 && errno == EINTR) continue;
+        if (wrote <= 0) return false;
+        done += std::size_t(wrote);
+    }
+    return true;
+}
+
+} // namespace
+
+void requireWritableFileTarget(const std::filesystem::path& file) {
+    if (file.empty()) throw FileError(file, "no file name given");
+    const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+    requireWritableFolder(folder, file);
+    struct stat info {};
     if (::stat(file.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) throw FileError(file, nonRegularKind(info.st_mode));
 }
 
@@ -97,13 +119,7 @@ std::string writeTemporaryBeside(const std::filesystem::path& file, std::span<co
         ::unlink(temporary.c_str());
         throw FileError(file, cause);
     };
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t wrote = ::write(out.fd, bytes.data() + done, bytes.size() - done);
-        if (wrote < 0 && errno == EINTR) continue;
-        if (wrote <= 0) fail("write failed (" + systemCause(errno) + "); the file was not changed");
-        done += std::size_t(wrote);
-    }
+    if (!writeAll(out.fd, bytes)) fail("write failed (" + systemCause(errno) + "); the file was not changed");
     // Files made by mkstemp are private (0600); give the new file the usual permissions.
     const mode_t mask = ::umask(0);
     ::umask(mask);
@@ -127,33 +143,60 @@ void writeFileAtomically(const std::filesystem::path& file, std::span<const std:
     }
 }
 
+void writeFileAtomically(const std::filesystem::path& file, const std::string& text) {
+    writeFileAtomically(file, std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+}
+
+namespace {
+
+// Creates `target` with O_EXCL (it fails on an existing name) and writes bytes to it; for
+// folders without hard links. True when written; false when the name exists; throws otherwise.
+bool writeExclusively(const std::filesystem::path& target, std::span<const std::uint8_t> bytes) {
+    Descriptor out;
+    out.fd = ::open(target.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (out.fd < 0) {
+        if (errno == EEXIST) return false;
+        throw FileError(target, "cannot be written (" + systemCause(errno) + ")");
+    }
+    if (!writeAll(out.fd, bytes) || ::fsync(out.fd) != 0) {
+        const int error = errno;
+        ::unlink(target.c_str());
+        throw FileError(target, "write failed (" + systemCause(error) + ")");
+    }
+    return true;
+}
+
+} // namespace
+
 std::filesystem::path writeNewNumberedFile(const std::filesystem::path& folder, const std::string& stem,
                                            const std::string& extension, std::span<const std::uint8_t> bytes,
                                            int firstNumber) {
     auto numbered = [&](int number) { return folder / (stem + "-" + std::to_string(number) + extension); };
-    requireWritableFileTarget(numbered(firstNumber));
-    const std::string temporary = writeTemporaryBeside(numbered(firstNumber), bytes);
-    // link() refuses a name that exists, so even a file made meanwhile by another program
-    // is never replaced; the first free number wins.
-    for (int number = std::max(1, firstNumber); number < kMaxNumberedFiles; ++number) {
+    firstNumber = std::max(1, firstNumber);
+    requireWritableFolder(folder.empty() ? std::filesystem::path(".") : folder, numbered(firstNumber));
+    std::string temporary = writeTemporaryBeside(numbered(firstNumber), bytes);
+    // link() refuses a name that exists, so even a file made meanwhile by another program is
+    // never replaced; the first free number wins. Folders without hard links (FAT, some network
+    // shares) fall back to creating the name exclusively and writing it there.
+    for (int number = firstNumber; number < kMaxNumberedFiles; ++number) {
         const std::filesystem::path target = numbered(number);
-        if (::link(temporary.c_str(), target.c_str()) == 0) {
-            ::unlink(temporary.c_str());
-            return target;
-        }
-        if (errno != EEXIST) {
+        if (!temporary.empty()) {
+            if (::link(temporary.c_str(), target.c_str()) == 0) {
+                ::unlink(temporary.c_str());
+                return target;
+            }
             const int error = errno;
+            if (error == EEXIST) continue;
             ::unlink(temporary.c_str());
-            throw FileError(target, "cannot be written (" + systemCause(error) + ")");
+            temporary.clear();
+            if (error != EPERM && error != EOPNOTSUPP && error != ENOSYS && error != EMLINK)
+                throw FileError(target, "cannot be written (" + systemCause(error) + ")");
         }
+        if (writeExclusively(target, bytes)) return target;
     }
-    ::unlink(temporary.c_str());
-    throw FileError(folder, "holds " + std::to_string(kMaxNumberedFiles) + " files named " + stem + "-N" + extension +
-                                " already");
-}
-
-void writeFileAtomically(const std::filesystem::path& file, const std::string& text) {
-    writeFileAtomically(file, std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+    if (!temporary.empty()) ::unlink(temporary.c_str());
+    throw FileError(folder, "has no free name " + stem + "-N" + extension + " for N from " + std::to_string(firstNumber) +
+                                " to " + std::to_string(kMaxNumberedFiles - 1));
 }
 
 namespace {

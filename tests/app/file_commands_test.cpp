@@ -111,3 +111,16 @@ TEST_CASE("file commands: a .sand file chosen in the file dialog opens, and Canc
     CHECK(app->scene().stateHash() == running);
     CHECK(app->state().files.statePath == (folder / "chosen.sand").string());
 }
+
+TEST_CASE("file commands: a state file that fails to open never becomes the file Save writes to") {
+    TemporaryFolder folder;
+    std::optional<Application> app = testing::openApplication(
+        testing::proceduralHourglassOptions(96, 96, 20, "sandglass failed open test"), "a failed open");
+    if (!app) return;
+    app->state().files.statePath = (folder / "mine.sand").string();
+    std::ofstream(folder / "dropped.sand") << "SANDGLASS but damaged";
+    // What a dropped file does: open it at once.
+    CHECK_FALSE(app->loadStateFile((folder / "dropped.sand").string()));
+    CHECK(app->state().files.statePath == (folder / "mine.sand").string());
+    CHECK(app->state().statusLine.rfind((folder / "dropped.sand").string() + ": ", 0) == 0);
+}

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <csignal>
 #include <thread>
 
 using namespace sandglass;
@@ -96,4 +97,28 @@ TEST_CASE("file dialog: Cancel gives an empty path, and a missing program is one
     CHECK(problem.find("no-such-program") != std::string::npos);
     CHECK(problem.find('\n') == std::string::npos);
     CHECK_FALSE(chooser.isOpen());
+}
+
+TEST_CASE("file dialog: closing the window closes the dialog and whatever it started") {
+    TemporaryFolder folder;
+    // A wrapper script that starts the real dialog (here a long sleep) and waits for it.
+    const std::filesystem::path pidFile = folder / "dialog.pid";
+    ::setenv("SANDGLASS_FILE_CHOOSER",
+             fakeChooser(folder, "sleep 30 & echo $! > '" + pidFile.string() + "'; wait").c_str(), 1);
+    pid_t dialog = 0;
+    {
+        FileChooser chooser;
+        REQUIRE(chooser.open(FileChoice::Model, "") == "");
+        for (int wait = 0; wait < 500 && contentOf(pidFile).empty(); ++wait)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        dialog = pid_t(std::atoi(contentOf(pidFile).c_str()));
+        REQUIRE(dialog > 0);
+        CHECK(::kill(dialog, 0) == 0);
+    } // the window closes
+    bool gone = false;
+    for (int wait = 0; wait < 300 && !gone; ++wait) {
+        gone = ::kill(dialog, 0) != 0;
+        if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    CHECK(gone);
 }

@@ -65,15 +65,16 @@ std::vector<std::string> fileChooserCommand(const std::string& program, FileChoi
     const auto [filterName, patterns] = filterOf(choice);
     const bool kde = std::filesystem::path(program).filename() == "kdialog";
     std::vector<std::string> command{program};
+    const std::string start = startPath.empty() ? std::string(".") : startPath; // kdialog needs one
     if (kde) {
         command.push_back("--title");
         command.push_back(titleOf(choice));
         if (choice == FileChoice::ScreenshotFolder) {
             command.push_back("--getexistingdirectory");
-            command.push_back(startPath);
+            command.push_back(start);
         } else {
             command.push_back(saves(choice) ? "--getsavefilename" : "--getopenfilename");
-            command.push_back(startPath);
+            command.push_back(start);
             command.push_back(patterns + "|" + filterName);
         }
         return command;
@@ -94,7 +95,14 @@ std::vector<std::string> fileChooserCommand(const std::string& program, FileChoi
 }
 
 FileChooser::~FileChooser() {
-    if (child_ > 0) ::kill(child_, SIGTERM);
+    if (child_ > 0) {
+        // The dialog's whole process group (a wrapper script and the dialog it starts) goes,
+        // and a program that ignores SIGTERM is killed after half a second.
+        ::kill(-child_, SIGTERM);
+        int status = 0;
+        for (int tries = 0; tries < 50 && ::waitpid(child_, &status, WNOHANG) == 0; ++tries) ::usleep(10'000);
+        if (::waitpid(child_, &status, WNOHANG) == 0) ::kill(-child_, SIGKILL);
+    }
     close();
 }
 
@@ -132,8 +140,14 @@ std::string FileChooser::open(FileChoice choice, const std::string& startPath) {
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], 1);
     posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0); // toolkit warnings
+    posix_spawn_file_actions_addclosefrom_np(&actions, 3); // the display's socket, GPU files: not the dialog's
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attributes, 0); // its own group, so closing the window closes all of it
     pid_t child = -1;
-    const int failed = ::posix_spawn(&child, program.c_str(), &actions, nullptr, arguments.data(), environ);
+    const int failed = ::posix_spawn(&child, program.c_str(), &actions, &attributes, arguments.data(), environ);
+    posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     ::close(pipeEnds[1]);
     if (failed != 0) {
@@ -171,7 +185,7 @@ std::optional<ChosenFile> FileChooser::poll() {
     // Exit status 0 and a first line: the path; anything else (Cancel, Esc, closed): nothing chosen.
     if (done > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
         chosen.path = received_.substr(0, received_.find('\n'));
-        while (!chosen.path.empty() && (chosen.path.back() == '\r' || chosen.path.back() == ' ')) chosen.path.pop_back();
+        if (!chosen.path.empty() && chosen.path.back() == '\r') chosen.path.pop_back(); // a name may end in a space
     }
     return chosen;
 }

@@ -156,7 +156,8 @@ private:
     std::uint64_t drawnContent_ = 0, drawnLayout_ = 0;
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
     std::int64_t framesDrawn_ = 0;
-    int screenshotsTaken_ = 0;
+    int screenshotsTaken_ = 0;               // the number of the last screenshot, where to look for a free one
+    std::string screenshotFolderUsed_;       // the folder that number belongs to
     BenchmarkProgress benchmark_;
     std::optional<RgbImage> sceneOnlyFrame_; // this frame before the panels, for a screenshot without them
     bool quitRequested_ = false;             // the loop ends after this frame

@@ -10,6 +10,8 @@ std::vector<sandcore::Vec3> SceneRenderer::captureGpuPositions(const sandcore::S
     path_ = GrainPath::GpuInterpolated;
     uploadGrains(scene, stepFraction, settings);
     path_ = path;
+    // The upload above took the owner's change lists; the other path must not miss them.
+    if (path != GrainPath::GpuInterpolated) sceneChanged();
     return readBackGpuPositions(scene, stepFraction, settings);
 }
 

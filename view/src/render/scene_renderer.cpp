@@ -185,7 +185,8 @@ void SceneRenderer::uploadGpuGrains(const sandcore::Scene& scene, const RenderSe
     sandcore::SurfaceUpkeep* surface = surface_;
     if (surface == nullptr) {
         surface = &ownSurface_;
-        if (grainsStale_ || ownSurface_.tracksGradientNormals() != gradient) {
+        // Without an owner keeping it up to date step by step, any move makes it stale.
+        if (grainsStale_ || scene.counters().movesLastStep > 0 || ownSurface_.tracksGradientNormals() != gradient) {
             ownSurface_.setTrackGradientNormals(gradient);
             ownSurface_.rebuild(scene);
         }
