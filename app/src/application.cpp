@@ -447,21 +447,13 @@ void Application::serve(Command command) {
     case Command::SingleStep: host_.requestSingleStep(); break;
     case Command::FrameCamera: frameCamera(); break;
     case Command::Undo:
-        if (canvas_.undo(host_)) {
-            ++state_.files.unsavedEdits;
-            state_.statusLine = "undone";
-        } else {
-            state_.statusLine = "nothing to undo";
-        }
+    case Command::Redo: {
+        const bool undo = command == Command::Undo;
+        const bool changed = undo ? canvas_.undo(host_) : canvas_.redo(host_);
+        if (changed) ++state_.files.unsavedEdits;
+        state_.statusLine = changed ? (undo ? "undone" : "redone") : (undo ? "nothing to undo" : "nothing to redo");
         break;
-    case Command::Redo:
-        if (canvas_.redo(host_)) {
-            ++state_.files.unsavedEdits;
-            state_.statusLine = "redone";
-        } else {
-            state_.statusLine = "nothing to redo";
-        }
-        break;
+    }
     case Command::SaveState: saveStateFile(); break;
     case Command::LoadState: loadStateFile(state_.files.statePath); break;
     case Command::Export:

@@ -1,6 +1,7 @@
 // R4 conservation, R5 sleeping == full sweep, R6 threads, R7 recorded hash.
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
+#include "support/thread_agreement.hpp"
 
 #include <doctest/doctest.h>
 
@@ -96,23 +97,9 @@ TEST_CASE("switching sleeping off and on mid-run keeps the result") {
 TEST_CASE("1, 2 and 4 threads give the same state after every step") {
     // The sculpture's first steps split busy layers into strips over the threads; once sand
     // reaches the lower grid, and in the hourglass, the two grids are swept side by side.
-    const std::function<Scene()> makers[] = {[] { return collapsingSculpture(11, 32); },
-                                             [] { return smallHourglass(11, 40, 2.0f); }};
-    for (const auto& make : makers)
-        for (bool sleeping : {true, false}) {
-            CAPTURE(sleeping);
-            Scene one = make(), two = make(), four = make();
-            for (Scene* s : {&one, &two, &four}) s->setSleeping(sleeping);
-            two.setThreads(2);
-            four.setThreads(4);
-            for (int i = 0; i < 150; ++i) {
-                one.step();
-                two.step();
-                four.step();
-                REQUIRE(one.stateHash() == two.stateHash());
-                REQUIRE(one.stateHash() == four.stateHash());
-            }
-        }
+    fixtures::requireThreadCountsAgree({[] { return collapsingSculpture(11, 32); },
+                                        [] { return smallHourglass(11, 40, 2.0f); }},
+                                       150);
 }
 
 TEST_CASE("the seed changes the result and the same seed repeats it") {

@@ -2,6 +2,7 @@
 // count == one thread, exact conservation, recorded hashes; and PH1's settings.
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
+#include "support/thread_agreement.hpp"
 
 #include <doctest/doctest.h>
 
@@ -72,23 +73,9 @@ TEST_CASE("granular: sleeping grains give the same state as a full sweep after e
 TEST_CASE("granular: 1, 2 and 4 threads give the same state after every step") {
     // The sculpture's first steps split busy layers into strips over the threads (slides reach 3
     // rows, less than a strip); later, and in the hourglass, the grids are swept side by side.
-    const std::function<Scene()> makers[] = {[] { return granularSculpture(11, 32, 33.0f, 1.0f); },
-                                             [] { return granularHourglass(11, 48, 2.5f); }};
-    for (const auto& make : makers)
-        for (bool sleeping : {true, false}) {
-            CAPTURE(sleeping);
-            Scene one = make(), two = make(), four = make();
-            for (Scene* s : {&one, &two, &four}) s->setSleeping(sleeping);
-            two.setThreads(2);
-            four.setThreads(4);
-            for (int i = 0; i < 200; ++i) {
-                one.step();
-                two.step();
-                four.step();
-                REQUIRE(one.stateHash() == two.stateHash());
-                REQUIRE(one.stateHash() == four.stateHash());
-            }
-        }
+    fixtures::requireThreadCountsAgree({[] { return granularSculpture(11, 32, 33.0f, 1.0f); },
+                                        [] { return granularHourglass(11, 48, 2.5f); }},
+                                       200);
 }
 
 TEST_CASE("granular: an hourglass drain conserves every grain and empties the upper bulb") {

@@ -35,29 +35,30 @@ inline bool openApplicationInto(std::optional<Application>& app, ApplicationOpti
     }
 }
 
-/// A hidden, offscreen window of width x height pixels on an empty canvas, panels off.
-inline ApplicationOptions canvasOptions(int width, int height, int resolution, const char* title) {
+/// A hidden, offscreen window of width x height pixels, panels off, on a scene of this kind and
+/// resolution built without a model file.
+inline ApplicationOptions hiddenWindowOptions(int width, int height, sandcore::SceneKind kind, int resolution,
+                                              const char* title) {
     ApplicationOptions options;
     options.window = {width, height, false, false, title};
     options.offscreen = true;
     options.initial.showGui = false;
-    options.initial.scene.request.kind = sandcore::SceneKind::Canvas;
+    options.initial.scene.request.kind = kind;
     options.initial.scene.request.modelPath.clear();
     options.initial.scene.request.resolution = resolution;
     return options;
 }
 
+/// A hidden, offscreen window of width x height pixels on an empty canvas, panels off.
+inline ApplicationOptions canvasOptions(int width, int height, int resolution, const char* title) {
+    return hiddenWindowOptions(width, height, sandcore::SceneKind::Canvas, resolution, title);
+}
+
 /// A hidden, offscreen window of width x height pixels on the procedural hourglass (no model
-/// file), panels off, simulation paused.
+/// file), panels off.
 inline ApplicationOptions proceduralHourglassOptions(int width, int height, int resolution, const char* title) {
-    ApplicationOptions options;
-    options.window = {width, height, false, false, title};
-    options.offscreen = true;
-    options.initial.showGui = false;
-    options.initial.scene.request.kind = sandcore::SceneKind::Hourglass;
-    options.initial.scene.request.modelPath.clear();
+    ApplicationOptions options = hiddenWindowOptions(width, height, sandcore::SceneKind::Hourglass, resolution, title);
     options.initial.scene.request.shape = "hourglass";
-    options.initial.scene.request.resolution = resolution;
     return options;
 }
 

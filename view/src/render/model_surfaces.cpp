@@ -83,17 +83,21 @@ void ModelSurfaces::sortGlass(const glm::vec3& eye) {
     sortedFor_ = eye;
 }
 
+void ModelSurfaces::useProgram(const ModelLight& frame, bool glass) const {
+    glUseProgram(program_.get());
+    glUniformMatrix4fv(uniform(program_, "viewProjection"), 1, GL_FALSE, frame.viewProjection);
+    glUniform3fv(uniform(program_, "cameraPosition"), 1, glm::value_ptr(frame.eye));
+    glUniform3fv(uniform(program_, "lightPosition"), 1, glm::value_ptr(frame.light));
+    glUniform1i(uniform(program_, "glass"), glass ? 1 : 0);
+}
+
 void ModelSurfaces::drawOpaque(const ModelLight& frame) {
     if (opaqueVertices_ == 0) return;
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    glUseProgram(program_.get());
-    glUniformMatrix4fv(uniform(program_, "viewProjection"), 1, GL_FALSE, frame.viewProjection);
-    glUniform3fv(uniform(program_, "cameraPosition"), 1, glm::value_ptr(frame.eye));
-    glUniform3fv(uniform(program_, "lightPosition"), 1, glm::value_ptr(frame.light));
-    glUniform1i(uniform(program_, "glass"), 0);
+    useProgram(frame, false);
     glBindVertexArray(opaqueArray_.get());
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(opaqueVertices_));
     glBindVertexArray(0);
@@ -107,11 +111,7 @@ void ModelSurfaces::drawGlass(const ModelLight& frame) {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDisable(GL_CULL_FACE);
-    glUseProgram(program_.get());
-    glUniformMatrix4fv(uniform(program_, "viewProjection"), 1, GL_FALSE, frame.viewProjection);
-    glUniform3fv(uniform(program_, "cameraPosition"), 1, glm::value_ptr(frame.eye));
-    glUniform3fv(uniform(program_, "lightPosition"), 1, glm::value_ptr(frame.light));
-    glUniform1i(uniform(program_, "glass"), 1);
+    useProgram(frame, true);
     glUniform1i(uniform(program_, "blackBackground"), frame.blackBackground ? 1 : 0);
     glBindVertexArray(glassArray_.get());
     glDrawElements(GL_TRIANGLES, GLsizei(order_.size()), GL_UNSIGNED_INT, nullptr);

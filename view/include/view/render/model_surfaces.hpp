@@ -48,6 +48,8 @@ private:
         float r, g, b;    // colour 0..1
     };
     void sortGlass(const glm::vec3& eye);
+    // Binds the program with the frame's matrices and light; glass picks the glass shading.
+    void useProgram(const ModelLight& frame, bool glass) const;
 
     GlProgram program_;
     GlVertexArray opaqueArray_, glassArray_;
