@@ -1,23 +1,11 @@
 #include "app/frame_benchmark.hpp"
 
-#include <chrono>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <ostream>
 #include <stdexcept>
 
 namespace sandglass {
-
-double threadCpuMilliseconds() {
-#if defined(CLOCK_THREAD_CPUTIME_ID)
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return double(now.tv_sec) * 1000.0 + double(now.tv_nsec) / 1.0e6;
-#else
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-#endif
-}
 
 std::vector<BenchmarkCase> thesisBenchmarkCases() {
     std::vector<BenchmarkCase> cases;
@@ -31,9 +19,10 @@ namespace {
 const char* onOff(bool value) { return value ? "on" : "off"; }
 
 void writeRow(std::ostream& out, const BenchmarkRow& row) {
-    char figures[128];
-    std::snprintf(figures, sizeof figures, "%.1f\t%.0f\t%.0f\t%.2f\t%.3f", row.framesPerSecond(), row.uploadBytesPerFrame,
-                  row.movesPerStep, row.cpuMillisecondsPerFrame, row.upkeepMillisecondsPerStep);
+    char figures[160];
+    std::snprintf(figures, sizeof figures, "%.1f\t%.0f\t%.0f\t%.2f\t%.2f\t%.3f", row.framesPerSecond(),
+                  row.uploadBytesPerFrame, row.movesPerStep, row.cpuMillisecondsPerFrame, row.appCpuMillisecondsPerFrame,
+                  row.upkeepMillisecondsPerStep);
     out << onOff(row.simulation) << '\t' << onOff(row.gui) << '\t' << renderModeShortName(row.setup.mode) << '\t'
         << row.setup.grainsPerCell << '\t' << row.filledCells << '\t' << onOff(row.setup.lighting) << '\t'
         << (row.setup.innerGrains ? "yes" : "no") << '\t' << figures << '\n';
@@ -50,7 +39,7 @@ void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& r
         out << "Framebuffer: " << report.width << "x" << report.height << " pixels\n";
         for (bool inner : {true, false}) {
             out << (inner ? "\nWith inner grains:\n\n" : "\nWithout inner grains:\n\n");
-            out << "Sim\tGui\tMode\tPpC\tfilled\tLight\tinner\tFPS\tB/frame\tmoves\tCPU ms\tupkeep\n";
+            out << "Sim\tGui\tMode\tPpC\tfilled\tLight\tinner\tFPS\tB/frame\tmoves\tCPU ms\tapp ms\tupkeep\n";
             for (const BenchmarkRow& row : report.rows)
                 if (row.setup.innerGrains == inner) writeRow(out, row);
         }
@@ -59,13 +48,14 @@ void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& r
            "BB (billboards), PBB (pseudo-billboards), PpC = grains drawn per cell, filled = filled cells,\n"
            "Light = lighting from estimated normals, inner = inner grains drawn, FPS = frames per second,\n"
            "B/frame = grain bytes uploaded per frame, moves = grains moved per step, CPU ms = main-thread CPU\n"
-           "time per frame without the steps (with a software GL it includes vertex processing), upkeep = ms per\n"
-           "step of inner-flag and normal upkeep plus grain upload.\n";
+           "time per frame without the steps (with a software GL it includes vertex processing), app ms = the part\n"
+           "of CPU ms outside the draw calls (the application's own work), upkeep = ms per step of inner-flag and\n"
+           "normal upkeep plus grain upload.\n";
 }
 
 void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& reports) {
     out << "scene,gl_renderer,gl_version,width,height,sim,gui,mode,grains_per_cell,filled_cells,light,inner,frames,"
-           "seconds,fps,upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,upkeep_ms_per_step\n";
+           "seconds,fps,upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step\n";
     auto quoted = [](const std::string& text) {
         std::string result = "\"";
         for (char c : text) result += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -74,9 +64,9 @@ void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& re
     for (const BenchmarkReport& report : reports)
         for (const BenchmarkRow& row : report.rows) {
             char numbers[192];
-            std::snprintf(numbers, sizeof numbers, "%d,%.4f,%.2f,%.1f,%.1f,%.3f,%.4f", row.frames, row.seconds,
+            std::snprintf(numbers, sizeof numbers, "%d,%.4f,%.2f,%.1f,%.1f,%.3f,%.3f,%.4f", row.frames, row.seconds,
                           row.framesPerSecond(), row.uploadBytesPerFrame, row.movesPerStep, row.cpuMillisecondsPerFrame,
-                          row.upkeepMillisecondsPerStep);
+                          row.appCpuMillisecondsPerFrame, row.upkeepMillisecondsPerStep);
             out << quoted(report.scene) << ',' << quoted(report.glRenderer) << ',' << quoted(report.glVersion) << ','
                 << report.width << ',' << report.height << ',' << onOff(row.simulation) << ',' << onOff(row.gui) << ','
                 << renderModeName(row.setup.mode) << ',' << row.setup.grainsPerCell << ',' << row.filledCells << ','

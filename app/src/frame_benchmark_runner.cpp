@@ -1,5 +1,7 @@
 #include "app/frame_benchmark_runner.hpp"
 
+#include "view/render/thread_cpu_clock.hpp"
+
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
@@ -24,7 +26,7 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
     glfwSwapInterval(0);    // measure drawing, not the display's refresh
     auto last = Clock::now();
     RenderSettings render = app.state().render;
-    double cpuMilliseconds = 0.0, uploadBytes = 0.0, uploadMilliseconds = 0.0;
+    double cpuMilliseconds = 0.0, drawCallMilliseconds = 0.0, uploadBytes = 0.0, uploadMilliseconds = 0.0;
     auto frame = [&] {
         glfwPollEvents();
         const auto now = Clock::now();
@@ -35,6 +37,7 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         cpuMilliseconds += threadCpuMilliseconds() - cpuStart;
         uploadBytes += double(app.renderer().stats().uploadBytes);
         uploadMilliseconds += app.renderer().stats().uploadMilliseconds;
+        drawCallMilliseconds += app.renderer().stats().drawCallCpuMilliseconds;
         if (afterEachFrame) afterEachFrame();
     };
     // The window shows which row runs and that Esc stops it (the key callback sets the request).
@@ -57,7 +60,7 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         BenchmarkRow row;
         row.setup = setup;
         host.takeStepTally();
-        cpuMilliseconds = uploadBytes = uploadMilliseconds = 0.0;
+        cpuMilliseconds = drawCallMilliseconds = uploadBytes = uploadMilliseconds = 0.0;
         const auto start = Clock::now();
         double elapsed = 0.0;
         while (!progress.cancelRequested &&
@@ -74,6 +77,8 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         row.uploadBytesPerFrame = uploadBytes / row.frames;
         row.movesPerStep = double(tally.moves) / steps;
         row.cpuMillisecondsPerFrame = std::max(0.0, cpuMilliseconds - tally.stepMilliseconds) / row.frames;
+        row.appCpuMillisecondsPerFrame =
+            std::max(0.0, cpuMilliseconds - tally.stepMilliseconds - drawCallMilliseconds) / row.frames;
         row.upkeepMillisecondsPerStep = tally.steps > 0 ? (tally.upkeepMilliseconds + uploadMilliseconds) / steps : 0.0;
         report.rows.push_back(row);
         std::printf("%-4s %2d grains/cell, light %-3s, inner %-3s: %8.1f fps, %10.0f B/frame, %7.2f CPU ms/frame\n",

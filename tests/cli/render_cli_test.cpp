@@ -4,6 +4,7 @@
 #include "support/temporary_folder.hpp"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <cstdlib>
@@ -72,10 +73,14 @@ TEST_CASE("cli: render --frames reports upload bytes, moves, CPU and upkeep time
         INFO(run.err);
         REQUIRE(run.exitCode == 0);
         for (const char* key : {"\"upload_bytes_per_frame\":", "\"moves_per_step\":", "\"cpu_ms_per_frame\":",
-                                "\"upkeep_ms_per_step\":", "\"steps\":14"}) {
+                                "\"app_cpu_ms_per_frame\":", "\"upkeep_ms_per_step\":", "\"steps\":14"}) {
             CAPTURE(key);
             CHECK(run.out.find(key) != std::string::npos);
         }
+        // The application's part is the frame's CPU time less the draw calls: never more than it.
+        const nlohmann::json report = nlohmann::json::parse(run.out);
+        CHECK(report["app_cpu_ms_per_frame"].get<double>() >= 0.0);
+        CHECK(report["app_cpu_ms_per_frame"].get<double>() <= report["cpu_ms_per_frame"].get<double>());
         // Sand flows at step 10: both paths upload something, and moves are counted.
         CHECK(run.out.find("\"upload_bytes_per_frame\":0.0") == std::string::npos);
         CHECK(run.out.find("\"moves_per_step\":0.0") == std::string::npos);

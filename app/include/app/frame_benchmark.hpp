@@ -36,6 +36,7 @@ struct BenchmarkRow {
     double uploadBytesPerFrame = 0.0; ///< V8: grain bytes sent to the GPU per frame (mean)
     double movesPerStep = 0.0;      ///< grains moved per step while timed
     double cpuMillisecondsPerFrame = 0.0; ///< main-thread CPU time per frame, the steps' time taken out
+    double appCpuMillisecondsPerFrame = 0.0; ///< of which outside the draw calls (the application's own work)
     double upkeepMillisecondsPerStep = 0.0; ///< surface upkeep and grain upload per step, ms
     double framesPerSecond() const { return seconds > 0.0 ? double(frames) / seconds : 0.0; } ///< FPS
 };
@@ -58,14 +59,10 @@ struct BenchmarkTiming {
     int warmupFrames = 2;      ///< untimed frames after switching configuration
 };
 
-/// CPU time of the calling thread, ms (wall time where the platform has no thread clock). With a
-/// software GL (llvmpipe) it includes the vertex processing the driver runs on the caller's thread.
-double threadCpuMilliseconds();
-
 /// The thesis's table form, grouped by inner grains drawn / skipped.
 void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& reports, const std::string& command);
 /// One line per row: scene,gl_renderer,gl_version,width,height,sim,gui,mode,grains_per_cell,filled_cells,light,inner,frames,seconds,fps,
-/// upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,upkeep_ms_per_step.
+/// upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step.
 void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& reports);
 /// Writes folder/benchmark.txt and folder/benchmark.csv (creating the folder); throws std::runtime_error.
 void writeBenchmarkFiles(const std::filesystem::path& folder, const std::vector<BenchmarkReport>& reports,

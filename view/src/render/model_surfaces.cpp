@@ -103,9 +103,13 @@ void ModelSurfaces::drawOpaque(const ModelLight& frame) {
     glBindVertexArray(0);
 }
 
+void ModelSurfaces::sortGlassFor(const glm::vec3& eye) {
+    if (glm::distance(eye, sortedFor_) > 1e-4f * std::max(1.0f, glm::length(eye))) sortGlass(eye);
+}
+
 void ModelSurfaces::drawGlass(const ModelLight& frame) {
     if (glassTriangles_.empty()) return;
-    if (glm::distance(frame.eye, sortedFor_) > 1e-4f * std::max(1.0f, glm::length(frame.eye))) sortGlass(frame.eye);
+    sortGlassFor(frame.eye);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE); // glass never hides what lies behind it
     glEnable(GL_BLEND);

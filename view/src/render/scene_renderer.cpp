@@ -3,6 +3,7 @@
 #include "view/render/hull_mesh.hpp"
 #include "scene/sand_patterns.hpp"
 #include "view/render/shader_program.hpp"
+#include "view/render/thread_cpu_clock.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -240,15 +241,25 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
         glUseProgram(grainGpuProgram_.get());
         instanceCount_ = setGpuUniforms(scene, stepFraction, settings);
     }
-    drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale);
+    // The draw calls are timed apart from the application's own work (see RenderStats).
+    stats_.drawCallCpuMilliseconds = 0.0;
+    auto timedDraw = [&](auto&& drawCalls) {
+        const double start = threadCpuMilliseconds();
+        drawCalls();
+        stats_.drawCallCpuMilliseconds += threadCpuMilliseconds() - start;
+    };
+    timedDraw([&] { drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale); });
     // S10: the model as modelled, its opaque parts with the sand, its glass over both.
     const bool modelled = settings.hull && !settings.voxelHull && !model_.empty();
     const ModelLight frame{glm::value_ptr(viewProjection), camera.position(),
                            camera.position() - camera.up() * (0.15f * camera.distance()), settings.blackBackground};
-    if (modelled) model_.drawOpaque(frame);
-    draft_.draw(draftPlacement_, glm::value_ptr(viewProjection));
-    if (modelled) model_.drawGlass(frame);
-    else if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
+    if (modelled) model_.sortGlassFor(frame.eye); // the application's work, outside the timed calls
+    timedDraw([&] {
+        if (modelled) model_.drawOpaque(frame);
+        draft_.draw(draftPlacement_, glm::value_ptr(viewProjection));
+        if (modelled) model_.drawGlass(frame);
+        else if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
+    });
     glBindVertexArray(0);
     glUseProgram(0);
 }

@@ -37,6 +37,8 @@ public:
     void drawOpaque(const ModelLight& frame);
     /// Glass parts, blended over what is drawn, depth test on and writes off.
     void drawGlass(const ModelLight& frame);
+    /// Sorts the glass for this eye if it moved since the last sort (drawGlass does it too).
+    void sortGlassFor(const glm::vec3& eye);
 
     std::int64_t glassTriangles() const { return std::int64_t(glassTriangles_.size()); } ///< uploaded glass triangles
     std::int64_t opaqueTriangles() const { return opaqueVertices_ / 3; }                ///< uploaded opaque triangles

@@ -30,6 +30,9 @@ struct RenderStats {
     bool fullUpload = false;        ///< everything went up (new scene, edit, settings), not just changes
     std::int64_t uploadBytes = 0;   ///< bytes sent to the GPU for the grains this frame
     double uploadMilliseconds = 0;  ///< CPU time of this frame's grain upload (preparation and GL calls)
+    /// This thread's CPU time inside the draw calls: with a software GL that is the driver's vertex
+    /// processing, not the application's; a frame's CPU time less this is what the application spent.
+    double drawCallCpuMilliseconds = 0;
 };
 
 
