@@ -50,7 +50,8 @@ vec3 unpackNormal(uint word) {
 
 const uint kNoMove = 0x80008080u; // sandcore::packMove(0, 0, 0)
 
-const vec2 corners[6] = vec2[6](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
+// A quad's 4 corners; its two triangles index them (0 1 2, 0 2 3), so a GPU shades each corner once.
+const vec2 corners[4] = vec2[4](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
 
 void main() {
     int id = showInner ? gl_InstanceID : int(visibleGrain);
@@ -78,7 +79,7 @@ void main() {
     vec3 normal = unpackNormal(packedNormal);
 
     bool quads = mode >= 2;
-    int subGrain = quads ? gl_VertexID / 6 : gl_VertexID;
+    int subGrain = quads ? gl_VertexID / 4 : gl_VertexID;
     ivec2 texel = ivec2(subGrain, int(grainIdentity % uint(patternCount)));
     vec3 centre = grainPosition + texelFetch(patternOffsets, texel, 0).xyz * (0.5 * cellSize);
 
@@ -98,7 +99,7 @@ void main() {
     vec3 world = centre;
     quadCorner = vec2(0.0);
     if (quads) {
-        quadCorner = corners[gl_VertexID % 6];
+        quadCorner = corners[gl_VertexID % 4];
         vec3 right, up;
         if (mode == 2) {
             // Thesis §3.8 billboard: l = look at this grain, r = C_up x l, u = l x r.

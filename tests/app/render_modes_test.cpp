@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -115,4 +116,70 @@ TEST_CASE("render: black background keeps the sand and turns the rest black") {
     if (!testing::requireDisplay("drawing")) return;
     checkMode(RenderMode::PseudoBillboards, true, true);
     checkMode(RenderMode::Points, false, true);
+}
+
+// A sub-grain's quad is two triangles over 4 shared corners: whatever the draw path, every grain
+// must come out as one full disc, also when several are drawn in one call (a corner taken from
+// another grain shows as a crescent), and a sprite too.
+namespace {
+
+// Sand pixels of one half of the image (x below or above the middle) fill a disc around their centre.
+void checkDisc(const RgbImage& image, bool rightHalf) {
+    CAPTURE(rightHalf);
+    auto inHalf = [&](int x) { return (x >= image.width / 2) == rightHalf; };
+    double sumX = 0.0, sumY = 0.0;
+    int count = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (inHalf(x) && looksLikeSand(at(image, x, y))) sumX += x, sumY += y, ++count;
+    REQUIRE(count > 150);
+    const double cx = sumX / count, cy = sumY / count;
+    double farthest = 0.0;
+    int left = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (inHalf(x) && looksLikeSand(at(image, x, y))) {
+                farthest = std::max(farthest, std::hypot(x - cx, y - cy));
+                left += x < cx ? 1 : 0;
+            }
+    // A disc fills the circle around its centre; a crescent or a lone triangle does not.
+    CHECK(double(count) > 0.85 * 3.14159265 * farthest * farthest);
+    CHECK(std::abs(2 * left - count) < count / 10);
+}
+
+} // namespace
+
+TEST_CASE("render: grains are round discs as sprites, billboards and pseudo-billboards, drawn together") {
+    if (!testing::requireDisplay("drawing")) return;
+    for (RenderMode mode : {RenderMode::Sprites, RenderMode::Billboards, RenderMode::PseudoBillboards})
+        for (GrainPath path : {GrainPath::GpuInterpolated, GrainPath::CpuFullUpload}) {
+            CAPTURE(renderModeName(mode));
+            CAPTURE(int(path));
+            ApplicationOptions options = testing::canvasOptions(240, 120, 24, "sandglass round grains test");
+            options.initial.render.mode = mode;
+            options.initial.render.grainsPerCell = 1;
+            options.initial.render.jitter = 0.0f;
+            options.initial.render.pointSize = 30.0f;
+            options.initial.render.grainPath = path;
+            options.initial.simulationRunning = false;
+            std::optional<Application> app = testing::openApplication(std::move(options), "round grains");
+            if (!app) return;
+            // Two grains side by side along x, two cells apart, seen from the front.
+            const sandcore::CellGrid& lower = app->scene().grid(sandcore::GridLevel::Lower);
+            const int x0 = lower.size().x / 2 - 2, z = lower.size().z / 2;
+            for (int x : {x0, x0 + 4})
+                REQUIRE(app->host().editScene().addGrain(sandcore::GridLevel::Lower, lower.index(x, 1, z)) >= 0);
+            const sandcore::Int3 origin = app->scene().gridOrigin(sandcore::GridLevel::Lower);
+            const float size = app->state().render.cellSize;
+            auto corner = [&](float dx, float dy, float dz) {
+                return sandcore::Vec3{(float(origin.x + x0) + dx) * size, (float(origin.y + 1) + dy) * size,
+                                      (float(origin.z + z) + dz) * size};
+            };
+            app->camera().setView(CameraView::Front);
+            app->camera().frame(corner(-0.5f, -0.5f, 0.0f), corner(5.5f, 1.5f, 1.0f));
+            app->renderFrame(0.0);
+            const RgbImage image = app->captureFrame();
+            checkDisc(image, false);
+            checkDisc(image, true);
+        }
 }

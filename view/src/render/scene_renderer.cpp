@@ -12,6 +12,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace sandglass {
 
@@ -46,7 +48,7 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
       grainGpuProgram_(loadShaderProgram(shaderFolder / "grain_gpu.vert", shaderFolder / "grain.frag", "displayPosition")),
       hullProgram_(loadShaderProgram(shaderFolder / "hull.vert", shaderFolder / "hull.frag")),
       grainArray_(newVertexArray()), hullArray_(newVertexArray()), lineArray_(newVertexArray()),
-      grainBuffer_(newBuffer()), hullBuffer_(newBuffer()), lineBuffer_(newBuffer()),
+      grainBuffer_(newBuffer()), hullBuffer_(newBuffer()), lineBuffer_(newBuffer()), quadCorners_(newBuffer()),
       model_(shaderFolder), patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
     // Per-instance attributes; the vertex shader needs no per-vertex data (it uses gl_VertexID).
     glBindVertexArray(grainArray_.get());
@@ -65,6 +67,16 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
     hullAttributes(hullArray_.get(), hullBuffer_.get());
     hullAttributes(lineArray_.get(), lineBuffer_.get());
     glBindVertexArray(0);
+    // Billboards and pseudo-billboards draw each sub-grain's quad from 4 corners, not 6 vertices:
+    // the two triangles share a diagonal, and an indexed draw lets the GPU reuse its corners.
+    std::vector<std::uint16_t> quadCorners;
+    for (std::uint16_t k = 0; k < kMaxGrainsPerCell; ++k)
+        for (std::uint16_t corner : {0, 1, 2, 0, 2, 3}) quadCorners.push_back(std::uint16_t(4 * k + corner));
+    // Filled through the array target: the element target belongs to a vertex array, none is bound here.
+    glBindBuffer(GL_ARRAY_BUFFER, quadCorners_.get());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(quadCorners.size() * sizeof(std::uint16_t)), quadCorners.data(),
+                 GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
 
     // The Scribble patterns as two small textures: 32 sub-grains wide, one row per pattern.
     const std::vector<SandPattern> patterns = makeSandPatterns();
@@ -305,8 +317,10 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
     else
         glBindVertexArray(grainArray_.get());
     const bool quads = settings.mode == RenderMode::Billboards || settings.mode == RenderMode::PseudoBillboards;
-    if (quads)
-        glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * perCell, GLsizei(instanceCount_));
+    if (quads) {
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, quadCorners_.get()); // kept by the bound vertex array
+        glDrawElementsInstanced(GL_TRIANGLES, 6 * perCell, GL_UNSIGNED_SHORT, nullptr, GLsizei(instanceCount_));
+    }
     else
         glDrawArraysInstanced(GL_POINTS, 0, perCell, GLsizei(instanceCount_));
 }

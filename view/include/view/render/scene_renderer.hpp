@@ -94,6 +94,7 @@ private:
     GlProgram grainProgram_, grainGpuProgram_, hullProgram_;
     GlVertexArray grainArray_, hullArray_, lineArray_;
     GlBuffer grainBuffer_, hullBuffer_, lineBuffer_;
+    GlBuffer quadCorners_; // indices of the quads' triangles: 0 1 2, 0 2 3 per sub-grain
     ModelSurfaces model_; // S10: the model as modelled
     GlTexture patternOffsets_, patternColors_;
     GrainInstanceBuilder builder_;
