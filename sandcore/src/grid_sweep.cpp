@@ -159,22 +159,14 @@ void GridSweep::applyDeferredWakes() {
     deferredWakesAbove_.clear();
 }
 
-void GridSweep::writeLoggedMoves(GrainStore& grains, std::uint64_t step, int part, int parts) const {
+void GridSweep::writeLoggedMoves(GrainStore& grains, std::uint64_t step) const {
     if (granular_ || !recordsDeferred_) return; // written as they moved
-    const auto write = [&](auto partOf) {
-        for (const StripLog& log : logs_)
-            for (const LoggedMove& m : log.deferred) {
-                if (partOf(m.grain >> kGrainsPerPartBits) != std::uint32_t(part)) continue;
-                grains.cell[m.grain] = m.to;
-                grains.cameFrom[m.grain] = m.cameFrom;
-                grains.movedAtStep[m.grain] = step;
-            }
-    };
-    const auto count = std::uint32_t(parts);
-    if ((count & (count - 1)) == 0) // a power of two (1, 2, 4 threads): no division per move
-        write([mask = count - 1](std::uint32_t block) { return block & mask; });
-    else
-        write([count](std::uint32_t block) { return block % count; });
+    for (const StripLog& log : logs_)
+        for (const LoggedMove& m : log.deferred) {
+            grains.cell[m.grain] = m.to;
+            grains.cameFrom[m.grain] = m.cameFrom;
+            grains.movedAtStep[m.grain] = step;
+        }
 }
 
 void GridSweep::takeLoggedMoves(std::vector<std::uint32_t>& moved) {
@@ -225,7 +217,7 @@ int GridSweep::awakeRowsInLayer(int y) const {
 // granular ones go through visitGranular, chosen once per sweep, so classic pays no test per grain.
 // Away from the grid's sides the 8 successors are read with no bounds tests and the slip is
 // picked from a mask of the empty ones without branches; at the sides chooseMove does it. Both
-// make the same choice. The grain's record is written after the sweep (applyLoggedMoves).
+// make the same choice. The grain's record is written here or logged (SweepContext::ownRecordBlocks).
 inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int x, int y, int z) {
     CellValue* cells = context.grid.cells().data();
     const auto sizeX = std::uint32_t(size_.x);
@@ -268,8 +260,9 @@ inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int
     cells[from] = kEmpty;
     occupied_[word] &= ~bit;
     const MoveCode back = packMove(-dx, 1, -dz);
-    if (context.deferRecords) {
-        log.deferred.push_back({std::uint32_t(grain), to, back});
+    if (context.ownRecordBlocks >= 0 &&
+        int(std::uint32_t(grain) >> kGrainsPerPartBits & 1u) != context.ownRecordBlocks) {
+        log.deferred.push_back({std::uint32_t(grain), to, back}); // the other grid's worker's blocks
     } else {
         GrainStore& grains = context.grains;
         grains.cell[std::size_t(grain)] = to;
@@ -350,7 +343,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
 }
 
 SweepResult GridSweep::sweep(const SweepContext& context, WorkerPool* pool) {
-    recordsDeferred_ = context.deferRecords;
+    recordsDeferred_ = context.ownRecordBlocks >= 0;
     return granular_ ? sweepBy<true>(context, pool) : sweepBy<false>(context, pool);
 }
 

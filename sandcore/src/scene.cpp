@@ -135,14 +135,15 @@ void Scene::step() {
     const bool sideBySide = pool && std::min(lowerWork, upperWork) > 0 &&
                             4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
     // Side by side, the two grids' threads would write the same cache lines of grain records
-    // (grains moving in both have nearby ids): each logs its moves, written after both sweeps.
-    // On one thread the sweeps list the moved grains in movedGrains_ directly.
+    // (grains moving in both have nearby ids): each writes the records of alternate blocks of ids
+    // and logs the others, written after both sweeps. On one thread the sweeps list the moved
+    // grains in movedGrains_ directly.
     movedGrains_.clear();
     std::vector<std::uint32_t>* movedList = pool ? nullptr : &movedGrains_;
-    const SweepContext lowerContext{lower_,   grains_,           settings_.seed, stepNumber, GridLevel::Lower,
-                                    settings_.sleeping, stepKey, sideBySide,     movedList};
-    const SweepContext upperContext{upper_,   grains_,           settings_.seed, stepNumber, GridLevel::Upper,
-                                    settings_.sleeping, stepKey, sideBySide,     movedList};
+    const SweepContext lowerContext{lower_,   grains_,           settings_.seed,      stepNumber, GridLevel::Lower,
+                                    settings_.sleeping, stepKey, sideBySide ? 0 : -1, movedList};
+    const SweepContext upperContext{upper_,   grains_,           settings_.seed,      stepNumber, GridLevel::Upper,
+                                    settings_.sleeping, stepKey, sideBySide ? 1 : -1, movedList};
     if (sideBySide) {
         lowerSweep_->setDeferWakesAbove(true);
         pool->parallelFor(2, [&](int grid) {
@@ -157,16 +158,14 @@ void Scene::step() {
         lower = lowerSweep_->sweep(lowerContext, pool);
         upper = upperSweep_->sweep(upperContext, pool);
     }
-    // The sweeps logged their moves instead of writing grain records that both grids' workers
-    // would share; written here, before the transition reads them, each thread its own blocks of ids.
-    const auto writeMoves = [&](int part, int parts) {
-        lowerSweep_->writeLoggedMoves(grains_, stepNumber, part, parts);
-        upperSweep_->writeLoggedMoves(grains_, stepNumber, part, parts);
-    };
-    if (pool && lower.moves + upper.moves >= kMinMovesForThreads)
-        pool->parallelFor(pool->threadCount(), [&](int part) { writeMoves(part, pool->threadCount()); });
-    else
-        writeMoves(0, 1);
+    // The records each grid's worker left to the other's blocks of ids, written before the
+    // transition reads them; the two logs hold disjoint blocks, so they are written side by side.
+    if (sideBySide && lower.moves + upper.moves >= kMinMovesForThreads)
+        pool->parallelFor(2, [&](int grid) { (grid == 0 ? lowerSweep_ : upperSweep_)->writeLoggedMoves(grains_, stepNumber); });
+    else {
+        lowerSweep_->writeLoggedMoves(grains_, stepNumber);
+        upperSweep_->writeLoggedMoves(grains_, stepNumber);
+    }
     lowerSweep_->takeLoggedMoves(movedGrains_);
     upperSweep_->takeLoggedMoves(movedGrains_);
     if (granular_) {
