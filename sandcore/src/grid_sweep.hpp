@@ -119,8 +119,8 @@ public:
             if (!rowAwake_[row]) continue;
             rowAwake_[row] = 0;
             for (int w = 0; w < rowWords_; ++w) {
-                std::uint64_t bits = words_[std::size_t(row) * rowWords_ + std::size_t(w)];
-                words_[std::size_t(row) * rowWords_ + std::size_t(w)] = 0;
+                std::uint64_t bits = words_[std::size_t(row) * rowWords_ + std::size_t(w)].awake;
+                words_[std::size_t(row) * rowWords_ + std::size_t(w)].awake = 0;
                 while (bits) {
                     const int x = w * 64 + __builtin_ctzll(bits);
                     bits &= bits - 1;
@@ -151,11 +151,16 @@ private:
     bool deferWakesAbove_ = false;
     std::vector<std::uint32_t> deferredWakesAbove_; // x + sizeX * z of the outlet cells to wake
     int rowWords_;                       // 64-bit words per row of awake bits
-    std::vector<std::uint64_t> words_;   // awake bits, row = y * sizeZ + z, padded to whole words
-    // Cells that may hold a grain, in the layout of words_: set by every wakeAt (each grain that
-    // enters a cell is woken there), cleared when a classic move or a visit finds the cell EMPTY.
-    // Waking the cells above an emptied cell ANDs with it, so EMPTY and INVALID cells stay asleep.
-    std::vector<std::uint64_t> occupied_;
+    // Per 64 cells of a row: the awake bits, and the cells that may hold a grain (set by every
+    // wakeAt: each grain that enters a cell is woken there; cleared when a classic move or a visit
+    // finds the cell EMPTY). Waking the cells above an emptied cell ANDs with the second, so EMPTY
+    // and INVALID cells stay asleep. Side by side, a visit or a wake that reads one word finds
+    // the other in the same cache line (two arrays cost a second miss per visit and per wake).
+    struct RowWord {
+        std::uint64_t awake = 0;
+        std::uint64_t occupied = 0;
+    };
+    std::vector<RowWord> words_; // row = y * sizeZ + z, padded to whole words
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
     bool recordsDeferred_ = false;              // the last sweep left its records to writeLoggedMoves
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
