@@ -43,8 +43,7 @@ constexpr auto kNthSetBit = [] {
 GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
     : size_(gridSize), bottomIsOutlet_(bottomIsOutlet), rowWords_((gridSize.x + 63) / 64) {
     const std::size_t rows = std::size_t(gridSize.y) * std::size_t(gridSize.z);
-    words_.assign(rows * std::size_t(rowWords_), 0);
-    occupied_.assign(rows * std::size_t(rowWords_), 0);
+    words_.assign(rows * std::size_t(rowWords_), RowWord{});
     rowAwake_.assign(rows, 0);
     logs_.resize(std::size_t((gridSize.z + kStripRows - 1) / kStripRows));
 }
@@ -53,8 +52,8 @@ void GridSweep::wakeAt(int x, int y, int z) {
     const std::size_t row = std::size_t(y) * std::size_t(size_.z) + std::size_t(z);
     const std::size_t word = row * std::size_t(rowWords_) + std::size_t(x >> 6);
     const std::uint64_t bit = std::uint64_t{1} << (x & 63);
-    words_[word] |= bit;
-    occupied_[word] |= bit; // every grain that enters a cell is woken there
+    words_[word].awake |= bit;
+    words_[word].occupied |= bit; // every grain that enters a cell is woken there
     rowAwake_[row] = 1;
 }
 
@@ -69,18 +68,17 @@ void GridSweep::wake(std::uint32_t cell) {
 // two word operations. EMPTY and INVALID cells stay asleep: that is exact, as in
 // wakeGrainsAround, since a grain that enters one of them later is woken by its move.
 inline void GridSweep::wakeSpan(std::size_t row, int x0, int x1) {
-    std::uint64_t* words = words_.data() + row * std::size_t(rowWords_);
-    const std::uint64_t* occupied = occupied_.data() + row * std::size_t(rowWords_);
+    RowWord* words = words_.data() + row * std::size_t(rowWords_);
     const int first = x0 >> 6, last = x1 >> 6;
     std::uint64_t woken;
     if (first == last) {
-        woken = (((std::uint64_t{2} << (x1 - x0)) - 1) << (x0 & 63)) & occupied[first];
-        words[first] |= woken;
+        woken = (((std::uint64_t{2} << (x1 - x0)) - 1) << (x0 & 63)) & words[first].occupied;
+        words[first].awake |= woken;
     } else {
-        const std::uint64_t low = (~std::uint64_t{0} << (x0 & 63)) & occupied[first];
-        const std::uint64_t high = ((std::uint64_t{2} << (x1 & 63)) - 1) & occupied[last];
-        words[first] |= low;
-        words[last] |= high;
+        const std::uint64_t low = (~std::uint64_t{0} << (x0 & 63)) & words[first].occupied;
+        const std::uint64_t high = ((std::uint64_t{2} << (x1 & 63)) - 1) & words[last].occupied;
+        words[first].awake |= low;
+        words[last].awake |= high;
         woken = low | high;
     }
     if (woken) rowAwake_[row] = 1;
@@ -109,11 +107,11 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, std:
         const auto rowMask = std::uint32_t(mask >> ((zz - z + reach) * window)) & ((1u << window) - 1);
         if (!rowMask) continue;
         const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
-        std::uint64_t* words = words_.data() + (layerRow + std::size_t(zz)) * std::size_t(rowWords_);
+        RowWord* words = words_.data() + (layerRow + std::size_t(zz)) * std::size_t(rowWords_);
         bool any = false;
         for (int xx = x0; xx <= x1; ++xx)
             if ((rowMask >> (xx - x + reach) & 1u) && cells[xx] >= 0) {
-                words[xx >> 6] |= std::uint64_t{1} << (xx & 63);
+                words[xx >> 6].awake |= std::uint64_t{1} << (xx & 63);
                 any = true;
             }
         if (any) rowAwake_[layerRow + std::size_t(zz)] = 1;
@@ -159,22 +157,14 @@ void GridSweep::applyDeferredWakes() {
     deferredWakesAbove_.clear();
 }
 
-void GridSweep::writeLoggedMoves(GrainStore& grains, std::uint64_t step, int part, int parts) const {
+void GridSweep::writeLoggedMoves(GrainStore& grains, std::uint64_t step) const {
     if (granular_ || !recordsDeferred_) return; // written as they moved
-    const auto write = [&](auto partOf) {
-        for (const StripLog& log : logs_)
-            for (const LoggedMove& m : log.deferred) {
-                if (partOf(m.grain >> kGrainsPerPartBits) != std::uint32_t(part)) continue;
-                grains.cell[m.grain] = m.to;
-                grains.cameFrom[m.grain] = m.cameFrom;
-                grains.movedAtStep[m.grain] = step;
-            }
-    };
-    const auto count = std::uint32_t(parts);
-    if ((count & (count - 1)) == 0) // a power of two (1, 2, 4 threads): no division per move
-        write([mask = count - 1](std::uint32_t block) { return block & mask; });
-    else
-        write([count](std::uint32_t block) { return block % count; });
+    for (const StripLog& log : logs_)
+        for (const LoggedMove& m : log.deferred) {
+            grains.cell[m.grain] = m.to;
+            grains.cameFrom[m.grain] = m.cameFrom;
+            grains.movedAtStep[m.grain] = step;
+        }
 }
 
 void GridSweep::takeLoggedMoves(std::vector<std::uint32_t>& moved) {
@@ -195,8 +185,7 @@ void GridSweep::wakeEveryGrain(const CellGrid& grid) {
 }
 
 void GridSweep::clear() {
-    std::fill(words_.begin(), words_.end(), 0);
-    std::fill(occupied_.begin(), occupied_.end(), 0);
+    std::fill(words_.begin(), words_.end(), RowWord{});
     for (StripLog& log : logs_) {
         log.deferred.clear();
         log.moved.clear();
@@ -211,7 +200,8 @@ std::uint64_t GridSweep::wholeWord(int w) const {
 
 void GridSweep::clearRow(std::uint32_t row) {
     if (!rowAwake_[row]) return;
-    std::fill_n(words_.begin() + std::ptrdiff_t(std::size_t(row) * std::size_t(rowWords_)), rowWords_, 0);
+    RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+    for (int w = 0; w < rowWords_; ++w) words[w].awake = 0;
     rowAwake_[row] = 0;
 }
 
@@ -225,7 +215,7 @@ int GridSweep::awakeRowsInLayer(int y) const {
 // granular ones go through visitGranular, chosen once per sweep, so classic pays no test per grain.
 // Away from the grid's sides the 8 successors are read with no bounds tests and the slip is
 // picked from a mask of the empty ones without branches; at the sides chooseMove does it. Both
-// make the same choice. The grain's record is written after the sweep (applyLoggedMoves).
+// make the same choice. The grain's record is written here or logged (SweepContext::ownRecordBlocks).
 inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int x, int y, int z) {
     CellValue* cells = context.grid.cells().data();
     const auto sizeX = std::uint32_t(size_.x);
@@ -235,7 +225,7 @@ inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int
     const std::size_t word = (std::size_t(y) * std::size_t(size_.z) + std::size_t(z)) * std::size_t(rowWords_) + std::size_t(x >> 6);
     const std::uint64_t bit = std::uint64_t{1} << (x & 63);
     if (grain < 0) {
-        occupied_[word] &= ~bit;
+        words_[word].occupied &= ~bit;
         return false;
     }
     const std::uint32_t straightBelow = from - layer;
@@ -266,10 +256,11 @@ inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int
     const std::uint32_t to = straightBelow + std::uint32_t(std::int64_t(dz) * sizeX + dx);
     cells[to] = grain;
     cells[from] = kEmpty;
-    occupied_[word] &= ~bit;
+    words_[word].occupied &= ~bit;
     const MoveCode back = packMove(-dx, 1, -dz);
-    if (context.deferRecords) {
-        log.deferred.push_back({std::uint32_t(grain), to, back});
+    if (context.ownRecordBlocks >= 0 &&
+        int(std::uint32_t(grain) >> kGrainsPerPartBits & 1u) != context.ownRecordBlocks) {
+        log.deferred.push_back({std::uint32_t(grain), to, back}); // the other grid's worker's blocks
     } else {
         GrainStore& grains = context.grains;
         grains.cell[std::size_t(grain)] = to;
@@ -315,7 +306,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
         rowAwake_[row] = 0;
         // Classic moves only wake cells in the layers above and below, never in this row: take its
         // bits first. Without sleeping, every cell of the row is visited as if awake.
-        std::uint64_t* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+        RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
         for (int w = 0; w < rowWords_; ++w) {
             if constexpr (Granular) {
                 if (context.sleeping) {
@@ -323,9 +314,9 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
                     // of the cell being visited is visited in this step, one set behind it in the
                     // next, as a full sweep would see the change. So each bit is taken as it is reached.
                     std::uint64_t ahead = ~std::uint64_t{0};
-                    while (const std::uint64_t bits = words[w] & ahead) {
+                    while (const std::uint64_t bits = words[w].awake & ahead) {
                         const int bit = __builtin_ctzll(bits);
-                        words[w] &= ~(std::uint64_t{1} << bit);
+                        words[w].awake &= ~(std::uint64_t{1} << bit);
                         ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
                         ++totals.visited;
                         totals.moves += visitGranular(context, log, w * 64 + bit, y, z) ? 1 : 0;
@@ -333,8 +324,8 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
                     continue;
                 }
             }
-            std::uint64_t bits = context.sleeping ? words[w] : wholeWord(w);
-            words[w] = 0;
+            std::uint64_t bits = context.sleeping ? words[w].awake : wholeWord(w);
+            words[w].awake = 0;
             while (bits) {
                 const int x = w * 64 + __builtin_ctzll(bits);
                 bits &= bits - 1;
@@ -350,7 +341,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
 }
 
 SweepResult GridSweep::sweep(const SweepContext& context, WorkerPool* pool) {
-    recordsDeferred_ = context.deferRecords;
+    recordsDeferred_ = context.ownRecordBlocks >= 0;
     return granular_ ? sweepBy<true>(context, pool) : sweepBy<false>(context, pool);
 }
 

@@ -20,7 +20,7 @@ class WorkerPool;
 class GranularRules;
 
 inline constexpr int kStripRows = 8;
-inline constexpr int kGrainsPerPartBits = 6; ///< writeLoggedMoves: 64 grain ids per block
+inline constexpr int kGrainsPerPartBits = 8; ///< SweepContext::ownRecordBlocks: 256 grain ids per block
 
 /// One classic move, kept by the strip that made it and written into the GrainStore after the
 /// sweep: the two grids' workers then never write the same grain records' cache lines.
@@ -30,7 +30,7 @@ struct LoggedMove {
     MoveCode cameFrom;   ///< offset back to the cell it left
 };
 
-/// What one strip of a sweep keeps of its moves: the moves whose records wait (deferRecords), or
+/// What one strip of a sweep keeps of its moves: the moves whose records wait (ownRecordBlocks), or
 /// the ids of grains whose records were written at once.
 struct StripLog {
     std::vector<LoggedMove> deferred; ///< moves whose grain records writeLoggedMoves writes
@@ -53,9 +53,12 @@ struct SweepContext {
     GridLevel level;     ///< which grid: picks the slips, so the two grids draw differently
     bool sleeping;       ///< R5: visit awake cells only; false = every cell (same result)
     std::uint64_t stepKey; ///< counterRandomStepKey(seed, step), computed once per sweep
-    /// Classic moves leave the grain records to writeLoggedMoves (when another grid is swept at
-    /// the same time); false writes them at once, cheaper while no other thread writes records.
-    bool deferRecords;
+    /// Whose grain records a classic move writes at once. -1: every one (no other thread writes
+    /// records meanwhile). 0 or 1, when the two grids are swept side by side: only those of grains
+    /// whose block of 2^kGrainsPerPartBits ids has this parity; the others are logged and written
+    /// by writeLoggedMoves after both sweeps. The two grids' workers then never write the same
+    /// cache lines of grain records, and neither waits for a pass over all the moves.
+    int ownRecordBlocks;
     /// When set (a sweep on one thread that writes records at once), the ids of moved grains are
     /// appended here directly instead of to the strips' logs.
     std::vector<std::uint32_t>* movedList;
@@ -88,11 +91,10 @@ public:
     void setDeferWakesAbove(bool defer) { deferWakesAbove_ = defer; }
     /// Applies the wakes kept while deferred.
     void applyDeferredWakes();
-    /// Writes the moves the last sweep logged into grains (cell, cameFrom, movedAtStep = step), of
-    /// the grains in `part` of `parts`: blocks of 2^kGrainsPerPartBits ids go to the parts in
-    /// turn, so parts on different threads write different cache lines. Granular sweeps write
-    /// the records as they move: nothing to do.
-    void writeLoggedMoves(GrainStore& grains, std::uint64_t step, int part, int parts) const;
+    /// Writes the moves the last sweep logged (the other grid's worker's blocks of grain ids) into
+    /// grains: cell, cameFrom, movedAtStep = step. Granular sweeps write the records as they
+    /// move: nothing to do.
+    void writeLoggedMoves(GrainStore& grains, std::uint64_t step) const;
     /// Appends the ids of the grains the last sweep logged to `moved` and empties the logs. A
     /// granular grain may be listed twice (it may move again in its own layer).
     void takeLoggedMoves(std::vector<std::uint32_t>& moved);
@@ -117,8 +119,8 @@ public:
             if (!rowAwake_[row]) continue;
             rowAwake_[row] = 0;
             for (int w = 0; w < rowWords_; ++w) {
-                std::uint64_t bits = words_[std::size_t(row) * rowWords_ + std::size_t(w)];
-                words_[std::size_t(row) * rowWords_ + std::size_t(w)] = 0;
+                std::uint64_t bits = words_[std::size_t(row) * rowWords_ + std::size_t(w)].awake;
+                words_[std::size_t(row) * rowWords_ + std::size_t(w)].awake = 0;
                 while (bits) {
                     const int x = w * 64 + __builtin_ctzll(bits);
                     bits &= bits - 1;
@@ -149,11 +151,16 @@ private:
     bool deferWakesAbove_ = false;
     std::vector<std::uint32_t> deferredWakesAbove_; // x + sizeX * z of the outlet cells to wake
     int rowWords_;                       // 64-bit words per row of awake bits
-    std::vector<std::uint64_t> words_;   // awake bits, row = y * sizeZ + z, padded to whole words
-    // Cells that may hold a grain, in the layout of words_: set by every wakeAt (each grain that
-    // enters a cell is woken there), cleared when a classic move or a visit finds the cell EMPTY.
-    // Waking the cells above an emptied cell ANDs with it, so EMPTY and INVALID cells stay asleep.
-    std::vector<std::uint64_t> occupied_;
+    // Per 64 cells of a row: the awake bits, and the cells that may hold a grain (set by every
+    // wakeAt: each grain that enters a cell is woken there; cleared when a classic move or a visit
+    // finds the cell EMPTY). Waking the cells above an emptied cell ANDs with the second, so EMPTY
+    // and INVALID cells stay asleep. Side by side, a visit or a wake that reads one word finds
+    // the other in the same cache line (two arrays cost a second miss per visit and per wake).
+    struct RowWord {
+        std::uint64_t awake = 0;
+        std::uint64_t occupied = 0;
+    };
+    std::vector<RowWord> words_; // row = y * sizeZ + z, padded to whole words
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
     bool recordsDeferred_ = false;              // the last sweep left its records to writeLoggedMoves
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits

@@ -13,9 +13,6 @@ namespace sandcore {
 
 namespace {
 
-// Below this many moves in a step, one thread writes the grain records faster than several.
-constexpr std::int64_t kMinMovesForThreads = 2048;
-
 bool layoutOnly(const CellGrid& grid) {
     const auto cells = grid.cells();
     return std::all_of(cells.begin(), cells.end(), [](CellValue v) { return v == kEmpty || v == kInvalid; });
@@ -135,39 +132,37 @@ void Scene::step() {
     const bool sideBySide = pool && std::min(lowerWork, upperWork) > 0 &&
                             4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
     // Side by side, the two grids' threads would write the same cache lines of grain records
-    // (grains moving in both have nearby ids): each logs its moves, written after both sweeps.
-    // On one thread the sweeps list the moved grains in movedGrains_ directly.
+    // (grains moving in both have nearby ids): each writes at once the records of its own
+    // alternate blocks of ids and logs the others. On one thread the sweeps list the moved grains
+    // in movedGrains_ directly.
     movedGrains_.clear();
     std::vector<std::uint32_t>* movedList = pool ? nullptr : &movedGrains_;
-    const SweepContext lowerContext{lower_,   grains_,           settings_.seed, stepNumber, GridLevel::Lower,
-                                    settings_.sleeping, stepKey, sideBySide,     movedList};
-    const SweepContext upperContext{upper_,   grains_,           settings_.seed, stepNumber, GridLevel::Upper,
-                                    settings_.sleeping, stepKey, sideBySide,     movedList};
+    const SweepContext lowerContext{lower_,   grains_,           settings_.seed,      stepNumber, GridLevel::Lower,
+                                    settings_.sleeping, stepKey, sideBySide ? 0 : -1, movedList};
+    const SweepContext upperContext{upper_,   grains_,           settings_.seed,      stepNumber, GridLevel::Upper,
+                                    settings_.sleeping, stepKey, sideBySide ? 1 : -1, movedList};
     if (sideBySide) {
         lowerSweep_->setDeferWakesAbove(true);
+        // A worker that is done writes the records it logged at once: they are of the other
+        // grid's blocks, but no grain is in both grids, so the two threads still write different
+        // records, and they share cache lines only while the other finishes its sweep. No second
+        // pass over the threads is needed before the transition reads the records. Each also
+        // lists its moved grains, the upper grid's apart, appended after both are done.
+        upperMovedGrains_.clear();
         pool->parallelFor(2, [&](int grid) {
-            if (grid == 0)
-                lower = lowerSweep_->sweep(lowerContext, nullptr);
-            else
-                upper = upperSweep_->sweep(upperContext, nullptr);
+            GridSweep& sweep = grid == 0 ? *lowerSweep_ : *upperSweep_;
+            (grid == 0 ? lower : upper) = sweep.sweep(grid == 0 ? lowerContext : upperContext, nullptr);
+            sweep.writeLoggedMoves(grains_, stepNumber);
+            sweep.takeLoggedMoves(grid == 0 ? movedGrains_ : upperMovedGrains_);
         });
+        movedGrains_.insert(movedGrains_.end(), upperMovedGrains_.begin(), upperMovedGrains_.end());
         lowerSweep_->setDeferWakesAbove(false);
         lowerSweep_->applyDeferredWakes();
     } else {
         lower = lowerSweep_->sweep(lowerContext, pool);
         upper = upperSweep_->sweep(upperContext, pool);
     }
-    // The sweeps logged their moves instead of writing grain records that both grids' workers
-    // would share; written here, before the transition reads them, each thread its own blocks of ids.
-    const auto writeMoves = [&](int part, int parts) {
-        lowerSweep_->writeLoggedMoves(grains_, stepNumber, part, parts);
-        upperSweep_->writeLoggedMoves(grains_, stepNumber, part, parts);
-    };
-    if (pool && lower.moves + upper.moves >= kMinMovesForThreads)
-        pool->parallelFor(pool->threadCount(), [&](int part) { writeMoves(part, pool->threadCount()); });
-    else
-        writeMoves(0, 1);
-    lowerSweep_->takeLoggedMoves(movedGrains_);
+    lowerSweep_->takeLoggedMoves(movedGrains_); // side by side: already taken, nothing left
     upperSweep_->takeLoggedMoves(movedGrains_);
     if (granular_) {
         // A granular grain may move again in its own layer within one sweep: list it once.

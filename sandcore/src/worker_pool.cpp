@@ -1,15 +1,19 @@
 #include "sandcore/worker_pool.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <utility>
 
 namespace sandcore {
 
 namespace {
-// A step dispatches many short loops back to back; workers spin briefly before sleeping so
-// they catch the next loop without a futex round trip, and sleep when the simulation idles.
-constexpr int kSpinsBeforeSleep = 1 << 14;
+// A step dispatches many short loops back to back, and the next step's first loop follows the
+// last one after the step's serial tail (tens of microseconds): workers spin that long before
+// sleeping, so they catch the next loop without a futex round trip (whose wake-up can cost as
+// much as the loop), and sleep when the simulation idles.
+constexpr auto kSpinBeforeSleep = std::chrono::microseconds(300);
+constexpr int kSpinsBeforeSleep = 1 << 14; // the caller's wait for tasks others claimed, before it yields
 constexpr std::uint64_t kFieldMask = (std::uint64_t{1} << 21) - 1;
 
 constexpr std::uint64_t nextTaskOf(std::uint64_t ticket) { return ticket & kFieldMask; }
@@ -76,8 +80,11 @@ void WorkerPool::workerLoop() {
     while (!stopping_.load(std::memory_order_acquire)) {
         claimAndRunTasks();
         std::uint32_t now = wakeups_.load(std::memory_order_acquire);
-        for (int spins = 0; now == seen && spins < kSpinsBeforeSleep; ++spins)
+        const auto sleepAt = std::chrono::steady_clock::now() + kSpinBeforeSleep;
+        for (int spins = 1; now == seen; ++spins) {
+            if (spins % 256 == 0 && std::chrono::steady_clock::now() > sleepAt) break; // the clock read costs ~20 ns
             now = wakeups_.load(std::memory_order_acquire);
+        }
         if (now == seen) wakeups_.wait(seen, std::memory_order_acquire);
         seen = wakeups_.load(std::memory_order_acquire);
     }
