@@ -7,6 +7,8 @@
 #include "sandcore/worker_pool.hpp"
 
 #include <algorithm>
+#include <functional>
+#include <span>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -24,7 +26,8 @@ constexpr double kMaxGridCoordinate = 2.0 * kMaxVoxelResolution;
 
 const char* const kAxisNames[3] = {"x", "y", "z"};
 
-using Point = std::array<std::int64_t, 3>;
+// Stored in 32 bits (half the memory the rays read), widened to 64 for the predicates.
+using Point = std::array<std::int32_t, 3>;
 
 std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
@@ -58,7 +61,7 @@ bool crossRay(const Point& a, const Point& b, const Point& c, RayFrame f, std::i
     if (perturbedSide(c[f.v], c[f.w], a[f.v], a[f.w], pv, pw, weightB) != s0) return false;
     const double total = double(weightA) + double(weightB) + double(weightC);
     // Relative to a, so a face of constant u gives that u exactly.
-    const double offset = (double(weightB) * double(b[f.u] - a[f.u]) + double(weightC) * double(c[f.u] - a[f.u])) / total;
+    const double offset = (double(weightB) * double(std::int64_t(b[f.u]) - a[f.u]) + double(weightC) * double(std::int64_t(c[f.u]) - a[f.u])) / total;
     crossing = (double(a[f.u]) + offset) / double(kQuantum);
     entering = -s0; // s0 is the sign of the normal's u component (frames are right-handed)
     return true;
@@ -85,7 +88,7 @@ void rowRange(std::int64_t minValue, std::int64_t maxValue, int rows, int& lo, i
 
 // A stable counting sort of the triangles into the rows they span, in parallel over chunks of
 // triangles (each row lists its triangles in index order, whatever the number of chunks).
-RowBins binTriangles(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+RowBins binTriangles(std::span<const Point> points, std::span<const MeshTriangle> triangles,
                      RayFrame f, Int3 rows, WorkerPool& pool) {
     const int rowsV = rows.x, rowsW = rows.y;
     const std::size_t rowCount = std::size_t(rowsV) * std::size_t(rowsW);
@@ -134,7 +137,7 @@ std::vector<Point> quantize(const std::vector<std::array<double, 3>>& grid) {
             const double g = grid[i][a];
             if (!std::isfinite(g) || std::abs(g) > kMaxGridCoordinate)
                 throw std::invalid_argument("vertex coordinate outside the voxel grid's range");
-            points[i][a] = std::llround(g * double(kQuantum));
+            points[i][a] = std::int32_t(std::llround(g * double(kQuantum)));
         }
     return points;
 }
@@ -143,16 +146,20 @@ std::vector<Point> quantize(const std::vector<std::array<double, 3>>& grid) {
 // into `mask`; robust mode adds, per cell, one vote for a non-zero winding number counted from
 // each end of the row (the mesh is oriented outward first, so overlapping closed parts are a
 // union and a closed mesh gives the same count from both ends).
-void castRays(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles,
-              RayFrame f, Int3 size, const VoxelizeSettings& settings, WorkerPool& pool,
-              std::vector<std::uint8_t>& out, bool votes) {
+// `alongside`, when given, runs as one more task of the rows' loop, on whichever thread takes it.
+void castRays(std::span<const Point> points, std::span<const MeshTriangle> triangles, RayFrame f, Int3 size,
+              const VoxelizeSettings& settings, WorkerPool& pool, std::vector<std::uint8_t>& out, bool votes,
+              const std::function<void()>* alongside = nullptr) {
     const int sizes[3] = {size.x, size.y, size.z};
     const int rowsV = sizes[f.v], rowsW = sizes[f.w], length = sizes[f.u];
     const std::size_t stride[3] = {1, std::size_t(size.x) * std::size_t(size.z), std::size_t(size.x)};
     RowBins bins;
     if (settings.binning) bins = binTriangles(points, triangles, f, {rowsV, rowsW, 0}, pool);
 
-    pool.parallelFor(rowsW, [&](int k) {
+    const int first = alongside ? 1 : 0;
+    pool.parallelFor(rowsW + first, [&](int task) {
+        if (task < first) return (*alongside)();
+        const int k = task - first;
         std::vector<std::pair<double, int>> crossings; // position along u, winding step
         for (int j = 0; j < rowsV; ++j) {
             const std::int64_t pv = (2 * std::int64_t(j) + 1) * (kQuantum / 2);
@@ -201,13 +208,16 @@ void castRays(const std::vector<Point>& points, const std::vector<std::array<std
 }
 
 // The inside test on quantized grid points: plain parity along x, or S5's vote over three axes.
-InsideMask insideFromPoints(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                            Int3 size, const VoxelizeSettings& settings, WorkerPool& pool) {
+// In plain mode `alongside` (if given) runs during the casting, in robust mode before it.
+InsideMask insideFromPoints(std::span<const Point> points, std::span<const MeshTriangle> triangles, Int3 size,
+                            const VoxelizeSettings& settings, WorkerPool& pool,
+                            const std::function<void()>* alongside = nullptr) {
     InsideMask mask = InsideMask::empty(size);
     if (!settings.robust) {
-        castRays(points, triangles, {0, 1, 2}, size, settings, pool, mask.inside, false);
+        castRays(points, triangles, {0, 1, 2}, size, settings, pool, mask.inside, false, alongside);
         return mask;
     }
+    if (alongside) (*alongside)();
     // S5: each axis gives two votes (parity counted from either end); they agree on a closed mesh.
     std::vector<std::uint8_t> votes(mask.inside.size(), 0);
     castRays(points, triangles, {0, 1, 2}, size, settings, pool, votes, true);
@@ -247,9 +257,9 @@ std::int64_t countInside(const InsideMask& mask, WorkerPool& pool) {
 
 // The prepared mesh's vertices in grid coordinates, quantized (as quantize of the double grid
 // coordinates), in parallel.
-std::vector<Point> quantizedGridPoints(const std::vector<Vec3>& vertices, const VoxelPlacement& p, WorkerPool& pool) {
+LargePageVector<Point> quantizedGridPoints(const LargePageVector<Vec3>& vertices, const VoxelPlacement& p, WorkerPool& pool) {
     constexpr int kChunks = 64;
-    std::vector<Point> points(vertices.size());
+    LargePageVector<Point> points(vertices.size());
     pool.parallelFor(kChunks, [&](int c) {
         for (std::size_t i = vertices.size() * std::size_t(c) / kChunks; i < vertices.size() * std::size_t(c + 1) / kChunks; ++i) {
             const Vec3 v = vertices[i];
@@ -258,7 +268,7 @@ std::vector<Point> quantizedGridPoints(const std::vector<Vec3>& vertices, const 
                 const double g = (model[a] - p.modelMin[a]) * p.scale[a] + p.padding[a];
                 if (!std::isfinite(g) || std::abs(g) > kMaxGridCoordinate)
                     throw std::invalid_argument("vertex coordinate outside the voxel grid's range");
-                points[i][a] = std::llround(g * double(kQuantum));
+                points[i][a] = std::int32_t(std::llround(g * double(kQuantum)));
             }
         }
     });
@@ -279,11 +289,15 @@ double VoxelizeResult::relativeError() const {
     return meshVolume > 0.0 && volumeMeaningful ? (double(cellsInside) - meshVolume) / meshVolume : 0.0;
 }
 
-VoxelPlacement placeInGrid(const TriangleMesh& mesh, const VoxelizeSettings& settings) {
+namespace {
+
+void checkResolution(const VoxelizeSettings& settings) {
     if (settings.resolution < 1 || settings.resolution > kMaxVoxelResolution)
         throw std::invalid_argument("resolution must lie in 1.." + std::to_string(kMaxVoxelResolution) + ", got " +
                                     std::to_string(settings.resolution));
-    const MeshBounds bounds = boundsOf(mesh);
+}
+
+VoxelPlacement placementFor(const MeshBounds& bounds, const VoxelizeSettings& settings) {
     VoxelPlacement placement;
     double largest = 0.0;
     for (int a = 0; a < 3; ++a) {
@@ -310,25 +324,42 @@ VoxelPlacement placeInGrid(const TriangleMesh& mesh, const VoxelizeSettings& set
     return placement;
 }
 
+} // namespace
+
+VoxelPlacement placeInGrid(const TriangleMesh& mesh, const VoxelizeSettings& settings) {
+    checkResolution(settings);
+    return placementFor(boundsOf(mesh), settings);
+}
+
 VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settings) {
     VoxelizeResult result;
-    result.placement = placeInGrid(mesh, settings);
+    checkResolution(settings);
+    WorkerPool pool(std::max(settings.threads, 1));
+    result.placement = placementFor(boundsInParallel(mesh, pool), settings); // placeInGrid, its errors in the same order
     const VoxelPlacement& p = result.placement;
     if (settings.threads < 1) throw std::invalid_argument("voxelize needs at least one thread");
-    WorkerPool pool(settings.threads);
     // Welded once; one walk over the edges measures closedness and links the faces the outward
     // orientation flips (a second walk only when repeated faces had to go).
     WalkedMesh walked = weldAndWalk(mesh, pool);
     result.closedness = walked.closedness;
-    const std::int64_t inconsistentAfter = orientFaces(walked);
-    const TriangleMesh& prepared = walked.mesh;
-    result.mask = insideFromPoints(quantizedGridPoints(prepared.vertices, p, pool), prepared.triangles, p.size, settings, pool);
+    // Parity does not depend on the faces' orientation: in plain mode one thread orients the
+    // faces and sums the volume while the others cast rays. The winding numbers of robust
+    // mode need the orientation first.
+    Orientation orientation;
+    double signedVolume = 0.0;
+    const std::function<void()> orient = [&] {
+        orientation = orientationOf(walked);
+        signedVolume = signedVolumeOf(walked, orientation.flipped);
+        if (settings.robust) applyOrientation(walked, orientation, pool);
+    };
+    const LargePageVector<Point> points = quantizedGridPoints(walked.vertices, p, pool);
+    result.mask = insideFromPoints(points, walked.triangles, p.size, settings, pool, &orient);
     result.cellsInside = countInside(result.mask, pool);
     // The volume of the outward-oriented mesh: a model with some faces flipped keeps its
     // volume; where orientation cannot be made consistent (a non-orientable or non-manifold
     // surface) the volume means nothing and is not reported as if it did.
-    result.volumeMeaningful = result.closedness.closed && inconsistentAfter == 0;
-    result.meshVolume = std::abs(signedVolume(prepared)) * p.scale[0] * p.scale[1] * p.scale[2];
+    result.volumeMeaningful = result.closedness.closed && orientation.inconsistentAfter == 0;
+    result.meshVolume = std::abs(signedVolume) * p.scale[0] * p.scale[1] * p.scale[2];
     return result;
 }
 
