@@ -37,7 +37,8 @@ std::uint64_t hashOf(const Key& key) {
 // Per vertex, the first vertex at the same position. The vertices are partitioned by the top
 // bits of their hash (a stable counting sort, so each partition lists them in index order) and
 // every partition is welded with a hash table small enough to stay in cache; a slot holds the
-// position's hash bits and its first vertex, so only a matching hash reads a vertex again.
+// position's hash bits and its place in the partition, whose entries carry their keys (reading
+// the vertices again in partition order would miss the cache at every one).
 BigVector<std::uint32_t> firstAtSamePosition(const std::vector<Vec3>& vertices, WorkerPool& pool) {
     const std::size_t count = vertices.size();
     int partitionBits = 0;
@@ -58,32 +59,37 @@ BigVector<std::uint32_t> firstAtSamePosition(const std::vector<Vec3>& vertices, 
         for (std::size_t c = 0; c < chunks; ++c) running += std::exchange(place[c * partitions + p], std::uint32_t(running));
     }
     partitionStart[partitions] = running;
-    BigVector<std::uint32_t> byPartition(count);
+    struct KeyedVertex {
+        Key key;
+        std::uint32_t index;
+    };
+    BigVector<KeyedVertex> byPartition(count);
     pool.parallelFor(int(chunks), [&](int c) {
         std::uint32_t* next = place.data() + std::size_t(c) * partitions;
-        for (std::size_t i = rangeBegin(count, chunks, c); i < rangeBegin(count, chunks, c + 1); ++i)
-            byPartition[next[partitionOf(hashOf(keyOf(vertices[i])))]++] = std::uint32_t(i);
+        for (std::size_t i = rangeBegin(count, chunks, c); i < rangeBegin(count, chunks, c + 1); ++i) {
+            const Key key = keyOf(vertices[i]);
+            byPartition[next[partitionOf(hashOf(key))]++] = {key, std::uint32_t(i)};
+        }
     });
     BigVector<std::uint32_t> first(count);
     const std::size_t groups = std::min(partitions, kRanges);
     pool.parallelFor(int(groups), [&](int g) {
         constexpr std::uint64_t kFree = ~std::uint64_t{0};
-        std::vector<std::uint64_t> table; // hash bits << 32 | first vertex
+        std::vector<std::uint64_t> table; // hash bits << 32 | place of the first vertex in the partition
         for (std::size_t p = rangeBegin(partitions, groups, g); p < rangeBegin(partitions, groups, g + 1); ++p) {
             const std::size_t size = partitionStart[p + 1] - partitionStart[p];
             std::size_t capacity = 16;
             while (capacity < 2 * size) capacity *= 2;
             table.assign(capacity, kFree);
-            for (std::size_t j = partitionStart[p]; j < partitionStart[p + 1]; ++j) {
-                const std::uint32_t i = byPartition[j];
-                const Key key = keyOf(vertices[i]);
-                const std::uint64_t h = hashOf(key), tag = h >> 32; // a vertex index is below 2^32 - 1: no entry is kFree
+            const KeyedVertex* part = byPartition.data() + partitionStart[p];
+            for (std::uint32_t j = 0; j < size; ++j) {
+                const std::uint64_t h = hashOf(part[j].key), tag = h >> 32; // j < 2^32 - 1: no entry is kFree
                 std::size_t slot = std::size_t(h >> 16) & (capacity - 1);
                 while (table[slot] != kFree &&
-                       ((table[slot] >> 32) != tag || keyOf(vertices[std::uint32_t(table[slot])]) != key))
+                       ((table[slot] >> 32) != tag || part[std::uint32_t(table[slot])].key != part[j].key))
                     slot = (slot + 1) & (capacity - 1);
-                if (table[slot] == kFree) table[slot] = tag << 32 | i;
-                first[i] = std::uint32_t(table[slot]);
+                if (table[slot] == kFree) table[slot] = tag << 32 | j;
+                first[part[j].index] = part[std::uint32_t(table[slot])].index;
             }
         }
     });
