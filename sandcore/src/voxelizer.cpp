@@ -104,10 +104,15 @@ RowBins binTriangles(std::span<const Point> points, std::span<const MeshTriangle
     const auto chunkBegin = [&](std::size_t c) { return triangles.size() * c / chunks; };
     // place[c * rowCount + row]: entries of chunk c in the row, then where its next one goes.
     std::vector<std::uint64_t> place(chunks * rowCount, 0);
+    // Most triangles of a fine mesh lie between rows: the second pass visits only the others.
+    std::vector<std::vector<std::uint32_t>> spanning(chunks);
     pool.parallelFor(int(chunks), [&](int c) {
         std::uint64_t* counts = place.data() + std::size_t(c) * rowCount;
-        for (std::size_t i = chunkBegin(std::size_t(c)); i < chunkBegin(std::size_t(c) + 1); ++i)
-            forEachRow(triangles[i], [&](std::size_t row) { ++counts[row]; });
+        for (std::size_t i = chunkBegin(std::size_t(c)); i < chunkBegin(std::size_t(c) + 1); ++i) {
+            bool any = false;
+            forEachRow(triangles[i], [&](std::size_t row) { ++counts[row], any = true; });
+            if (any) spanning[std::size_t(c)].push_back(std::uint32_t(i));
+        }
     });
     RowBins bins;
     bins.first.assign(rowCount + 1, 0);
@@ -123,8 +128,8 @@ RowBins binTriangles(std::span<const Point> points, std::span<const MeshTriangle
     bins.ids.resize(std::size_t(running));
     pool.parallelFor(int(chunks), [&](int c) {
         std::uint64_t* next = place.data() + std::size_t(c) * rowCount;
-        for (std::size_t i = chunkBegin(std::size_t(c)); i < chunkBegin(std::size_t(c) + 1); ++i)
-            forEachRow(triangles[i], [&](std::size_t row) { bins.ids[next[row]++] = std::uint32_t(i); });
+        for (const std::uint32_t i : spanning[std::size_t(c)])
+            forEachRow(triangles[i], [&](std::size_t row) { bins.ids[next[row]++] = i; });
     });
     return bins;
 }
