@@ -24,6 +24,10 @@ constexpr std::size_t kUseBatches = 4;
 
 std::size_t rangeBegin(std::size_t count, std::size_t ranges, std::size_t r) { return count * r / ranges; }
 
+// Chunks of a parallel counting sort: one per thread, at most four (each has a count per
+// bucket). The sorts are stable, so the result does not depend on it.
+std::size_t countingChunks(const WorkerPool& pool) { return std::size_t(std::min(pool.threadCount(), 4)); }
+
 // -0.0 and +0.0 are the same position; everything else is compared bit for bit (as weldVertices).
 std::uint32_t bitsOf(float value) { return std::bit_cast<std::uint32_t>(value == 0.0f ? 0.0f : value); }
 Key keyOf(Vec3 v) { return {bitsOf(v.x), bitsOf(v.y), bitsOf(v.z)}; }
@@ -45,7 +49,7 @@ BigVector<std::uint32_t> firstAtSamePosition(const std::vector<Vec3>& vertices, 
     while (partitionBits < 16 && (count >> partitionBits) > 2048) ++partitionBits;
     const std::size_t partitions = std::size_t{1} << partitionBits;
     const auto partitionOf = [&](std::uint64_t h) { return partitionBits == 0 ? 0 : std::size_t(h >> (64 - partitionBits)); };
-    const std::size_t chunks = std::size_t(pool.threadCount());
+    const std::size_t chunks = countingChunks(pool);
     std::vector<std::uint32_t> place(chunks * partitions, 0); // counts, then where each chunk's next vertex goes
     pool.parallelFor(int(chunks), [&](int c) {
         std::uint32_t* counts = place.data() + std::size_t(c) * partitions;
@@ -158,7 +162,7 @@ struct WalkCounts {
 WalkCounts walkEdges(const BigVector<Triangle>& meshTriangles, std::size_t vertices, BigVector<std::uint32_t>& neighbours, WorkerPool& pool) {
     const std::size_t triangles = meshTriangles.size();
     if (triangles >= (std::size_t{1} << 29)) throw std::invalid_argument("the mesh has too many triangles");
-    const std::size_t chunks = std::size_t(pool.threadCount());
+    const std::size_t chunks = countingChunks(pool);
     // place[c * vertices + v]: the uses of chunk c filed under v, then where the next one goes.
     BigVector<std::uint32_t> place(chunks * vertices, 0);
     pool.parallelFor(int(chunks), [&](int c) {

@@ -100,7 +100,8 @@ RowBins binTriangles(std::span<const Point> points, std::span<const MeshTriangle
         for (int k = wLo; k <= wHi; ++k)
             for (int j = vLo; j <= vHi; ++j) visit(std::size_t(j) + std::size_t(rowsV) * std::size_t(k));
     };
-    const std::size_t chunks = std::size_t(pool.threadCount());
+    // A count per row and chunk: at most four chunks, one where the rows alone take 128 MiB.
+    const std::size_t chunks = rowCount > (std::size_t{1} << 24) ? 1 : std::size_t(std::min(pool.threadCount(), 4));
     const auto chunkBegin = [&](std::size_t c) { return triangles.size() * c / chunks; };
     // place[c * rowCount + row]: entries of chunk c in the row, then where its next one goes.
     std::vector<std::uint64_t> place(chunks * rowCount, 0);
