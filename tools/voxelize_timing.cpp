@@ -1,9 +1,15 @@
 // Times the voxelizer on dense generated meshes (about 1.3 million triangles: an icosphere and a
-// torus), split into its parts, so the closedness check can be weighed against ray casting:
+// torus), next to the step-by-step public functions it replaces and to the cavity search that
+// follows it for an hourglass model (surface cells and flood fill, S8):
 //   cmake --build --preset release --target voxelize_timing && build/release/tools/voxelize_timing [RES] [THREADS] [ROUNDS]
-// Prints medians of ROUNDS runs, and the cells inside, which must not change with the code.
+// Prints, per part, the median and the best wall time of ROUNDS runs and the median CPU time of
+// the process (all threads; on shared cores the wall time also holds time spent waiting for a
+// core), and the cells inside, which must not change with the code.
+#include "sandcore/cavity.hpp"
 #include "sandcore/mesh_shapes.hpp"
 #include "sandcore/voxelizer.hpp"
+
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -16,15 +22,28 @@ using namespace sandcore;
 
 namespace {
 
-double medianMs(int rounds, const std::function<void()>& run) {
-    std::vector<double> ms;
+double cpuMs() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return (double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1e6 + double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec)) / 1e3;
+}
+
+struct Timing {
+    double median = 0, best = 0, cpuMedian = 0; // ms
+};
+
+Timing timeRuns(int rounds, const std::function<void()>& run) {
+    std::vector<double> wall, cpu;
     for (int i = 0; i < rounds; ++i) {
+        const double cpuStart = cpuMs();
         const auto start = std::chrono::steady_clock::now();
         run();
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        cpu.push_back(cpuMs() - cpuStart);
     }
-    std::sort(ms.begin(), ms.end());
-    return ms[ms.size() / 2];
+    std::sort(wall.begin(), wall.end());
+    std::sort(cpu.begin(), cpu.end());
+    return {wall[wall.size() / 2], wall.front(), cpu[cpu.size() / 2]};
 }
 
 void timeMesh(const char* name, const TriangleMesh& mesh, int resolution, int threads, int rounds) {
@@ -32,13 +51,23 @@ void timeMesh(const char* name, const TriangleMesh& mesh, int resolution, int th
     settings.resolution = resolution;
     settings.threads = threads;
     VoxelizeResult result;
-    const double weld = medianMs(rounds, [&] { (void)weldVertices(mesh); });
-    const double closedness = medianMs(rounds, [&] { (void)closednessOf(mesh); });
-    const double whole = medianMs(rounds, [&] { result = voxelize(mesh, settings); });
-    std::printf("%-9s %9zu triangles  res %d  %d threads | weld %7.1f ms | closednessOf %7.1f ms | voxelize %7.1f ms | "
-                "%lld cells inside, closed %s\n",
-                name, mesh.triangles.size(), resolution, threads, weld, closedness, whole,
-                static_cast<long long>(result.cellsInside), result.closedness.closed ? "yes" : "no");
+    const Timing steps = timeRuns(rounds, [&] { (void)closednessOf(mesh); });
+    const Timing whole = timeRuns(rounds, [&] { result = voxelize(mesh, settings); });
+    CavitySearch search;
+    const Timing cavity = timeRuns(rounds, [&] {
+        InsideMask walls = result.mask;
+        const InsideMask surface = surfaceCells(toGridSpace(mesh, result.placement), result.placement.size);
+        for (std::size_t n = 0; n < walls.inside.size(); ++n) walls.inside[n] |= surface.inside[n];
+        search = findCavities(walls);
+    });
+    std::printf("%-9s %zu triangles res %d, %d threads (ms: median / best wall, median CPU)\n"
+                "  voxelize      %7.1f / %7.1f  cpu %7.1f   %lld cells inside, closed %s\n"
+                "  closednessOf  %7.1f / %7.1f  cpu %7.1f   (weld + edge walk of the step-by-step functions)\n"
+                "  cavity search %7.1f / %7.1f  cpu %7.1f   surface cells + flood fill, %lld outside cells\n",
+                name, mesh.triangles.size(), resolution, threads, whole.median, whole.best, whole.cpuMedian,
+                static_cast<long long>(result.cellsInside), result.closedness.closed ? "yes" : "no", steps.median,
+                steps.best, steps.cpuMedian, cavity.median, cavity.best, cavity.cpuMedian,
+                static_cast<long long>(search.outsideCells));
 }
 
 } // namespace

@@ -44,42 +44,54 @@ CavitySearch findCavities(const InsideMask& solid) {
     constexpr std::uint8_t kUnvisited = 0, kOutside = 2, kCavity = 3;
     std::vector<std::uint8_t> state = solid.inside;
     std::vector<std::uint32_t> queue;
-    // Marks every unvisited cell 6-connected to seed with `mark`; returns how many.
+    // Marks every cell holding `from` that is 6-connected to seed (which holds `from`) with
+    // `mark`; returns how many. A scanline fill: each popped cell grows to the whole run of
+    // `from` cells along x, and the run pushes one cell per run it touches in the four rows
+    // beside it (z and y), so the queue sees a few entries per run instead of six per cell.
     auto fill = [&](std::size_t seed, std::uint8_t mark, std::uint8_t from, std::vector<std::uint8_t>& cells) {
         std::int64_t count = 0;
+        const std::size_t width = std::size_t(s.x);
         queue.clear();
         queue.push_back(std::uint32_t(seed));
-        cells[seed] = mark;
         while (!queue.empty()) {
             const std::size_t n = queue.back();
             queue.pop_back();
-            ++count;
-            const int x = int(n % std::size_t(s.x));
-            const int z = int((n / std::size_t(s.x)) % std::size_t(s.z));
-            const int y = int(n / layer);
-            auto visit = [&](bool inGrid, std::size_t m) {
-                if (inGrid && cells[m] == from) {
-                    cells[m] = mark;
-                    queue.push_back(std::uint32_t(m));
-                }
+            if (cells[n] != from) continue; // filled since it was pushed
+            const std::size_t rowStart = n - n % width;
+            std::size_t low = n, high = n; // the run is [low, high]
+            while (low > rowStart && cells[low - 1] == from) --low;
+            while (high + 1 < rowStart + width && cells[high + 1] == from) ++high;
+            std::fill(cells.begin() + std::ptrdiff_t(low), cells.begin() + std::ptrdiff_t(high + 1), mark);
+            count += std::int64_t(high - low + 1);
+            const std::size_t row = rowStart / width; // z + size.z * y
+            const std::size_t z = row % std::size_t(s.z), y = row / std::size_t(s.z);
+            auto pushRuns = [&](bool inGrid, std::size_t offsetLow) {
+                if (!inGrid) return;
+                for (std::size_t m = offsetLow; m <= offsetLow + (high - low); ++m)
+                    if (cells[m] == from && (m == offsetLow || cells[m - 1] != from)) queue.push_back(std::uint32_t(m));
             };
-            visit(x > 0, n - 1);
-            visit(x + 1 < s.x, n + 1);
-            visit(z > 0, n - std::size_t(s.x));
-            visit(z + 1 < s.z, n + std::size_t(s.x));
-            visit(y > 0, n - layer);
-            visit(y + 1 < s.y, n + layer);
+            pushRuns(z > 0, low - width);
+            pushRuns(z + 1 < std::size_t(s.z), low + width);
+            pushRuns(y > 0, low - layer);
+            pushRuns(y + 1 < std::size_t(s.y), low + layer);
         }
         return count;
     };
     CavitySearch result;
+    // The fills from the border cells (only those: the order of the seeds changes nothing).
+    auto fromBorder = [&](int x, int y, int z) {
+        const std::size_t n = solid.indexOf(x, y, z);
+        if (state[n] == kUnvisited) result.outsideCells += fill(n, kOutside, kUnvisited, state);
+    };
     for (int y = 0; y < s.y; ++y)
-        for (int z = 0; z < s.z; ++z)
-            for (int x = 0; x < s.x; ++x) {
-                const bool border = x == 0 || y == 0 || z == 0 || x == s.x - 1 || y == s.y - 1 || z == s.z - 1;
-                const std::size_t n = solid.indexOf(x, y, z);
-                if (border && state[n] == kUnvisited) result.outsideCells += fill(n, kOutside, kUnvisited, state);
+        for (int z = 0; z < s.z; ++z) {
+            if (y == 0 || y == s.y - 1 || z == 0 || z == s.z - 1) {
+                for (int x = 0; x < s.x; ++x) fromBorder(x, y, z);
+            } else {
+                fromBorder(0, y, z);
+                fromBorder(s.x - 1, y, z);
             }
+        }
     std::size_t largestSeed = state.size();
     for (std::size_t n = 0; n < state.size(); ++n) {
         if (state[n] != kUnvisited) continue;

@@ -1,13 +1,15 @@
 #include "sandcore/voxelizer.hpp"
 
+#include "mesh_preparation.hpp"
 #include "welded_mesh.hpp"
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/worker_pool.hpp"
 
 #include <algorithm>
+#include <functional>
+#include <span>
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -24,7 +26,8 @@ constexpr double kMaxGridCoordinate = 2.0 * kMaxVoxelResolution;
 
 const char* const kAxisNames[3] = {"x", "y", "z"};
 
-using Point = std::array<std::int64_t, 3>;
+// Stored in 32 bits (half the memory the rays read), widened to 64 for the predicates.
+using Point = std::array<std::int32_t, 3>;
 
 std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
@@ -58,7 +61,7 @@ bool crossRay(const Point& a, const Point& b, const Point& c, RayFrame f, std::i
     if (perturbedSide(c[f.v], c[f.w], a[f.v], a[f.w], pv, pw, weightB) != s0) return false;
     const double total = double(weightA) + double(weightB) + double(weightC);
     // Relative to a, so a face of constant u gives that u exactly.
-    const double offset = (double(weightB) * double(b[f.u] - a[f.u]) + double(weightC) * double(c[f.u] - a[f.u])) / total;
+    const double offset = (double(weightB) * double(std::int64_t(b[f.u]) - a[f.u]) + double(weightC) * double(std::int64_t(c[f.u]) - a[f.u])) / total;
     crossing = (double(a[f.u]) + offset) / double(kQuantum);
     entering = -s0; // s0 is the sign of the normal's u component (frames are right-handed)
     return true;
@@ -83,11 +86,12 @@ void rowRange(std::int64_t minValue, std::int64_t maxValue, int rows, int& lo, i
     hi = int(std::min<std::int64_t>(last, rows - 1));
 }
 
-RowBins binTriangles(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                     RayFrame f, Int3 rows) {
+// A stable counting sort of the triangles into the rows they span, in parallel over chunks of
+// triangles (each row lists its triangles in index order, whatever the number of chunks).
+RowBins binTriangles(std::span<const Point> points, std::span<const MeshTriangle> triangles,
+                     RayFrame f, Int3 rows, WorkerPool& pool) {
     const int rowsV = rows.x, rowsW = rows.y;
-    RowBins bins;
-    bins.first.assign(std::size_t(rowsV) * std::size_t(rowsW) + 1, 0);
+    const std::size_t rowCount = std::size_t(rowsV) * std::size_t(rowsW);
     auto forEachRow = [&](const std::array<std::uint32_t, 3>& t, auto&& visit) {
         const Point &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
         int vLo, vHi, wLo, wHi;
@@ -96,15 +100,38 @@ RowBins binTriangles(const std::vector<Point>& points, const std::vector<std::ar
         for (int k = wLo; k <= wHi; ++k)
             for (int j = vLo; j <= vHi; ++j) visit(std::size_t(j) + std::size_t(rowsV) * std::size_t(k));
     };
-    for (const auto& t : triangles) forEachRow(t, [&](std::size_t row) { ++bins.first[row + 1]; });
-    for (std::size_t r = 1; r < bins.first.size(); ++r) bins.first[r] += bins.first[r - 1];
-    if (bins.first.back() > kMaxBinEntries)
+    // A count per row and chunk: at most four chunks, one where the rows alone take 128 MiB.
+    const std::size_t chunks = rowCount > (std::size_t{1} << 24) ? 1 : std::size_t(std::min(pool.threadCount(), 4));
+    const auto chunkBegin = [&](std::size_t c) { return triangles.size() * c / chunks; };
+    // place[c * rowCount + row]: entries of chunk c in the row, then where its next one goes.
+    std::vector<std::uint64_t> place(chunks * rowCount, 0);
+    // Most triangles of a fine mesh lie between rows: the second pass visits only the others.
+    std::vector<std::vector<std::uint32_t>> spanning(chunks);
+    pool.parallelFor(int(chunks), [&](int c) {
+        std::uint64_t* counts = place.data() + std::size_t(c) * rowCount;
+        for (std::size_t i = chunkBegin(std::size_t(c)); i < chunkBegin(std::size_t(c) + 1); ++i) {
+            bool any = false;
+            forEachRow(triangles[i], [&](std::size_t row) { ++counts[row], any = true; });
+            if (any) spanning[std::size_t(c)].push_back(std::uint32_t(i));
+        }
+    });
+    RowBins bins;
+    bins.first.assign(rowCount + 1, 0);
+    std::uint64_t running = 0;
+    for (std::size_t row = 0; row < rowCount; ++row) {
+        bins.first[row] = running;
+        for (std::size_t c = 0; c < chunks; ++c) running += std::exchange(place[c * rowCount + row], running);
+    }
+    bins.first[rowCount] = running;
+    if (running > kMaxBinEntries)
         throw std::invalid_argument("the mesh's triangles span too many rows at this resolution (" +
-                                    std::to_string(bins.first.back()) + " row entries); use a lower resolution");
-    bins.ids.resize(std::size_t(bins.first.back()));
-    std::vector<std::uint64_t> cursor(bins.first.begin(), bins.first.end() - 1);
-    for (std::size_t i = 0; i < triangles.size(); ++i)
-        forEachRow(triangles[i], [&](std::size_t row) { bins.ids[cursor[row]++] = std::uint32_t(i); });
+                                    std::to_string(running) + " row entries); use a lower resolution");
+    bins.ids.resize(std::size_t(running));
+    pool.parallelFor(int(chunks), [&](int c) {
+        std::uint64_t* next = place.data() + std::size_t(c) * rowCount;
+        for (const std::uint32_t i : spanning[std::size_t(c)])
+            forEachRow(triangles[i], [&](std::size_t row) { bins.ids[next[row]++] = i; });
+    });
     return bins;
 }
 
@@ -116,7 +143,7 @@ std::vector<Point> quantize(const std::vector<std::array<double, 3>>& grid) {
             const double g = grid[i][a];
             if (!std::isfinite(g) || std::abs(g) > kMaxGridCoordinate)
                 throw std::invalid_argument("vertex coordinate outside the voxel grid's range");
-            points[i][a] = std::llround(g * double(kQuantum));
+            points[i][a] = std::int32_t(std::llround(g * double(kQuantum)));
         }
     return points;
 }
@@ -125,16 +152,20 @@ std::vector<Point> quantize(const std::vector<std::array<double, 3>>& grid) {
 // into `mask`; robust mode adds, per cell, one vote for a non-zero winding number counted from
 // each end of the row (the mesh is oriented outward first, so overlapping closed parts are a
 // union and a closed mesh gives the same count from both ends).
-void castRays(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles,
-              RayFrame f, Int3 size, const VoxelizeSettings& settings, WorkerPool& pool,
-              std::vector<std::uint8_t>& out, bool votes) {
+// `alongside`, when given, runs as one more task of the rows' loop, on whichever thread takes it.
+void castRays(std::span<const Point> points, std::span<const MeshTriangle> triangles, RayFrame f, Int3 size,
+              const VoxelizeSettings& settings, WorkerPool& pool, std::vector<std::uint8_t>& out, bool votes,
+              const std::function<void()>* alongside = nullptr) {
     const int sizes[3] = {size.x, size.y, size.z};
     const int rowsV = sizes[f.v], rowsW = sizes[f.w], length = sizes[f.u];
     const std::size_t stride[3] = {1, std::size_t(size.x) * std::size_t(size.z), std::size_t(size.x)};
     RowBins bins;
-    if (settings.binning) bins = binTriangles(points, triangles, f, {rowsV, rowsW, 0});
+    if (settings.binning) bins = binTriangles(points, triangles, f, {rowsV, rowsW, 0}, pool);
 
-    pool.parallelFor(rowsW, [&](int k) {
+    const int first = alongside ? 1 : 0;
+    pool.parallelFor(rowsW + first, [&](int task) {
+        if (task < first) return (*alongside)();
+        const int k = task - first;
         std::vector<std::pair<double, int>> crossings; // position along u, winding step
         for (int j = 0; j < rowsV; ++j) {
             const std::int64_t pv = (2 * std::int64_t(j) + 1) * (kQuantum / 2);
@@ -182,20 +213,17 @@ void castRays(const std::vector<Point>& points, const std::vector<std::array<std
     });
 }
 
-InsideMask insideFromGridPoints(const std::vector<std::array<double, 3>>& grid,
-                                const std::vector<std::array<std::uint32_t, 3>>& triangles, Int3 size,
-                                const VoxelizeSettings& settings) {
-    if (settings.threads < 1) throw std::invalid_argument("voxelize needs at least one thread");
+// The inside test on quantized grid points: plain parity along x, or S5's vote over three axes.
+// In plain mode `alongside` (if given) runs during the casting, in robust mode before it.
+InsideMask insideFromPoints(std::span<const Point> points, std::span<const MeshTriangle> triangles, Int3 size,
+                            const VoxelizeSettings& settings, WorkerPool& pool,
+                            const std::function<void()>* alongside = nullptr) {
     InsideMask mask = InsideMask::empty(size);
-    for (const auto& t : triangles)
-        for (std::uint32_t i : t)
-            if (i >= grid.size()) throw std::invalid_argument("a triangle refers to a missing vertex");
-    const std::vector<Point> points = quantize(grid);
-    WorkerPool pool(settings.threads);
     if (!settings.robust) {
-        castRays(points, triangles, {0, 1, 2}, size, settings, pool, mask.inside, false);
+        castRays(points, triangles, {0, 1, 2}, size, settings, pool, mask.inside, false, alongside);
         return mask;
     }
+    if (alongside) (*alongside)();
     // S5: each axis gives two votes (parity counted from either end); they agree on a closed mesh.
     std::vector<std::uint8_t> votes(mask.inside.size(), 0);
     castRays(points, triangles, {0, 1, 2}, size, settings, pool, votes, true);
@@ -203,6 +231,54 @@ InsideMask insideFromGridPoints(const std::vector<std::array<double, 3>>& grid,
     castRays(points, triangles, {2, 0, 1}, size, settings, pool, votes, true);
     for (std::size_t n = 0; n < votes.size(); ++n) mask.inside[n] = votes[n] >= 4 ? 1 : 0;
     return mask;
+}
+
+InsideMask insideFromGridPoints(const std::vector<std::array<double, 3>>& grid,
+                                const std::vector<std::array<std::uint32_t, 3>>& triangles, Int3 size,
+                                const VoxelizeSettings& settings) {
+    if (settings.threads < 1) throw std::invalid_argument("voxelize needs at least one thread");
+    validateGridSize(size); // a bad size is refused before the vertices are looked at
+    for (const auto& t : triangles)
+        for (std::uint32_t i : t)
+            if (i >= grid.size()) throw std::invalid_argument("a triangle refers to a missing vertex");
+    const std::vector<Point> points = quantize(grid);
+    WorkerPool pool(settings.threads);
+    return insideFromPoints(points, triangles, size, settings, pool);
+}
+
+// Inside cells, counted by slabs of layers in parallel.
+std::int64_t countInside(const InsideMask& mask, WorkerPool& pool) {
+    constexpr int kSlabs = 64;
+    const std::size_t cells = mask.inside.size();
+    std::vector<std::int64_t> perSlab(kSlabs, 0);
+    pool.parallelFor(kSlabs, [&](int s) {
+        const auto first = mask.inside.begin() + std::ptrdiff_t(cells * std::size_t(s) / kSlabs);
+        const auto last = mask.inside.begin() + std::ptrdiff_t(cells * std::size_t(s + 1) / kSlabs);
+        perSlab[std::size_t(s)] = std::count(first, last, std::uint8_t{1});
+    });
+    std::int64_t total = 0;
+    for (const std::int64_t n : perSlab) total += n;
+    return total;
+}
+
+// The prepared mesh's vertices in grid coordinates, quantized (as quantize of the double grid
+// coordinates), in parallel.
+LargePageVector<Point> quantizedGridPoints(const LargePageVector<Vec3>& vertices, const VoxelPlacement& p, WorkerPool& pool) {
+    constexpr int kChunks = 64;
+    LargePageVector<Point> points(vertices.size());
+    pool.parallelFor(kChunks, [&](int c) {
+        for (std::size_t i = vertices.size() * std::size_t(c) / kChunks; i < vertices.size() * std::size_t(c + 1) / kChunks; ++i) {
+            const Vec3 v = vertices[i];
+            const double model[3] = {v.x, v.y, v.z};
+            for (std::size_t a = 0; a < 3; ++a) {
+                const double g = (model[a] - p.modelMin[a]) * p.scale[a] + p.padding[a];
+                if (!std::isfinite(g) || std::abs(g) > kMaxGridCoordinate)
+                    throw std::invalid_argument("vertex coordinate outside the voxel grid's range");
+                points[i][a] = std::int32_t(std::llround(g * double(kQuantum)));
+            }
+        }
+    });
+    return points;
 }
 
 // What the rays see: a face written twice counts once, and faces are oriented outward for the
@@ -219,11 +295,15 @@ double VoxelizeResult::relativeError() const {
     return meshVolume > 0.0 && volumeMeaningful ? (double(cellsInside) - meshVolume) / meshVolume : 0.0;
 }
 
-VoxelPlacement placeInGrid(const TriangleMesh& mesh, const VoxelizeSettings& settings) {
+namespace {
+
+void checkResolution(const VoxelizeSettings& settings) {
     if (settings.resolution < 1 || settings.resolution > kMaxVoxelResolution)
         throw std::invalid_argument("resolution must lie in 1.." + std::to_string(kMaxVoxelResolution) + ", got " +
                                     std::to_string(settings.resolution));
-    const MeshBounds bounds = boundsOf(mesh);
+}
+
+VoxelPlacement placementFor(const MeshBounds& bounds, const VoxelizeSettings& settings) {
     VoxelPlacement placement;
     double largest = 0.0;
     for (int a = 0; a < 3; ++a) {
@@ -250,32 +330,42 @@ VoxelPlacement placeInGrid(const TriangleMesh& mesh, const VoxelizeSettings& set
     return placement;
 }
 
+} // namespace
+
+VoxelPlacement placeInGrid(const TriangleMesh& mesh, const VoxelizeSettings& settings) {
+    checkResolution(settings);
+    return placementFor(boundsOf(mesh), settings);
+}
+
 VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settings) {
     VoxelizeResult result;
-    result.placement = placeInGrid(mesh, settings);
+    checkResolution(settings);
+    WorkerPool pool(std::max(settings.threads, 1));
+    result.placement = placementFor(boundsInParallel(mesh, pool), settings); // placeInGrid, its errors in the same order
     const VoxelPlacement& p = result.placement;
-    // Welded once; the walk over the edges that orients the faces also measures closedness, of
-    // the mesh as loaded unless repeated faces had to go first (then that takes a walk of its own).
-    TriangleMesh welded = weldVertices(mesh);
-    const std::vector<char> keep = trianglesToKeep(welded);
-    std::optional<MeshClosedness> asLoaded;
-    if (!keep.empty()) asLoaded = closednessOfWelded(welded);
-    OrientedMesh oriented = orientedOutwardWelded(keptTriangles(std::move(welded), keep));
-    result.closedness = asLoaded ? *asLoaded : oriented.closedness;
-    const TriangleMesh& prepared = oriented.mesh;
-    std::vector<std::array<double, 3>> grid(prepared.vertices.size());
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-        const Vec3 v = prepared.vertices[i];
-        const double model[3] = {v.x, v.y, v.z};
-        for (std::size_t a = 0; a < 3; ++a) grid[i][a] = (model[a] - p.modelMin[a]) * p.scale[a] + p.padding[a];
-    }
-    result.mask = insideFromGridPoints(grid, prepared.triangles, p.size, settings);
-    result.cellsInside = result.mask.countInside();
+    if (settings.threads < 1) throw std::invalid_argument("voxelize needs at least one thread");
+    // Welded once; one walk over the edges measures closedness and links the faces the outward
+    // orientation flips (a second walk only when repeated faces had to go).
+    WalkedMesh walked = weldAndWalk(mesh, pool);
+    result.closedness = walked.closedness;
+    // Parity does not depend on the faces' orientation: in plain mode one thread orients the
+    // faces and sums the volume while the others cast rays. The winding numbers of robust
+    // mode need the orientation first.
+    Orientation orientation;
+    double signedVolume = 0.0;
+    const std::function<void()> orient = [&] {
+        orientation = orientationOf(walked);
+        signedVolume = signedVolumeOf(walked, orientation.flipped);
+        if (settings.robust) applyOrientation(walked, orientation, pool);
+    };
+    const LargePageVector<Point> points = quantizedGridPoints(walked.vertices, p, pool);
+    result.mask = insideFromPoints(points, walked.triangles, p.size, settings, pool, &orient);
+    result.cellsInside = countInside(result.mask, pool);
     // The volume of the outward-oriented mesh: a model with some faces flipped keeps its
     // volume; where orientation cannot be made consistent (a non-orientable or non-manifold
     // surface) the volume means nothing and is not reported as if it did.
-    result.volumeMeaningful = result.closedness.closed && oriented.inconsistentAfter == 0;
-    result.meshVolume = std::abs(signedVolume(prepared)) * p.scale[0] * p.scale[1] * p.scale[2];
+    result.volumeMeaningful = result.closedness.closed && orientation.inconsistentAfter == 0;
+    result.meshVolume = std::abs(signedVolume) * p.scale[0] * p.scale[1] * p.scale[2];
     return result;
 }
 

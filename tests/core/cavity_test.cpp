@@ -121,3 +121,78 @@ TEST_CASE("the up axis of an hourglass lying on its side is found from its neck"
     CHECK(findUpAxis(makeSphereMask(24)) == UpAxis::PlusY);
     CHECK(neckAlong(standing, 1).ratio < 0.1);
 }
+
+namespace {
+
+// The cavities by the definition: a label per 6-connected component of empty cells, one cell
+// at a time, for comparison with the run-by-run fill of findCavities.
+CavitySearch cavitiesCellByCell(const InsideMask& solid) {
+    const Int3 s = solid.size;
+    std::vector<int> label(solid.inside.size(), -1); // -1 unvisited; 0 outside; k > 0 the k-th cavity
+    std::vector<std::int64_t> sizes{0};
+    CavitySearch result;
+    std::vector<std::size_t> stack;
+    auto fill = [&](std::size_t seed, int mark) {
+        std::int64_t count = 0;
+        stack.assign(1, seed);
+        label[seed] = mark;
+        while (!stack.empty()) {
+            const std::size_t n = stack.back();
+            stack.pop_back();
+            ++count;
+            const int x = int(n % std::size_t(s.x)), z = int(n / std::size_t(s.x) % std::size_t(s.z)),
+                      y = int(n / (std::size_t(s.x) * std::size_t(s.z)));
+            const int step[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+            for (const auto& d : step) {
+                const int nx = x + d[0], ny = y + d[1], nz = z + d[2];
+                if (nx < 0 || ny < 0 || nz < 0 || nx >= s.x || ny >= s.y || nz >= s.z) continue;
+                const std::size_t m = solid.indexOf(nx, ny, nz);
+                if (solid.inside[m] == 0 && label[m] < 0) label[m] = mark, stack.push_back(m);
+            }
+        }
+        return count;
+    };
+    for (int y = 0; y < s.y; ++y)
+        for (int z = 0; z < s.z; ++z)
+            for (int x = 0; x < s.x; ++x) {
+                const std::size_t n = solid.indexOf(x, y, z);
+                const bool border = x == 0 || y == 0 || z == 0 || x == s.x - 1 || y == s.y - 1 || z == s.z - 1;
+                if (border && solid.inside[n] == 0 && label[n] < 0) result.outsideCells += fill(n, 0);
+            }
+    int largest = 0;
+    for (std::size_t n = 0; n < label.size(); ++n)
+        if (solid.inside[n] == 0 && label[n] < 0) {
+            const std::int64_t cells = fill(n, ++result.cavities);
+            result.cavityCells += cells;
+            if (cells > result.largestCells) result.largestCells = cells, largest = result.cavities;
+        }
+    result.largest = InsideMask::empty(s);
+    for (std::size_t n = 0; n < label.size(); ++n) result.largest.inside[n] = largest > 0 && label[n] == largest;
+    return result;
+}
+
+} // namespace
+
+TEST_CASE("the cavities of random solids match a cell-by-cell flood fill") {
+    std::uint64_t state = 12345;
+    auto chance = [&](double p) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return double(state >> 11) * 0x1p-53 < p;
+    };
+    int withCavities = 0;
+    for (int round = 0; round < 40; ++round) {
+        CAPTURE(round);
+        // Dense walls make many small, oddly shaped cavities; sparse ones a few large ones.
+        const double density = 0.35 + 0.01 * round;
+        InsideMask solid = InsideMask::empty({9 + round % 5, 7 + round % 4, 8 + round % 3});
+        for (auto& cell : solid.inside) cell = chance(density) ? 1 : 0;
+        const CavitySearch fast = findCavities(solid), reference = cavitiesCellByCell(solid);
+        CHECK(fast.outsideCells == reference.outsideCells);
+        CHECK(fast.cavities == reference.cavities);
+        CHECK(fast.cavityCells == reference.cavityCells);
+        CHECK(fast.largestCells == reference.largestCells);
+        CHECK(fast.largest.inside == reference.largest.inside);
+        withCavities += fast.cavities > 1;
+    }
+    CHECK(withCavities > 10); // the solids had cavities of several shapes to find
+}

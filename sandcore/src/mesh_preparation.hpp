@@ -1,0 +1,65 @@
+#pragma once
+// What voxelize needs of a loaded mesh before casting rays, computed in parallel with little
+// fresh memory: the same welded vertices, kept triangles, outward orientation, closedness and
+// inconsistency counts as weldVertices -> trianglesToKeep -> orientedOutwardWelded
+// (welded_mesh.hpp), bit for bit and for any thread count. Private to sandcore.
+
+#include "sandcore/large_pages.hpp"
+#include "sandcore/triangle_mesh.hpp"
+#include "sandcore/worker_pool.hpp"
+
+#include <array>
+#include <cstdint>
+#include <new>
+#include <utility>
+#include <vector>
+
+namespace sandcore {
+
+/// LargePageAllocator whose resize leaves the new elements default-initialised (unwritten, for
+/// arrays a parallel pass fills): writing zeros first would touch every page twice.
+template <class T> struct FillLaterAllocator : LargePageAllocator<T> {
+    using value_type = T;
+    FillLaterAllocator() = default;
+    template <class U> FillLaterAllocator(const FillLaterAllocator<U>&) noexcept {}
+    template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+    template <class U, class... Args> void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+template <class T> using LargePageVector = std::vector<T, FillLaterAllocator<T>>;
+using MeshTriangle = std::array<std::uint32_t, 3>;
+
+/// A welded mesh, its repeated faces dropped, with the links between faces that one walk over
+/// its edges found. Kept in huge pages: fresh memory costs a page fault per 4 KiB otherwise.
+struct WalkedMesh {
+    LargePageVector<Vec3> vertices;           ///< welded positions, in the order of first use
+    LargePageVector<MeshTriangle> triangles;  ///< kept triangles, as given
+    MeshClosedness closedness;                ///< closednessOf the mesh as given (before dropping repeated faces)
+    /// Per triangle edge slot 3t + e (edge from corner e to e + 1): the neighbour across an edge
+    /// used by exactly two triangles, other << 1 | (1 when the two run along it the same way).
+    LargePageVector<std::uint32_t> neighbours;
+};
+
+/// boundsOf, in parallel: the same bounds, and the same error for the first bad triangle.
+MeshBounds boundsInParallel(const TriangleMesh& mesh, WorkerPool& pool);
+
+/// Welds the vertices at bit-identical positions, drops repeated faces and links neighbours.
+/// Throws std::invalid_argument for an index out of range or 2^29 triangles and more.
+WalkedMesh weldAndWalk(const TriangleMesh& mesh, WorkerPool& pool);
+
+/// Which triangles orientedOutward flips (1) and closednessOf(its result).inconsistentEdges.
+/// Reads the mesh only, so rays can be cast through it meanwhile.
+struct Orientation {
+    LargePageVector<std::uint8_t> flipped;
+    std::int64_t inconsistentAfter = 0;
+};
+Orientation orientationOf(const WalkedMesh& walked);
+
+/// signedVolume of the mesh with the flipped triangles turned over, bit for bit.
+double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8_t>& flipped);
+
+/// Turns the flipped triangles over.
+void applyOrientation(WalkedMesh& walked, const Orientation& orientation, WorkerPool& pool);
+
+} // namespace sandcore
