@@ -62,7 +62,9 @@ void checkUpkeepMatchesFullRecompute(const Scene& scene, const SurfaceUpkeep& up
     std::vector<std::uint8_t> inner(scene.grains().size());
     const std::int64_t innerCount = flagInnerGrains(scene, inner);
     REQUIRE(upkeep.innerCount() == innerCount);
-    REQUIRE(std::equal(inner.begin(), inner.end(), upkeep.innerFlags().begin(), upkeep.innerFlags().end()));
+    REQUIRE(upkeep.grainCount() == scene.grains().size());
+    for (std::uint32_t id = 0; id < scene.grains().size(); ++id)
+        REQUIRE_MESSAGE(upkeep.isInner(id) == (inner[id] != 0), "inner flag of grain " << id);
     std::vector<Vec3> normals(scene.grains().size());
     estimateGrainNormals(scene, NormalMethod::ColumnHeights, normals);
     for (std::uint32_t id = 0; id < scene.grains().size(); ++id) {
@@ -74,7 +76,7 @@ void checkUpkeepMatchesFullRecompute(const Scene& scene, const SurfaceUpkeep& up
     if (upkeep.tracksGradientNormals()) {
         estimateGrainNormals(scene, NormalMethod::OccupancyGradient, normals);
         for (std::uint32_t id = 0; id < scene.grains().size(); ++id) {
-            const Vec3 kept = upkeep.gradientNormals()[id];
+            const Vec3 kept = upkeep.gradientNormal(id);
             REQUIRE_MESSAGE((kept.x == normals[id].x && kept.y == normals[id].y && kept.z == normals[id].z),
                             "gradient normal of grain " << id);
         }
@@ -95,7 +97,8 @@ int runAndCheck(Scene& scene, int steps) {
     for (int i = 0; i < steps; ++i) {
         CAPTURE(i);
         const std::vector<Place> before = placesOf(scene);
-        const std::vector<std::uint8_t> flagsBefore(upkeep.innerFlags().begin(), upkeep.innerFlags().end());
+        std::vector<bool> flagsBefore;
+        for (std::uint32_t id = 0; id < upkeep.grainCount(); ++id) flagsBefore.push_back(upkeep.isInner(id));
         upkeep.clearChanges();
         scene.step();
         checkMovedGrains(scene, before);
@@ -105,7 +108,7 @@ int runAndCheck(Scene& scene, int steps) {
         const std::set<std::uint32_t> changed(upkeep.changedInnerFlags().begin(), upkeep.changedInnerFlags().end());
         REQUIRE(changed.size() == upkeep.changedInnerFlags().size());
         for (std::uint32_t id = 0; id < flagsBefore.size(); ++id)
-            REQUIRE((flagsBefore[id] != upkeep.innerFlags()[id]) == (changed.count(id) > 0));
+            REQUIRE((flagsBefore[id] != upkeep.isInner(id)) == (changed.count(id) > 0));
         CHECK(upkeep.movedGrains().size() == scene.movedGrains().size());
     }
     return moves;

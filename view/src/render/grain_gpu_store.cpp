@@ -110,11 +110,11 @@ void GrainGpuStore::bind(int firstUnit, int columnUnit) const {
 }
 
 // The visible list in id order (the order the earlier path drew in).
-void GrainGpuStore::makeVisibleList(std::span<const std::uint8_t> inner) {
+void GrainGpuStore::makeVisibleList(const sandcore::SurfaceUpkeep& surface) {
     visible_.clear();
-    slotOf_.assign(inner.size(), kNotListed);
-    for (std::uint32_t id = 0; id < inner.size(); ++id) {
-        if (inner[id]) continue;
+    slotOf_.assign(surface.grainCount(), kNotListed);
+    for (std::uint32_t id = 0; id < surface.grainCount(); ++id) {
+        if (surface.isInner(id)) continue;
         slotOf_[id] = std::uint32_t(visible_.size());
         visible_.push_back(id);
     }
@@ -160,11 +160,11 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
     bytes += uploadWhole(jitters_gpu_.buffer.get(), std::span<const float>(jitters), GL_STATIC_DRAW);
     gradientUploaded_ = needsGradient(settings) && surface.tracksGradientNormals();
     packedNormals_.assign(gradientUploaded_ ? count : 0, 0u);
-    for (std::uint32_t id = 0; id < packedNormals_.size(); ++id) packedNormals_[id] = packNormal(surface.gradientNormals()[id]);
+    for (std::uint32_t id = 0; id < packedNormals_.size(); ++id) packedNormals_[id] = packNormal(surface.gradientNormal(id));
     bytes += uploadWhole(normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_), GL_DYNAMIC_DRAW);
 
     // The visible list's buffer holds every grain, so the list can grow without reallocating.
-    makeVisibleList(surface.innerFlags());
+    makeVisibleList(surface);
     glBindBuffer(GL_ARRAY_BUFFER, visibleBuffer_.get());
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(std::max<std::size_t>(count, 1) * 4), nullptr, GL_DYNAMIC_DRAW);
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(visible_.size() * 4), visible_.data());
@@ -229,13 +229,13 @@ std::int64_t GrainGpuStore::uploadChanges(const sandcore::Scene& scene, const sa
     for (std::uint32_t id : sortedIds_) places_[id] = placeOf(grains, id);
     bytes += uploadRuns(GL_TEXTURE_BUFFER, places_gpu_.buffer.get(), std::span<const GrainPlace>(places_), sortedIds_, 0);
     changedSlots_.clear();
-    for (std::uint32_t id : surface.changedInnerFlags()) setVisible(id, surface.innerFlags()[id] == 0);
+    for (std::uint32_t id : surface.changedInnerFlags()) setVisible(id, !surface.isInner(id));
     // Slots past the end were vacated: nothing draws them.
     std::erase_if(changedSlots_, [&](std::uint32_t slot) { return slot >= visible_.size(); });
     bytes += uploadRuns(GL_ARRAY_BUFFER, visibleBuffer_.get(), std::span<const std::uint32_t>(visible_), changedSlots_, 2);
     if (gradientUploaded_) {
         sortedIds_.assign(surface.changedGradientNormals().begin(), surface.changedGradientNormals().end());
-        for (std::uint32_t id : sortedIds_) packedNormals_[id] = packNormal(surface.gradientNormals()[id]);
+        for (std::uint32_t id : sortedIds_) packedNormals_[id] = packNormal(surface.gradientNormal(id));
         bytes += uploadRuns(GL_TEXTURE_BUFFER, normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_),
                             sortedIds_, 4);
     }

@@ -59,7 +59,7 @@ private:
         GlBuffer buffer;
         GlTexture texture;
     };
-    void makeVisibleList(std::span<const std::uint8_t> inner);
+    void makeVisibleList(const sandcore::SurfaceUpkeep& surface);
     void setVisible(std::uint32_t grain, bool visible);
     std::int64_t uploadColumns(const sandcore::SurfaceUpkeep& surface);
 
