@@ -115,6 +115,7 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
         if (trackGradient_) grains_[id].gradient = gradientKeyAt(scene, grains.level[id], grains.cell[id]);
     }
     updateNumber_ = 0;
+    changedCells_.clear();
     changedPlace_.clear();
     changedInner_.clear();
     changedGradient_.clear();

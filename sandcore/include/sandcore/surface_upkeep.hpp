@@ -66,6 +66,8 @@ public:
     std::span<const ColumnRef> changedColumns() const { return changedColumns_; }
     /// Empties the lists above and clears rebuilt().
     void clearChanges();
+    /// Cells the last update found filled or emptied, each once, in either grid (0 after a rebuild).
+    std::size_t netChangesLastUpdate() const { return changedCells_.size(); }
 
 private:
     // All that is kept per grain, in one record: a moved grain costs one cache line, not four.
