@@ -34,7 +34,10 @@ TEST_CASE("index runs: runs of marks across word edges, ascending, cleared after
     CHECK(takeAll(runs, 0).empty());
     for (std::uint32_t i = 0; i < 128; ++i) runs.mark(i); // two full words
     runs.mark(131);
-    CHECK(takeAll(runs, 2) == Runs{{0, 128}});
+    CHECK(takeAll(runs, 2) == Runs{{0, 128}, {131, 132}}); // 3 unmarked entries apart
+    for (std::uint32_t i = 0; i < 128; ++i) runs.mark(i);
+    runs.mark(130);
+    CHECK(takeAll(runs, 2) == Runs{{0, 131}}); // 2 apart: joined
     runs.mark(0);
     runs.mark(131);
     CHECK(takeAll(runs, 2) == Runs{{0, 1}, {131, 132}});
