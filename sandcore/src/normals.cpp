@@ -60,9 +60,11 @@ Vec3 gradientNormal(const CellGrid& grid, std::uint32_t cell) {
             gz += dz;
         });
     }
-    // Sand lies where the gradient points; the surface faces the other way.
-    return normalised(float(-gx), float(-gy), float(-gz));
+    return occupancyGradientNormal(gx, gy, gz);
 }
+
+// Sand lies where the gradient points; the surface faces the other way.
+Vec3 occupancyGradientNormal(int gx, int gy, int gz) { return normalised(float(-gx), float(-gy), float(-gz)); }
 
 void estimateGrainNormals(const Scene& scene, NormalMethod method, std::span<Vec3> out) {
     const GrainStore& grains = scene.grains();

@@ -10,12 +10,95 @@
 
 namespace sandcore {
 
+namespace {
+
+constexpr std::uint8_t kPlaceListed = 1, kInnerListed = 2, kGradientListed = 4;
+
+// occupancyGradientNormal of every sum a 3x3x3 neighbourhood can give (each in -9..9): the same
+// floats, without a square root and three divisions per grain.
+// A grain's gradient is kept as its sums (gx, gy, gz), each in -9..9, packed in 16 bits: 2 bytes
+// per grain instead of a 12-byte normal, and a table gives the normal.
+std::uint16_t gradientKey(int gx, int gy, int gz) { return std::uint16_t((gx + 9) + 19 * (gy + 9) + 361 * (gz + 9)); }
+constexpr std::size_t kGradientKeys = 19 * 19 * 19;
+
+class GradientTable {
+public:
+    GradientTable() {
+        for (int gz = -9; gz <= 9; ++gz)
+            for (int gy = -9; gy <= 9; ++gy)
+                for (int gx = -9; gx <= 9; ++gx) normals_[gradientKey(gx, gy, gz)] = occupancyGradientNormal(gx, gy, gz);
+    }
+    const Vec3& operator[](std::uint16_t key) const { return normals_[key]; }
+
+private:
+    Vec3 normals_[kGradientKeys];
+};
+
+const GradientTable& gradientTable() {
+    static const GradientTable table;
+    return table;
+}
+
+// gradientNormal's sums, read from the grid: for cells at the grid's edge.
+std::uint16_t gradientKeyFromGrid(const CellGrid& grid, std::uint32_t cell) {
+    const Int3 c = grid.coordinate(cell);
+    const CellNeighbourhood around(grid, c.x, c.y, c.z);
+    int gx = 0, gy = 0, gz = 0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        if (!around.hasLayer(dy)) continue;
+        around.forEachWithCentre([&](int dx, int dz) {
+            if (around.at(dx, dy, dz) < 0) return;
+            gx += dx;
+            gy += dy;
+            gz += dz;
+        });
+    }
+    return gradientKey(gx, gy, gz);
+}
+
+template <class T> void prefetch(const T* address) { __builtin_prefetch(address); }
+
+// For the 3 bits of a row (x-1, x, x+1): how many grains, and their summed x offsets.
+constexpr int kGrainsInRow[8] = {0, 1, 1, 2, 1, 2, 2, 3};
+constexpr int kXSumOfRow[8] = {0, -1, 0, -1, 1, 0, 1, 0};
+
+bool sameVec(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+// How far ahead in the moved list the records are fetched: the grains a step moves lie all over
+// the id range, and waiting for each record's cache line in turn costs more than all the rest.
+constexpr std::size_t kPrefetchAhead = 12;
+
+} // namespace
+
+Vec3 SurfaceUpkeep::gradientNormal(std::uint32_t grain) const {
+    if (!trackGradient_) return {0.0f, 1.0f, 0.0f};
+    return gradientTable()[grains_[grain].gradient];
+}
+
+bool SurfaceUpkeep::firstLook(GrainSurface& grain, std::uint32_t what) const {
+    const std::uint32_t stamp = updateNumber_ << 2;
+    if ((grain.seen & ~3u) != stamp) grain.seen = stamp;
+    if (grain.seen & what) return false;
+    grain.seen |= what;
+    return true;
+}
+
 void SurfaceUpkeep::rebuild(const Scene& scene) {
-    inner_.assign(scene.grains().size(), 0);
-    innerCount_ = flagInnerGrains(scene, inner_);
+    const GrainStore& grains = scene.grains();
+    std::vector<std::uint8_t> inner(grains.size());
+    innerCount_ = flagInnerGrains(scene, inner);
     for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
         const CellGrid& grid = scene.grid(level);
         const Int3 s = grid.size();
+        shapes_[index(level)] = GridShape(s);
+        CellBits& holds = grainBits_[index(level)];
+        CellBits& hides = hideBits_[index(level)];
+        holds.assign(grid.cellCount());
+        hides.assign(grid.cellCount());
+        for (std::uint32_t n = 0; n < grid.cellCount(); ++n) {
+            if (grid[n] >= 0) holds.set(n, true);
+            if (grid[n] != kEmpty) hides.set(n, true);
+        }
         std::vector<int>& heights = heights_[index(level)];
         heights = columnHeights(grid);
         std::vector<Vec3>& normals = normals_[index(level)];
@@ -26,15 +109,13 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
         columnStamp_[index(level)].assign(heights.size(), 0);
         columnListed_[index(level)].assign(heights.size(), 0);
     }
-    listed_.assign(scene.grains().size(), 0);
-    grainStamp_.assign(scene.grains().size(), 0);
-    gradientStamp_.assign(trackGradient_ ? scene.grains().size() : 0, 0);
-    gradient_.clear();
-    if (trackGradient_) {
-        gradient_.resize(scene.grains().size());
-        estimateGrainNormals(scene, NormalMethod::OccupancyGradient, gradient_);
+    grains_.assign(grains.size(), GrainSurface{});
+    for (std::uint32_t id = 0; id < grains.size(); ++id) {
+        grains_[id].inner = inner[id];
+        if (trackGradient_) grains_[id].gradient = gradientKeyAt(scene, grains.level[id], grains.cell[id]);
     }
     updateNumber_ = 0;
+    changedCells_.clear();
     changedPlace_.clear();
     changedInner_.clear();
     changedGradient_.clear();
@@ -44,7 +125,7 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
 
 void SurfaceUpkeep::clearChanges() {
     for (std::vector<std::uint32_t>* grains : {&changedPlace_, &changedInner_, &changedGradient_}) {
-        for (std::uint32_t id : *grains) listed_[id] = 0;
+        for (std::uint32_t id : *grains) grains_[id].listed = 0;
         grains->clear();
     }
     for (const ColumnRef& ref : changedColumns_) columnListed_[index(ref.level)][ref.column] = 0;
@@ -52,39 +133,104 @@ void SurfaceUpkeep::clearChanges() {
     rebuilt_ = false;
 }
 
-namespace {
-constexpr std::uint8_t kPlaceListed = 1, kInnerListed = 2, kGradientListed = 4;
-} // namespace
-
 void SurfaceUpkeep::list(std::uint32_t grain, std::uint8_t bit, std::vector<std::uint32_t>& into) {
-    if (listed_[grain] & bit) return;
-    listed_[grain] |= bit;
+    std::uint8_t& listed = grains_[grain].listed;
+    if (listed & bit) return;
+    listed |= bit;
     into.push_back(grain);
 }
 
-// A world cell the step filled or emptied, in every grid that holds it (the shared row is in both).
-void SurfaceUpkeep::markWorldCell(const Scene& scene, Int3 world) {
+// A cell a moved grain filled or left: a net change when its occupancy now differs from the
+// bits (a grain that left a cell another grain filled in the same step changed nothing there).
+void SurfaceUpkeep::syncCell(const Scene& scene, GridLevel level, std::uint32_t cell) {
+    const CellValue value = scene.grid(level)[cell];
+    CellBits& grains = grainBits_[index(level)];
+    if (grains.test(cell) == (value >= 0)) return;
+    grains.set(cell, value >= 0);
+    hideBits_[index(level)].set(cell, value != kEmpty);
+    changedCells_.emplace_back(level, cell);
+}
+
+// A world cell, in every grid that holds it (the shared row is in both).
+void SurfaceUpkeep::syncWorldCell(const Scene& scene, Int3 world) {
     for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
         const CellGrid& grid = scene.grid(level);
         const Int3 origin = origins_[index(level)];
         const int x = world.x - origin.x, y = world.y - origin.y, z = world.z - origin.z;
-        if (grid.contains(x, y, z)) changedCells_.emplace_back(level, grid.index(x, y, z));
+        if (grid.contains(x, y, z)) syncCell(scene, level, grid.index(x, y, z));
     }
 }
 
-void SurfaceUpkeep::refreshFlag(const Scene& scene, GridLevel level, std::uint32_t cell) {
-    const CellValue grain = scene.grid(level)[cell];
-    if (grain < 0) return;
+// The cell a moved grain fills and the one it left: cameFrom back from where it is. Every move
+// goes down within one grid, except that a grain enters the lower grid's top row (the shared
+// row) from the upper grid, resting there (no move) or after a move in the same step: that row
+// goes through world coordinates, the rest stays in the grain's grid.
+void SurfaceUpkeep::syncCellsOf(const Scene& scene, std::uint32_t grain) {
+    const GrainStore& grains = scene.grains();
+    const GridLevel level = grains.level[grain];
+    const std::uint32_t cell = grains.cell[grain];
+    const MoveCode from = grains.cameFrom[grain];
+    syncCell(scene, level, cell);
+    const GridShape& shape = shapes_[index(level)];
+    const bool sharedRow = level == GridLevel::Lower && cell >= shape.layer * std::uint32_t(shape.size.y - 1);
+    if (!sharedRow && from != kNoMove) {
+        const std::int64_t offset =
+            moveDx(from) + std::int64_t(shape.row) * moveDz(from) + std::int64_t(shape.layer) * moveDy(from);
+        syncCell(scene, level, std::uint32_t(std::int64_t(cell) + offset));
+        return;
+    }
+    const Int3 c = shape.coordinate(cell);
+    const Int3 o = origins_[index(level)];
+    const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
+    syncWorldCell(scene, world);
+    if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
+}
+
+// isInnerGrain from the bits; at the grid's edge and across the seam, isInnerGrain itself.
+bool SurfaceUpkeep::innerAt(const Scene& scene, GridLevel level, std::uint32_t cell) const {
+    const GridShape& shape = shapes_[index(level)];
+    if (!shape.interior(shape.coordinate(cell))) return isInnerGrain(scene, level, cell);
+    const CellBits& hides = hideBits_[index(level)];
+    return (hides.around(cell) & 5u) == 5u && hides.test(cell - shape.row) && hides.test(cell + shape.row) &&
+           hides.test(cell - shape.layer) && hides.test(cell + shape.layer);
+}
+
+// gradientNormal's sums from the bits, 3 cells a read; at the grid's edge from the grid.
+std::uint16_t SurfaceUpkeep::gradientKeyAt(const Scene& scene, GridLevel level, std::uint32_t cell) const {
+    const GridShape& shape = shapes_[index(level)];
+    if (!shape.interior(shape.coordinate(cell))) return gradientKeyFromGrid(scene.grid(level), cell);
+    const CellBits& grains = grainBits_[index(level)];
+    int gx = 0, gy = 0, gz = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+            const auto centre = std::uint32_t(std::int64_t(cell) + dy * std::int64_t(shape.layer) + dz * std::int64_t(shape.row));
+            const unsigned row = grains.around(centre);
+            gx += kXSumOfRow[row];
+            gy += dy * kGrainsInRow[row];
+            gz += dz * kGrainsInRow[row];
+        }
+    return gradientKey(gx, gy, gz);
+}
+
+void SurfaceUpkeep::refreshFlag(const Scene& scene, GridLevel level, std::uint32_t cell, std::uint32_t grain) {
     // Neighbouring changed cells share grains: look at each once per update.
-    std::uint32_t& seen = grainStamp_[std::size_t(grain)];
-    if (seen == updateNumber_) return;
-    seen = updateNumber_;
-    const std::uint8_t now = isInnerGrain(scene, level, cell) ? 1 : 0;
-    std::uint8_t& flag = inner_[std::size_t(grain)];
+    GrainSurface& record = grains_[grain];
+    if (!firstLook(record, 1)) return;
+    const std::uint8_t now = innerAt(scene, level, cell) ? 1 : 0;
+    std::uint8_t& flag = record.inner;
     if (flag == now) return;
     innerCount_ += now ? 1 : -1;
     flag = now;
-    list(std::uint32_t(grain), kInnerListed, changedInner_);
+    list(grain, kInnerListed, changedInner_);
+}
+
+void SurfaceUpkeep::refreshGradient(const Scene& scene, GridLevel level, std::uint32_t cell, std::uint32_t grain) {
+    GrainSurface& record = grains_[grain];
+    if (!firstLook(record, 2)) return;
+    const std::uint16_t now = gradientKeyAt(scene, level, cell);
+    if (record.gradient == now) return;
+    record.gradient = now;
+    list(grain, kGradientListed, changedGradient_);
 }
 
 // isInnerGrain reads the 6 face neighbours, across the seam too (the lower grid's top row looks
@@ -92,7 +238,7 @@ void SurfaceUpkeep::refreshFlag(const Scene& scene, GridLevel level, std::uint32
 // top): so a changed cell can change the flag of the grain in it and of the grains in its 6 world
 // neighbours, in either grid.
 void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std::uint32_t cell) {
-    const Int3 c = scene.grid(level).coordinate(cell);
+    const Int3 c = shapes_[index(level)].coordinate(cell);
     const Int3 o = origins_[index(level)];
     const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
     static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
@@ -101,63 +247,69 @@ void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std:
             const CellGrid& grid = scene.grid(other);
             const Int3 origin = origins_[index(other)];
             const int x = world.x + d.x - origin.x, y = world.y + d.y - origin.y, z = world.z + d.z - origin.z;
-            if (grid.contains(x, y, z)) refreshFlag(scene, other, grid.index(x, y, z));
+            if (!grid.contains(x, y, z)) continue;
+            const std::uint32_t n = grid.index(x, y, z);
+            if (grid[n] >= 0) refreshFlag(scene, other, n, std::uint32_t(grid[n]));
         }
 }
 
 // gradientNormal reads the 26 neighbours within the grain's own grid.
 void SurfaceUpkeep::refreshGradientAround(const Scene& scene, GridLevel level, std::uint32_t cell) {
     const CellGrid& grid = scene.grid(level);
-    const Int3 c = grid.coordinate(cell);
+    const Int3 c = shapes_[index(level)].coordinate(cell);
     for (int y = c.y - 1; y <= c.y + 1; ++y)
         for (int z = c.z - 1; z <= c.z + 1; ++z)
             for (int x = c.x - 1; x <= c.x + 1; ++x) {
                 if (!grid.contains(x, y, z)) continue;
                 const std::uint32_t n = grid.index(x, y, z);
-                const CellValue grain = grid[n];
-                if (grain < 0) continue;
-                std::uint32_t& seen = gradientStamp_[std::size_t(grain)];
-                if (seen == updateNumber_) continue;
-                seen = updateNumber_;
-                const Vec3 now = gradientNormal(grid, n);
-                Vec3& normal = gradient_[std::size_t(grain)];
-                if (now.x == normal.x && now.y == normal.y && now.z == normal.z) continue;
-                normal = now;
-                list(std::uint32_t(grain), kGradientListed, changedGradient_);
+                if (grid[n] >= 0) refreshGradient(scene, level, n, std::uint32_t(grid[n]));
             }
 }
 
 void SurfaceUpkeep::update(const Scene& scene) {
     const GrainStore& grains = scene.grains();
     // A rebuild also restarts the stamps before the 32-bit update number could wrap (after
-    // about 1.4e9 steps), when an old stamp could look current.
-    if (inner_.size() != grains.size() || heights_[0].empty() || gradient_.size() != (trackGradient_ ? grains.size() : 0) ||
-        updateNumber_ > UINT32_MAX - 8) {
+    // about 3.5e8 steps), when an old stamp could look current.
+    if (grains_.size() != grains.size() || heights_[0].empty() || updateNumber_ > (UINT32_MAX >> 2) - 8) {
         rebuild(scene);
         return;
     }
     changedCells_.clear();
     origins_ = {scene.gridOrigin(GridLevel::Lower), scene.gridOrigin(GridLevel::Upper)};
-    // Each moved grain filled its cell and emptied the one it came from (for a transition with
-    // no glide, the same world cell in the other grid).
-    for (std::uint32_t id : scene.movedGrains()) {
+    // First the net changes: after this the bits hold the grids' occupancy again.
+    const std::span<const std::uint32_t> moved = scene.movedGrains();
+    placed_.clear();
+    for (std::size_t i = 0; i < moved.size(); ++i) {
+        if (i + kPrefetchAhead < moved.size()) {
+            const std::uint32_t ahead = moved[i + kPrefetchAhead];
+            prefetch(&grains.level[ahead]);
+            prefetch(&grains.cell[ahead]);
+            prefetch(&grains.cameFrom[ahead]);
+            prefetch(&grains_[ahead]);
+        }
+        const std::uint32_t id = moved[i];
         list(id, kPlaceListed, changedPlace_);
-        const GridLevel level = grains.level[id];
-        const Int3 c = scene.grid(level).coordinate(grains.cell[id]);
-        const Int3 o = origins_[index(level)];
-        const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
-        const MoveCode from = grains.cameFrom[id];
-        markWorldCell(scene, world);
-        if (from != kNoMove) markWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
+        syncCellsOf(scene, id);
+        placed_.push_back({id, grains.cell[id], grains.level[id]});
     }
+    // A moved grain's flag and normal are about its new cell: look again at each. Grains that
+    // stayed change only next to a net change, in its 6 world neighbours (flag) or its 26
+    // neighbours in its grid (normal); both read only the bits, final by now.
     ++updateNumber_;
+    for (const Placed& grain : placed_) {
+        refreshFlag(scene, grain.level, grain.cell, grain.grain);
+        if (trackGradient_) refreshGradient(scene, grain.level, grain.cell, grain.grain);
+    }
     for (const auto& [level, cell] : changedCells_) {
         refreshInnerAround(scene, level, cell);
         if (trackGradient_) refreshGradientAround(scene, level, cell);
     }
+    updateHeights(scene);
+}
 
-    // Heights: a filled cell can only raise its column; then each touched column scans down from
-    // its (upper bound of the) height to its top grain.
+// Heights: a filled cell can only raise its column; then each touched column scans down from
+// its (upper bound of the) height to its top grain. Column normals: around changed heights.
+void SurfaceUpkeep::updateHeights(const Scene& scene) {
     ++updateNumber_;
     touchedColumns_.clear();
     heightsBefore_.clear();
@@ -202,7 +354,7 @@ void SurfaceUpkeep::update(const Scene& scene) {
         const int x = int(ref.column % std::uint32_t(s.x)), z = int(ref.column / std::uint32_t(s.x));
         const Vec3 now = columnNormal(heights, s, x, z);
         Vec3& normal = normals_[index(ref.level)][ref.column];
-        if (now.x == normal.x && now.y == normal.y && now.z == normal.z) continue;
+        if (sameVec(now, normal)) continue;
         normal = now;
         std::uint8_t& listed = columnListed_[index(ref.level)][ref.column];
         if (listed) continue;

@@ -1,9 +1,17 @@
 #pragma once
-// R12, R13 kept current by the step: the inner-grain flags and the column normals of a scene,
-// updated after each step only around the cells that step changed (Scene::movedGrains and each
-// moved grain's cameFrom), so their cost follows the moves, not the grain count. The result is
-// exactly what flagInnerGrains and estimateGrainNormals(ColumnHeights) compute from scratch.
+// R12, R13 kept current by the step: the inner-grain flags and the normals of a scene, updated
+// after each step from what it moved, so their cost follows the moves, not the grain count. The
+// result is exactly what flagInnerGrains, estimateGrainNormals and columnHeights compute from
+// scratch.
+//
+// How: per grid, one bit per cell says which cells held a grain after the last update. A step's
+// moved grains (Scene::movedGrains, each with its cameFrom) name every cell it filled or left;
+// those whose occupancy differs from the bits are its net changes. In a draining bulb a column
+// of k falling grains moves k grains but changes 2 cells (its bottom filled, its top emptied).
+// Only net changes alter a neighbour's flag, gradient normal or column height; a moved grain's
+// own flag and normal are looked at again in its new cell, from the bits.
 
+#include "sandcore/cell_bits.hpp"
 #include "sandcore/scene.hpp"
 #include "sandcore/vec3.hpp"
 
@@ -23,26 +31,26 @@ struct ColumnRef {
 class SurfaceUpkeep {
 public:
     /// Also keep every grain's occupancy-gradient normal (R12's other method; costs a 3x3x3
-    /// look around each changed cell). Takes effect at the next rebuild.
+    /// look at each moved grain and around each changed cell). Takes effect at the next rebuild.
     void setTrackGradientNormals(bool track) { trackGradient_ = track; }
     bool tracksGradientNormals() const { return trackGradient_; } ///< as set
     /// Everything from scratch: after a new scene and after any edit that did not go through
     /// Scene::step (painting, obstacles, undo, load, flip, reset, grain removal).
     void rebuild(const Scene& scene);
     /// After exactly one Scene::step since the last rebuild or update: updates the flags and
-    /// normals around the cells that step changed. Rebuilds when the grain count changed.
+    /// normals the step changed. Rebuilds when the grain count changed.
     void update(const Scene& scene);
 
-    /// 1 for every inner grain (R13), by grain id.
-    std::span<const std::uint8_t> innerFlags() const { return inner_; }
+    std::uint32_t grainCount() const { return std::uint32_t(grains_.size()); } ///< grains it knows
+    /// True for an inner grain (R13), by grain id.
+    bool isInner(std::uint32_t grain) const { return grains_[grain].inner != 0; }
     std::int64_t innerCount() const { return innerCount_; } ///< inner grains
     /// Column heights of a grid (as columnHeights), indexed x + sizeX * z.
     std::span<const int> heights(GridLevel level) const { return heights_[index(level)]; }
     /// The thesis's column normals of a grid (as columnNormal), indexed x + sizeX * z.
     std::span<const Vec3> columnNormals(GridLevel level) const { return normals_[index(level)]; }
-
-    /// Every grain's gradientNormal, by grain id (empty unless tracked).
-    std::span<const Vec3> gradientNormals() const { return gradient_; }
+    /// A grain's gradientNormal, by grain id (when tracked; else (0, 1, 0)).
+    Vec3 gradientNormal(std::uint32_t grain) const;
 
     // What changed since the last clearChanges(), for a consumer that mirrors these (the
     // renderer's GPU buffers); several steps between two frames add up, each entry listed once.
@@ -58,36 +66,59 @@ public:
     std::span<const ColumnRef> changedColumns() const { return changedColumns_; }
     /// Empties the lists above and clears rebuilt().
     void clearChanges();
+    /// Cells the last update found filled or emptied, each once, in either grid (0 after a rebuild).
+    std::size_t netChangesLastUpdate() const { return changedCells_.size(); }
 
 private:
+    // All that is kept per grain, in one record: a moved grain costs one cache line, not four.
+    struct GrainSurface {
+        std::uint32_t seen = 0;     // (update number << 2) | which of flag (1), gradient (2) it looked at
+        std::uint16_t gradient = 0; // occupancy-gradient sums, packed (see gradientKey)
+        std::uint8_t inner = 0;     // 1 for an inner grain
+        std::uint8_t listed = 0;    // bits of the change lists naming it
+    };
+    // A moved grain where it is now, kept from the first pass for the second.
+    struct Placed {
+        std::uint32_t grain, cell;
+        GridLevel level;
+    };
     static std::size_t index(GridLevel level) { return level == GridLevel::Upper ? 1 : 0; }
-    void markWorldCell(const Scene& scene, Int3 world);
+    bool firstLook(GrainSurface& grain, std::uint32_t what) const;
+    void syncCell(const Scene& scene, GridLevel level, std::uint32_t cell);
+    void syncWorldCell(const Scene& scene, Int3 world);
+    void syncCellsOf(const Scene& scene, std::uint32_t grain);
+    bool innerAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
+    std::uint16_t gradientKeyAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
+    void refreshFlag(const Scene& scene, GridLevel level, std::uint32_t cell, std::uint32_t grain);
+    void refreshGradient(const Scene& scene, GridLevel level, std::uint32_t cell, std::uint32_t grain);
     void refreshInnerAround(const Scene& scene, GridLevel level, std::uint32_t cell);
-    void refreshFlag(const Scene& scene, GridLevel level, std::uint32_t cell);
     void refreshGradientAround(const Scene& scene, GridLevel level, std::uint32_t cell);
+    void updateHeights(const Scene& scene);
     void list(std::uint32_t grain, std::uint8_t bit, std::vector<std::uint32_t>& into);
 
     bool trackGradient_ = false;
-    std::array<Int3, 2> origins_{};                     // Scene::gridOrigin of both grids, this update
-    std::vector<Vec3> gradient_;
-    std::vector<std::uint32_t> changedGradient_;
-    std::vector<std::uint8_t> inner_;
+    std::array<Int3, 2> origins_{};   // Scene::gridOrigin of both grids, this update
+    std::array<GridShape, 2> shapes_; // both grids' sizes, with cheap coordinates
+    // Per grid, one bit per cell as of the last update: holds a grain; is not EMPTY (a grain or
+    // INVALID: hides a neighbour). A step's net changes are where the grid no longer agrees.
+    std::array<CellBits, 2> grainBits_, hideBits_;
+    std::vector<GrainSurface> grains_;
     std::int64_t innerCount_ = 0;
     std::array<std::vector<int>, 2> heights_;
     std::array<std::vector<Vec3>, 2> normals_;
     std::array<std::vector<std::uint32_t>, 2> columnStamp_; // last update that looked at a column
-    std::uint32_t updateNumber_ = 0;                    // stamps: which update last looked at a grain or column
-    std::vector<std::uint32_t> grainStamp_, gradientStamp_;
+    std::uint32_t updateNumber_ = 0;                        // stamps: which update last looked at a grain or column
     bool rebuilt_ = true;
-    std::vector<std::uint8_t> listed_;                  // per grain: bits of the change lists naming it
     std::array<std::vector<std::uint8_t>, 2> columnListed_; // per column: in changedColumns_
     std::vector<std::uint32_t> changedPlace_;
     std::vector<std::uint32_t> changedInner_;
+    std::vector<std::uint32_t> changedGradient_;
     std::vector<ColumnRef> changedColumns_;
-    std::vector<ColumnRef> normalCandidates_;           // scratch: columns around changed heights
-    std::vector<ColumnRef> touchedColumns_;                       // scratch: columns whose height may have changed
-    std::vector<int> heightsBefore_;                              // scratch: their heights before the step
-    std::vector<std::pair<GridLevel, std::uint32_t>> changedCells_; // scratch: cells the step filled or emptied
+    std::vector<Placed> placed_;                          // scratch: the moved grains of this update
+    std::vector<ColumnRef> normalCandidates_;             // scratch: columns around changed heights
+    std::vector<ColumnRef> touchedColumns_;               // scratch: columns whose height may have changed
+    std::vector<int> heightsBefore_;                      // scratch: their heights before the step
+    std::vector<std::pair<GridLevel, std::uint32_t>> changedCells_; // scratch: cells the step filled or emptied, net
 };
 
 } // namespace sandcore

@@ -5,6 +5,7 @@
 #include "sandcore/display_positions.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <cstddef>
 #include <limits>
 
@@ -14,24 +15,47 @@ namespace {
 
 constexpr std::uint32_t kNotListed = std::numeric_limits<std::uint32_t>::max();
 
-// Sends the elements named by `indices` (sorted here) from `all`, one glBufferSubData per run of
-// indices at most maxGap apart (the gaps go up too, unchanged: fewer calls for a few bytes more).
-// Returns the bytes sent.
-template <class T>
-std::int64_t uploadRuns(GLenum target, GLuint buffer, std::span<const T> all, std::vector<std::uint32_t>& indices,
-                        std::uint32_t maxGap) {
-    if (indices.empty()) return 0;
-    std::sort(indices.begin(), indices.end());
+// Sends the runs of `all` that `changed` marks (runs at most maxGap entries apart joined: the
+// gaps go up too, unchanged), after prepare(first, end) brought each run of the mirror up to
+// date. Several runs go through one mapping of the range they span, flushed run by run: one
+// glBufferSubData per run costs more than the copy. Returns the bytes sent.
+template <class T, class Prepare>
+std::int64_t uploadRuns(GLenum target, GLuint buffer, std::span<const T> all, IndexRuns& changed, std::uint32_t maxGap,
+                        std::vector<std::pair<std::uint32_t, std::uint32_t>>& runs, Prepare&& prepare) {
+    runs.clear();
+    changed.take(maxGap, [&](std::uint32_t first, std::uint32_t end) {
+        end = std::min(end, std::uint32_t(all.size())); // entries past the end are not drawn
+        if (first >= end) return;
+        prepare(first, end);
+        runs.emplace_back(first, end);
+    });
+    if (runs.empty()) return 0;
     glBindBuffer(target, buffer);
     std::int64_t bytes = 0;
-    for (std::size_t first = 0; first < indices.size();) {
-        std::size_t last = first;
-        while (last + 1 < indices.size() && indices[last + 1] <= indices[last] + 1 + maxGap) ++last;
-        const auto count = std::size_t(indices[last] - indices[first] + 1);
-        glBufferSubData(target, GLintptr(std::size_t(indices[first]) * sizeof(T)), GLsizeiptr(count * sizeof(T)),
-                        all.data() + indices[first]);
-        bytes += std::int64_t(count * sizeof(T));
-        first = last + 1;
+    const std::uint32_t spanFirst = runs.front().first, spanEnd = runs.back().second;
+    void* mapped = runs.size() > 1 ? glMapBufferRange(target, GLintptr(std::size_t(spanFirst) * sizeof(T)),
+                                                      GLsizeiptr(std::size_t(spanEnd - spanFirst) * sizeof(T)),
+                                                      GL_MAP_WRITE_BIT | GL_MAP_FLUSH_EXPLICIT_BIT)
+                                   : nullptr;
+    if (mapped != nullptr) {
+        auto* base = static_cast<unsigned char*>(mapped);
+        for (const auto& [first, end] : runs) {
+            const std::size_t offset = std::size_t(first - spanFirst) * sizeof(T), size = std::size_t(end - first) * sizeof(T);
+            std::memcpy(base + offset, all.data() + first, size);
+            glFlushMappedBufferRange(target, GLintptr(offset), GLsizeiptr(size));
+            bytes += std::int64_t(size);
+        }
+        if (glUnmapBuffer(target) == GL_FALSE) { // the store was lost (GL's rule): send the span again
+            glBufferSubData(target, GLintptr(std::size_t(spanFirst) * sizeof(T)),
+                            GLsizeiptr(std::size_t(spanEnd - spanFirst) * sizeof(T)), all.data() + spanFirst);
+            bytes += std::int64_t(std::size_t(spanEnd - spanFirst) * sizeof(T));
+        }
+    } else {
+        for (const auto& [first, end] : runs) {
+            const std::size_t size = std::size_t(end - first) * sizeof(T);
+            glBufferSubData(target, GLintptr(std::size_t(first) * sizeof(T)), GLsizeiptr(size), all.data() + first);
+            bytes += std::int64_t(size);
+        }
     }
     glBindBuffer(target, 0);
     return bytes;
@@ -110,11 +134,11 @@ void GrainGpuStore::bind(int firstUnit, int columnUnit) const {
 }
 
 // The visible list in id order (the order the earlier path drew in).
-void GrainGpuStore::makeVisibleList(std::span<const std::uint8_t> inner) {
+void GrainGpuStore::makeVisibleList(const sandcore::SurfaceUpkeep& surface) {
     visible_.clear();
-    slotOf_.assign(inner.size(), kNotListed);
-    for (std::uint32_t id = 0; id < inner.size(); ++id) {
-        if (inner[id]) continue;
+    slotOf_.assign(surface.grainCount(), kNotListed);
+    for (std::uint32_t id = 0; id < surface.grainCount(); ++id) {
+        if (surface.isInner(id)) continue;
         slotOf_[id] = std::uint32_t(visible_.size());
         visible_.push_back(id);
     }
@@ -128,13 +152,13 @@ void GrainGpuStore::setVisible(std::uint32_t grain, bool visible) {
     if (visible) {
         slot = std::uint32_t(visible_.size());
         visible_.push_back(grain);
-        changedSlots_.push_back(slot);
+        changedSlots_.mark(slot);
         return;
     }
     const std::uint32_t last = visible_.back();
     visible_[slot] = last;
     slotOf_[last] = slot;
-    if (last != grain) changedSlots_.push_back(slot);
+    if (last != grain) changedSlots_.mark(slot);
     visible_.pop_back();
     slot = kNotListed;
 }
@@ -160,11 +184,12 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
     bytes += uploadWhole(jitters_gpu_.buffer.get(), std::span<const float>(jitters), GL_STATIC_DRAW);
     gradientUploaded_ = needsGradient(settings) && surface.tracksGradientNormals();
     packedNormals_.assign(gradientUploaded_ ? count : 0, 0u);
-    for (std::uint32_t id = 0; id < packedNormals_.size(); ++id) packedNormals_[id] = packNormal(surface.gradientNormals()[id]);
+    for (std::uint32_t id = 0; id < packedNormals_.size(); ++id) packedNormals_[id] = packNormal(surface.gradientNormal(id));
     bytes += uploadWhole(normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_), GL_DYNAMIC_DRAW);
 
+    for (IndexRuns* runs : {&changedIds_, &changedSlots_, &changedNormals_}) runs->resize(count);
     // The visible list's buffer holds every grain, so the list can grow without reallocating.
-    makeVisibleList(surface.innerFlags());
+    makeVisibleList(surface);
     glBindBuffer(GL_ARRAY_BUFFER, visibleBuffer_.get());
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(std::max<std::size_t>(count, 1) * 4), nullptr, GL_DYNAMIC_DRAW);
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(visible_.size() * 4), visible_.data());
@@ -193,51 +218,51 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
 
 std::int64_t GrainGpuStore::uploadColumns(const sandcore::SurfaceUpkeep& surface) {
     const std::size_t layer = std::size_t(columnsX_) * std::size_t(columnsZ_);
-    sortedIds_.clear();
+    if (surface.changedColumns().empty()) return 0;
+    if (changedTexels_.capacity() < 2 * layer) changedTexels_.resize(std::uint32_t(2 * layer));
     for (const sandcore::ColumnRef& ref : surface.changedColumns()) {
         const std::size_t texel = (ref.level == sandcore::GridLevel::Upper ? layer : 0) + ref.column;
         packedColumns_[texel] = packNormal(surface.columnNormals(ref.level)[ref.column]);
-        sortedIds_.push_back(std::uint32_t(texel));
+        changedTexels_.mark(std::uint32_t(texel));
     }
-    if (sortedIds_.empty()) return 0;
-    std::sort(sortedIds_.begin(), sortedIds_.end());
     glBindTexture(GL_TEXTURE_2D, columnNormals_.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     std::int64_t bytes = 0;
     const auto width = std::uint32_t(columnsX_);
-    for (std::size_t first = 0; first < sortedIds_.size();) {
-        // A run of texels in one row of the texture goes up as one rectangle.
-        std::size_t last = first;
-        while (last + 1 < sortedIds_.size() && sortedIds_[last + 1] == sortedIds_[last] + 1 &&
-               sortedIds_[last + 1] / width == sortedIds_[first] / width)
-            ++last;
-        const std::uint32_t texel = sortedIds_[first];
-        const auto runLength = GLsizei(sortedIds_[last] - texel + 1);
-        glTexSubImage2D(GL_TEXTURE_2D, 0, GLint(texel % width), GLint(texel / width), runLength, 1, GL_RED_INTEGER,
-                        GL_UNSIGNED_INT, packedColumns_.data() + texel);
-        bytes += std::int64_t(runLength) * 4;
-        first = last + 1;
-    }
+    changedTexels_.take(2, [&](std::uint32_t first, std::uint32_t end) {
+        // A texture takes rectangles: a run that crosses a row goes up row by row.
+        for (std::uint32_t texel = first; texel < end;) {
+            const std::uint32_t rowEnd = std::min(end, (texel / width + 1) * width);
+            glTexSubImage2D(GL_TEXTURE_2D, 0, GLint(texel % width), GLint(texel / width), GLsizei(rowEnd - texel), 1,
+                            GL_RED_INTEGER, GL_UNSIGNED_INT, packedColumns_.data() + texel);
+            bytes += std::int64_t(rowEnd - texel) * 4;
+            texel = rowEnd;
+        }
+    });
     glBindTexture(GL_TEXTURE_2D, 0);
     return bytes;
 }
 
+// The moved grains' places and the changed normals go up in id order, each mirror entry
+// refreshed as its run goes up (in memory order, not the step's).
 std::int64_t GrainGpuStore::uploadChanges(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface) {
     const sandcore::GrainStore& grains = scene.grains();
     std::int64_t bytes = 0;
-    sortedIds_.assign(surface.movedGrains().begin(), surface.movedGrains().end());
-    for (std::uint32_t id : sortedIds_) places_[id] = placeOf(grains, id);
-    bytes += uploadRuns(GL_TEXTURE_BUFFER, places_gpu_.buffer.get(), std::span<const GrainPlace>(places_), sortedIds_, 0);
-    changedSlots_.clear();
-    for (std::uint32_t id : surface.changedInnerFlags()) setVisible(id, surface.innerFlags()[id] == 0);
-    // Slots past the end were vacated: nothing draws them.
-    std::erase_if(changedSlots_, [&](std::uint32_t slot) { return slot >= visible_.size(); });
-    bytes += uploadRuns(GL_ARRAY_BUFFER, visibleBuffer_.get(), std::span<const std::uint32_t>(visible_), changedSlots_, 2);
+    for (std::uint32_t id : surface.movedGrains()) changedIds_.mark(id);
+    bytes += uploadRuns(GL_TEXTURE_BUFFER, places_gpu_.buffer.get(), std::span<const GrainPlace>(places_), changedIds_, 0,
+                        runs_, [&](std::uint32_t first, std::uint32_t end) {
+                            for (std::uint32_t id = first; id < end; ++id) places_[id] = placeOf(grains, id);
+                        });
+    for (std::uint32_t id : surface.changedInnerFlags()) setVisible(id, !surface.isInner(id));
+    bytes += uploadRuns(GL_ARRAY_BUFFER, visibleBuffer_.get(), std::span<const std::uint32_t>(visible_), changedSlots_, 2,
+                        runs_, [](std::uint32_t, std::uint32_t) {});
     if (gradientUploaded_) {
-        sortedIds_.assign(surface.changedGradientNormals().begin(), surface.changedGradientNormals().end());
-        for (std::uint32_t id : sortedIds_) packedNormals_[id] = packNormal(surface.gradientNormals()[id]);
+        for (std::uint32_t id : surface.changedGradientNormals()) changedNormals_.mark(id);
         bytes += uploadRuns(GL_TEXTURE_BUFFER, normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_),
-                            sortedIds_, 4);
+                            changedNormals_, 4, runs_, [&](std::uint32_t first, std::uint32_t end) {
+                                for (std::uint32_t id = first; id < end; ++id)
+                                    packedNormals_[id] = packNormal(surface.gradientNormal(id));
+                            });
     }
     bytes += uploadColumns(surface);
     return bytes;

@@ -4,12 +4,14 @@
 // identity and colour (8 bytes) and jitter (16 bytes), changed only by edits; its gradient normal
 // (4 bytes, when lit by that method); per column the thesis's column normal (a 2D texture); and
 // the list of visible (not inner) grain ids, the instances drawn when inner grains are hidden.
-// After a step only what changed goes up, each run of consecutive entries with one call: the
-// moved grains' places, the changed entries of the visible list, the changed normals. The vertex
+// After a step only what changed goes up, in runs of consecutive entries found in a bitset (no
+// sort), several runs through one mapped range: the moved grains' places, the changed entries of
+// the visible list, the changed normals. The vertex
 // shader (grain_gpu.vert) works out the display position from the place and the step fraction,
 // as sandcore::grainDisplayPosition does on the CPU.
 
 #include "view/render/gl_objects.hpp"
+#include "view/render/index_runs.hpp"
 #include "view/render/render_settings.hpp"
 
 #include "sandcore/scene.hpp"
@@ -59,7 +61,7 @@ private:
         GlBuffer buffer;
         GlTexture texture;
     };
-    void makeVisibleList(std::span<const std::uint8_t> inner);
+    void makeVisibleList(const sandcore::SurfaceUpkeep& surface);
     void setVisible(std::uint32_t grain, bool visible);
     std::int64_t uploadColumns(const sandcore::SurfaceUpkeep& surface);
 
@@ -73,8 +75,11 @@ private:
     std::vector<std::uint32_t> packedColumns_;  // column normals as uploaded, texel order
     std::vector<std::uint32_t> visible_;        // ids of the visible grains, as uploaded
     std::vector<std::uint32_t> slotOf_;         // per grain: its index in visible_, or kNotListed
-    std::vector<std::uint32_t> changedSlots_;   // scratch
-    std::vector<std::uint32_t> sortedIds_;      // scratch
+    IndexRuns changedIds_;                      // places to send: the moved grains
+    IndexRuns changedSlots_;                    // entries of visible_ to send
+    IndexRuns changedNormals_;                  // gradient normals to send
+    IndexRuns changedTexels_;                   // column normals to send, texel order
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> runs_; // scratch: runs of one upload
     int columnsX_ = 0, columnsZ_ = 0;
     float uploadedJitter_ = -1.0f;
     bool gradientUploaded_ = false;
