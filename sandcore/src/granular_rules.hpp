@@ -59,6 +59,9 @@ public:
     /// The grains that an EMPTY cell c may let move, `layersAbove` (0..maxDrop()) layers above c:
     /// bit (dz + 3) * 7 + (dx + 3) stands for the grain at c + (dx, dz) in that layer.
     std::uint64_t wakeMask(int layersAbove) const { return wakeMasks_[std::size_t(layersAbove)]; }
+    /// For the grain at window bit `bit` (as in wakeMask) around a column c: the cells its slide
+    /// into c's column crosses at its own level, as window bits around c's column.
+    std::uint64_t pathTowardsCentre(int bit) const { return pathsTowardsCentre_[std::size_t(bit)]; }
     /// g in cells per step squared, 16.16 fixed point.
     std::uint32_t gravity() const { return gravity_; }
     /// The slope T the thresholds use for the asked angle (after calibration).
@@ -85,6 +88,7 @@ private:
     int maxDrop_ = 1;
     std::uint32_t gravity_ = 0;
     std::vector<std::uint64_t> wakeMasks_;
+    std::array<std::uint64_t, kWindow * kWindow> pathsTowardsCentre_{};
 };
 
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the
