@@ -118,9 +118,11 @@ GranularOutcome GranularRules::visit(CellGrid& grid, GrainStore& grains, std::ui
         grains.fallFraction[id] = std::uint16_t(std::min<std::uint32_t>(progress, kOne - 1));
         return {GranularOutcome::Waiting, {}};
     }
-    grains.fallSpeed[id] = 0;
-    grains.fallFraction[id] = 0;
-    return slide(grid, grains, seed, step, stream, x, y, z, from, grain);
+    if (grains.fallSpeed[id] | grains.fallFraction[id]) { // most visited grains rest already: no write
+        grains.fallSpeed[id] = 0;
+        grains.fallFraction[id] = 0;
+    }
+    return slide(grid, grains, seed, step, stream, x, y, z, from, grain, below == kInvalid);
 }
 
 GranularOutcome GranularRules::fall(CellGrid& grid, GrainStore& grains, std::uint64_t step, bool bottomIsOutlet, int x,
@@ -156,7 +158,8 @@ GranularOutcome GranularRules::fall(CellGrid& grid, GrainStore& grains, std::uin
 }
 
 GranularOutcome GranularRules::slide(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step,
-                                     std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain) const {
+                                     std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain,
+                                     bool onVessel) const {
     const Int3 size = grid.size();
     const std::int64_t row = size.x, layer = grid.layerSize();
     const CellValue* cells = grid.cells().data();
@@ -204,6 +207,10 @@ GranularOutcome GranularRules::slide(CellGrid& grid, GrainStore& grains, std::ui
         const int k = bit < kOffsets / 2 ? bit : bit - 1; // the window's centre has no offset
         const Offset& o = offsets_[std::size_t(k)];
         if (o.pathMask & ~emptyHere) continue; // something lies in the way at the grain's level
+        if (onVessel) { // the glass is smoother than the sand: one free cell down is enough
+            possible[count++] = std::uint8_t(k);
+            continue;
+        }
         if (!drawn) cellHash = mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
         if (!(drawn >> (k >> 3) & 1u)) {
             dithers[k >> 3] = mix64(cellHash + std::uint64_t(k >> 3) * 0x9e3779b97f4a7c15ull);

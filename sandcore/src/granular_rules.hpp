@@ -14,6 +14,10 @@
 //    the angle continuous in T instead of locked to integer heights. Every move goes down at
 //    least one layer, so grains never swap back and forth. One of the possible moves is chosen
 //    by a counter hash of (seed, step, grid, cell) (R3).
+//    A grain lying on the vessel (an INVALID cell below it) slides on the glass, which is smoother
+//    than the sand: any free cell one layer down within reach will do (need = 1). The vessel's
+//    walls are carved so that every inside cell has one in the 3x3 below it (removeSharpEdges),
+//    so no grain is left on a ledge of the glass and the bulb empties, as with the classic rules.
 //
 // What a grain reads, so the sweep can keep threads apart and wake exactly the grains whose
 // options a change can widen (R5, R6): its own column downwards and the speed of the grain
@@ -81,7 +85,7 @@ private:
     GranularOutcome fall(CellGrid& grid, GrainStore& grains, std::uint64_t step, bool bottomIsOutlet, int x, int y, int z,
                          std::uint32_t from, CellValue grain) const;
     GranularOutcome slide(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, std::uint64_t stream,
-                          int x, int y, int z, std::uint32_t from, CellValue grain) const;
+                          int x, int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const;
 
     std::array<Offset, kOffsets> offsets_{};
     double slope_ = 0;
