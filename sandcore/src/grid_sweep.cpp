@@ -166,12 +166,14 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
     const int word = first >> 6, offset = first & 63;
     const bool spills = offset + window - dropped > 64 && word + 1 < rowWords_;
     auto rowWords = [&](int zz) { return (layerRow + std::size_t(zz)) * std::size_t(rowWords_) + std::size_t(word); };
-    // The grains in the window, as a window mask.
+    // The grains in the window not yet awake, as a window mask: waking an awake one changes nothing.
     std::uint64_t grains = 0;
     for (int zz = z0; zz <= z1; ++zz) {
-        const std::uint64_t* occupied = occupied_.data() + rowWords(zz);
-        std::uint64_t bits = occupied[0] >> offset;
-        if (spills) bits |= occupied[1] << (64 - offset);
+        const std::size_t at = rowWords(zz);
+        const std::uint64_t* occupied = occupied_.data() + at;
+        const std::uint64_t* awake = words_.data() + at;
+        std::uint64_t bits = (occupied[0] & ~awake[0]) >> offset;
+        if (spills) bits |= (occupied[1] & ~awake[1]) << (64 - offset);
         grains |= ((bits << dropped) & ((1u << window) - 1)) << ((zz - z + reach) * window);
     }
     std::uint64_t woken = granular_->wakeMask(layersAbove) & grains;
