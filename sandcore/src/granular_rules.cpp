@@ -71,6 +71,15 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             }
             maxDrop_ = std::max(maxDrop_, int((o.thresholdQ8 + 255) >> 8));
         }
+    for (const Offset& o : offsets_) {
+        std::uint64_t path = 0;
+        for (int bit = 0; bit < kWindow * kWindow; ++bit)
+            if (o.pathMask >> bit & 1) { // cell q of the path, q - o seen from the target column
+                const int qx = bit % kWindow - kGranularReach - o.dx, qz = bit / kWindow - kGranularReach - o.dz;
+                path |= std::uint64_t{1} << ((qz + kGranularReach) * kWindow + qx + kGranularReach);
+            }
+        pathsTowardsCentre_[std::size_t((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx)] = path;
+    }
     // Who may gain from an EMPTY cell c, by layer above c (see wakeMask): in c's layer and the one
     // above, every grain of the window; d layers above c, only a grain whose deepest possible
     // need towards c's column reaches d cells, since c lies d cells down that column.
@@ -109,9 +118,11 @@ GranularOutcome GranularRules::visit(CellGrid& grid, GrainStore& grains, std::ui
         grains.fallFraction[id] = std::uint16_t(std::min<std::uint32_t>(progress, kOne - 1));
         return {GranularOutcome::Waiting, {}};
     }
-    grains.fallSpeed[id] = 0;
-    grains.fallFraction[id] = 0;
-    return slide(grid, grains, seed, step, stream, x, y, z, from, grain);
+    if (grains.fallSpeed[id] | grains.fallFraction[id]) { // most visited grains rest already: no write
+        grains.fallSpeed[id] = 0;
+        grains.fallFraction[id] = 0;
+    }
+    return slide(grid, grains, seed, step, stream, x, y, z, from, grain, below == kInvalid);
 }
 
 GranularOutcome GranularRules::fall(CellGrid& grid, GrainStore& grains, std::uint64_t step, bool bottomIsOutlet, int x,
@@ -147,51 +158,63 @@ GranularOutcome GranularRules::fall(CellGrid& grid, GrainStore& grains, std::uin
 }
 
 GranularOutcome GranularRules::slide(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step,
-                                     std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain) const {
+                                     std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain,
+                                     bool onVessel) const {
     const Int3 size = grid.size();
     const std::int64_t row = size.x, layer = grid.layerSize();
     const CellValue* cells = grid.cells().data();
     auto at = [&](int dx, int dy, int dz) { return cells[std::int64_t(from) + dy * layer + dz * row + dx]; };
 
-    // Every path starts in one of the 8 cells around the grain: when all are taken (inside the
-    // bulk), nothing can slide and the 48 offsets need not be looked at.
-    bool anyNearEmpty = false;
-    for (int dz = -1; dz <= 1 && !anyNearEmpty; ++dz)
-        for (int dx = -1; dx <= 1; ++dx)
-            if ((dx || dz) && x + dx >= 0 && x + dx < size.x && z + dz >= 0 && z + dz < size.z && at(dx, 0, dz) == kEmpty) {
-                anyNearEmpty = true;
-                break;
-            }
-    if (!anyNearEmpty) return {};
-
     // The 7x7 windows of EMPTY cells in the grain's layer (paths) and the layer below (targets)
-    // as bit masks, bit (dz + 3) * 7 + (dx + 3); cells outside the grid count as taken.
-    std::uint64_t emptyHere = 0, emptyBelow = 0;
+    // as bit masks, bit (dz + 3) * 7 + (dx + 3); cells outside the grid count as taken. Away from
+    // the grid's sides each row of the window is 8 cells read at once.
+    const bool inside = x >= kGranularReach && x + kGranularReach + 1 < size.x && z >= kGranularReach &&
+                        z + kGranularReach < size.z;
     const int dzMin = std::max(-kGranularReach, -z), dzMax = std::min(kGranularReach, size.z - 1 - z);
     const int dxMin = std::max(-kGranularReach, -x), dxMax = std::min(kGranularReach, size.x - 1 - x);
-    for (int dz = dzMin; dz <= dzMax; ++dz) {
-        const CellValue* here = cells + (std::int64_t(from) + dz * row);
-        const CellValue* below = here - layer;
-        const int shift = (dz + kGranularReach) * kWindow + kGranularReach;
-        for (int dx = dxMin; dx <= dxMax; ++dx) {
-            emptyHere |= std::uint64_t(here[dx] == kEmpty) << (shift + dx);
-            emptyBelow |= std::uint64_t(below[dx] == kEmpty) << (shift + dx);
+    auto emptyRow = [&](const CellValue* centre) -> std::uint64_t {
+        if (inside) {
+            unsigned bits = 0;
+            for (int i = 0; i < 8; ++i) bits |= unsigned(centre[i - kGranularReach] == kEmpty) << i;
+            return bits & ((1u << kWindow) - 1);
         }
+        std::uint64_t bits = 0;
+        for (int dx = dxMin; dx <= dxMax; ++dx) bits |= std::uint64_t(centre[dx] == kEmpty) << (dx + kGranularReach);
+        return bits;
+    };
+    auto rowOf = [&](int dz, int dy) { return cells + (std::int64_t(from) + dy * layer + dz * row); };
+    // Every path starts in one of the 8 cells around the grain: when all are taken (inside the
+    // bulk), nothing can slide and the rest of the window need not be read.
+    std::uint64_t emptyHere = 0;
+    for (int dz = std::max(-1, dzMin); dz <= std::min(1, dzMax); ++dz)
+        emptyHere |= emptyRow(rowOf(dz, 0)) << ((dz + kGranularReach) * kWindow);
+    constexpr std::uint64_t kAround = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x14} << 21) | (std::uint64_t{0x1c} << 28);
+    if (!(emptyHere & kAround)) return {};
+    std::uint64_t emptyBelow = 0;
+    for (int dz = dzMin; dz <= dzMax; ++dz) {
+        const int shift = (dz + kGranularReach) * kWindow;
+        if (dz < -1 || dz > 1) emptyHere |= emptyRow(rowOf(dz, 0)) << shift;
+        emptyBelow |= emptyRow(rowOf(dz, -1)) << shift;
     }
     std::uint8_t possible[kOffsets];
     int count = 0;
-    std::uint64_t dithers[kOffsets / 8]; // 8 bits per offset, drawn once per visit only when needed
-    bool drawn = false;
+    std::uint64_t dithers[kOffsets / 8]; // 8 bits per offset, each word drawn only when needed
+    std::uint64_t cellHash = 0;
+    unsigned drawn = 0; // bit w: dithers[w] is drawn
     for (std::uint64_t targets = emptyBelow; targets;) {
         const int bit = __builtin_ctzll(targets);
         targets &= targets - 1;
         const int k = bit < kOffsets / 2 ? bit : bit - 1; // the window's centre has no offset
         const Offset& o = offsets_[std::size_t(k)];
         if (o.pathMask & ~emptyHere) continue; // something lies in the way at the grain's level
-        if (!drawn) {
-            const std::uint64_t cellHash = mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
-            for (int w = 0; w < kOffsets / 8; ++w) dithers[w] = mix64(cellHash + std::uint64_t(w) * 0x9e3779b97f4a7c15ull);
-            drawn = true;
+        if (onVessel) { // the glass is smoother than the sand: one free cell down is enough
+            possible[count++] = std::uint8_t(k);
+            continue;
+        }
+        if (!drawn) cellHash = mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
+        if (!(drawn >> (k >> 3) & 1u)) {
+            dithers[k >> 3] = mix64(cellHash + std::uint64_t(k >> 3) * 0x9e3779b97f4a7c15ull);
+            drawn |= 1u << (k >> 3);
         }
         const std::uint32_t dither = std::uint32_t(dithers[k >> 3] >> ((k & 7) * 8)) & 0xffu;
         const int need = std::max(1, int((o.thresholdQ8 + dither) >> 8));

@@ -14,6 +14,10 @@
 //    the angle continuous in T instead of locked to integer heights. Every move goes down at
 //    least one layer, so grains never swap back and forth. One of the possible moves is chosen
 //    by a counter hash of (seed, step, grid, cell) (R3).
+//    A grain lying on the vessel (an INVALID cell below it) slides on the glass, which is smoother
+//    than the sand: any free cell one layer down within reach will do (need = 1). The vessel's
+//    walls are carved so that every inside cell has one in the 3x3 below it (removeSharpEdges),
+//    so no grain is left on a ledge of the glass and the bulb empties, as with the classic rules.
 //
 // What a grain reads, so the sweep can keep threads apart and wake exactly the grains whose
 // options a change can widen (R5, R6): its own column downwards and the speed of the grain
@@ -59,6 +63,9 @@ public:
     /// The grains that an EMPTY cell c may let move, `layersAbove` (0..maxDrop()) layers above c:
     /// bit (dz + 3) * 7 + (dx + 3) stands for the grain at c + (dx, dz) in that layer.
     std::uint64_t wakeMask(int layersAbove) const { return wakeMasks_[std::size_t(layersAbove)]; }
+    /// For the grain at window bit `bit` (as in wakeMask) around a column c: the cells its slide
+    /// into c's column crosses at its own level, as window bits around c's column.
+    std::uint64_t pathTowardsCentre(int bit) const { return pathsTowardsCentre_[std::size_t(bit)]; }
     /// g in cells per step squared, 16.16 fixed point.
     std::uint32_t gravity() const { return gravity_; }
     /// The slope T the thresholds use for the asked angle (after calibration).
@@ -78,13 +85,14 @@ private:
     GranularOutcome fall(CellGrid& grid, GrainStore& grains, std::uint64_t step, bool bottomIsOutlet, int x, int y, int z,
                          std::uint32_t from, CellValue grain) const;
     GranularOutcome slide(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, std::uint64_t stream,
-                          int x, int y, int z, std::uint32_t from, CellValue grain) const;
+                          int x, int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const;
 
     std::array<Offset, kOffsets> offsets_{};
     double slope_ = 0;
     int maxDrop_ = 1;
     std::uint32_t gravity_ = 0;
     std::vector<std::uint64_t> wakeMasks_;
+    std::array<std::uint64_t, kWindow * kWindow> pathsTowardsCentre_{};
 };
 
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the

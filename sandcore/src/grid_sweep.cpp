@@ -93,42 +93,126 @@ inline void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
 }
 
-// Wakes the grains of layer y at the cells of `mask` (GranularRules::wakeMask) around (x, z);
-// EMPTY cells stay asleep. That is exact: when this runs, during the sweep of layer y or below,
-// no grain can enter those cells before they are visited in this step (grains only move down,
-// and layer y and those above have not been swept yet), and one that enters later is woken by
-// its move.
-void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, std::uint64_t mask) {
-    constexpr int reach = kGranularReach, window = 2 * kGranularReach + 1;
-    const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, size_.x - 1);
+namespace {
+constexpr int kGranularWindow = 2 * kGranularReach + 1;
+// The 3x3 cells around the window's centre: a grain there has the emptied cell beside it.
+constexpr std::uint64_t kWindowCentre = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x1c} << 21) | (std::uint64_t{0x1c} << 28);
+
+// The EMPTY cells of layer y within 4 columns of (x, z): row r (z - 4 + r), bit i (x - 4 + i);
+// cells outside the grid count as taken.
+std::array<std::uint32_t, 9> emptyAround(const CellGrid& grid, int x, int y, int z) {
+    constexpr int reach = kGranularReach + 1, span = 2 * reach + 1;
+    const Int3 size = grid.size();
+    const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, size.x - 1);
+    std::array<std::uint32_t, span> empty{};
+    const bool inside = x0 == x - reach && x1 == x + reach; // then each row is read without bounds tests
+    for (int r = 0; r < span; ++r) {
+        const int zz = z - reach + r;
+        if (zz < 0 || zz >= size.z) continue;
+        const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
+        std::uint32_t bits = 0;
+        if (inside) {
+            const CellValue* left = cells + (x - reach);
+            for (int i = 0; i < 8; ++i) bits |= std::uint32_t(left[i] == kEmpty) << i;
+            bits |= std::uint32_t(left[8] == kEmpty) << 8;
+        } else {
+            for (int xx = x0; xx <= x1; ++xx) bits |= std::uint32_t(cells[xx] == kEmpty) << (xx - x + reach);
+        }
+        empty[std::size_t(r)] = bits;
+    }
+    return empty;
+}
+
+// Of the 7x7 window (bit (dz + 3) * 7 + (dx + 3)): the cells with an EMPTY cell among their 8
+// neighbours. Only such a grain can slide at all (every path starts beside it).
+std::uint64_t besideEmpty(const std::array<std::uint32_t, 9>& empty) {
+    std::uint64_t mask = 0;
+    for (std::size_t r = 1; r + 1 < empty.size(); ++r) {
+        const std::uint32_t rows = empty[r - 1] | empty[r] | empty[r + 1];
+        const std::uint32_t beside = rows | rows << 1 | rows >> 1; // bit i: an EMPTY cell at i-1..i+1
+        mask |= std::uint64_t((beside >> 1) & ((1u << kGranularWindow) - 1)) << ((r - 1) * kGranularWindow);
+    }
+    return mask;
+}
+
+// The EMPTY cells of the 7x7 window.
+std::uint64_t emptyInWindow(const std::array<std::uint32_t, 9>& empty) {
+    std::uint64_t mask = 0;
+    for (std::size_t r = 1; r + 1 < empty.size(); ++r)
+        mask |= std::uint64_t((empty[r] >> 1) & ((1u << kGranularWindow) - 1)) << ((r - 1) * kGranularWindow);
+    return mask;
+}
+} // namespace
+
+// Wakes the grains of layer y at the cells of `mask` (GranularRules::wakeMask) around (x, z) that
+// may gain: in the emptied cell's own layer (layersAbove 0) those with an EMPTY cell beside them
+// (a grain without one cannot slide at all, and is woken when a cell beside it empties); in the
+// layers above, those whose sideways path towards (x, z)'s column is EMPTY at their level (the
+// only one of their options that (x, y, z) can widen). The grains beside the column are always
+// woken. Each row's 7 bits are shifted into place and ANDed with the occupied bits, as wakeSpan
+// does, so EMPTY and INVALID cells stay asleep. That is exact: when this runs, during the sweep
+// of layer y or below, no grain can enter those cells before they are visited in this step
+// (grains only move down, and layer y and those above have not been swept yet), and one that
+// enters later is woken by its move.
+void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove) {
+    constexpr int reach = kGranularReach, window = kGranularWindow;
     const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
     const std::size_t layerRow = std::size_t(y) * std::size_t(size_.z);
+    // Bit i of a row's mask stands for x - reach + i; columns left of 0 are shifted out, those
+    // right of the grid meet occupied bits that are never set.
+    const int first = std::max(x - reach, 0), dropped = first - (x - reach);
+    const int word = first >> 6, offset = first & 63;
+    const bool spills = offset + window - dropped > 64 && word + 1 < rowWords_;
+    auto rowWords = [&](int zz) { return (layerRow + std::size_t(zz)) * std::size_t(rowWords_) + std::size_t(word); };
+    // The grains in the window not yet awake, as a window mask: waking an awake one changes nothing.
+    std::uint64_t grains = 0;
     for (int zz = z0; zz <= z1; ++zz) {
-        const auto rowMask = std::uint32_t(mask >> ((zz - z + reach) * window)) & ((1u << window) - 1);
-        if (!rowMask) continue;
-        const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
-        RowWord* words = words_.data() + (layerRow + std::size_t(zz)) * std::size_t(rowWords_);
-        bool any = false;
-        for (int xx = x0; xx <= x1; ++xx)
-            if ((rowMask >> (xx - x + reach) & 1u) && cells[xx] >= 0) {
-                words[xx >> 6].awake |= std::uint64_t{1} << (xx & 63);
-                any = true;
+        const std::size_t at = rowWords(zz);
+        const RowWord* row = words_.data() + at;
+        std::uint64_t bits = (row[0].occupied & ~row[0].awake) >> offset;
+        if (spills) bits |= (row[1].occupied & ~row[1].awake) << (64 - offset);
+        grains |= ((bits << dropped) & ((1u << window) - 1)) << ((zz - z + reach) * window);
+    }
+    std::uint64_t woken = granular_->wakeMask(layersAbove) & grains;
+    if (woken & ~kWindowCentre) {
+        const std::array<std::uint32_t, 9> empty = emptyAround(grid, x, y, z);
+        if (layersAbove == 0) {
+            woken &= besideEmpty(empty) | kWindowCentre;
+        } else {
+            const std::uint64_t clear = emptyInWindow(empty);
+            for (std::uint64_t far = woken & ~kWindowCentre; far; far &= far - 1) {
+                const int bit = __builtin_ctzll(far);
+                if (granular_->pathTowardsCentre(bit) & ~clear) woken &= ~(std::uint64_t{1} << bit);
             }
-        if (any) rowAwake_[layerRow + std::size_t(zz)] = 1;
+        }
+    }
+    for (int zz = z0; zz <= z1; ++zz) {
+        const std::uint64_t rowMask = ((woken >> ((zz - z + reach) * window)) & ((1u << window) - 1)) >> dropped;
+        if (!rowMask) continue;
+        RowWord* words = words_.data() + rowWords(zz);
+        words[0].awake |= rowMask << offset;
+        if (spills) words[1].awake |= rowMask >> (64 - offset);
+        rowAwake_[layerRow + std::size_t(zz)] = 1;
     }
 }
 
 // The grains whose granular options an EMPTY (x, y, z) can widen (granular_rules.hpp says what a
-// grain reads): in layer y, those within 3 columns whose sideways path may cross it; in layer
-// y+1, those within 3 columns that may now fall or slide into it; in each higher layer up to
-// maxDrop above, those whose look down this column may now reach further, which needs every
-// cell of the column between them and (x, y, z) EMPTY.
+// grain reads): in layer y, those within 3 columns whose sideways path may cross it; above it,
+// the grain right above, which may now fall; and in each layer up to maxDrop above, those whose
+// slide may now end in this column or reach further down it. A slide's path at the grain's own
+// level includes the cell above its target, and its look down the column needs every cell
+// between EMPTY: so while the column above (x, y, z) is EMPTY each layer's window is woken, and
+// the first cell of it that is not EMPTY ends the search (only the grain in it, when it lies right
+// above (x, y, z), can gain: it may fall).
 void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
-    if (y > 0) wakeGrainsAround(grid, x, y, z, granular_->wakeMask(0)); // layer 0 only falls or transitions
+    if (y > 0) wakeGrainsAround(grid, x, y, z, 0); // layer 0 only falls or transitions
     const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
     for (int layer = y + 1; layer <= top; ++layer) {
-        if (layer > y + 1 && grid.at(x, layer - 1, z) != kEmpty) break;
-        wakeGrainsAround(grid, x, layer, z, granular_->wakeMask(layer - y));
+        if (grid.at(x, layer, z) != kEmpty) {
+            if (layer == y + 1 && grid.at(x, layer, z) >= 0) wakeAt(x, layer, z);
+            break;
+        }
+        wakeGrainsAround(grid, x, layer, z, layer - y);
     }
 }
 
@@ -275,6 +359,14 @@ inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int
 }
 
 bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z) {
+    // The occupied bits are kept as the classic visit keeps them, so the granular wakes can AND
+    // with them instead of reading cells.
+    const std::size_t word = (std::size_t(y) * std::size_t(size_.z) + std::size_t(z)) * std::size_t(rowWords_) + std::size_t(x >> 6);
+    const std::uint64_t bit = std::uint64_t{1} << (x & 63);
+    if (context.grid.at(x, y, z) < 0) {
+        words_[word].occupied &= ~bit;
+        return false;
+    }
     const GranularOutcome outcome = granular_->visit(context.grid, context.grains, context.seed, context.step,
                                                      std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
     if (outcome.kind == GranularOutcome::Waiting) {
@@ -284,6 +376,7 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
         if (y + 1 < size_.y && context.grid.at(x, y + 1, z) >= 0) wakeAt(x, y + 1, z);
     }
     if (outcome.kind != GranularOutcome::Moved) return false;
+    words_[word].occupied &= ~bit; // every move goes down at least a layer: the cell it left is EMPTY
     const Int3 to = outcome.to;
     const std::uint32_t toCell = context.grid.index(to.x, to.y, to.z);
     const auto grain = std::uint32_t(context.grid[toCell]);

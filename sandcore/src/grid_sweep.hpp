@@ -140,7 +140,7 @@ private:
     void clearRow(std::uint32_t row);
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
-    void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, std::uint64_t mask);
+    void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove);
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
     int awakeRowsInLayer(int y) const;
 
