@@ -1,5 +1,7 @@
 #include "mesh_preparation.hpp"
 
+#include "welded_mesh.hpp"
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -393,35 +395,7 @@ Orientation orientationBySearch(const WalkedMesh& out) {
             }
         }
         // Orient the part as a whole so its signed volume about its own centre is positive.
-        std::array<double, 3> low, high;
-        low.fill(std::numeric_limits<double>::infinity());
-        high.fill(-std::numeric_limits<double>::infinity());
-        for (std::uint32_t t : part)
-            for (std::uint32_t i : out.triangles[t]) {
-                const Vec3 v = out.vertices[i];
-                const double c[3] = {v.x, v.y, v.z};
-                for (std::size_t a = 0; a < 3; ++a) {
-                    low[a] = std::min(low[a], c[a]);
-                    high[a] = std::max(high[a], c[a]);
-                }
-            }
-        double sixTimesVolume = 0.0;
-        for (std::uint32_t t : part) {
-            auto tri = out.triangles[t];
-            if (flipped[t]) std::swap(tri[1], tri[2]);
-            double p[3][3];
-            for (std::size_t k = 0; k < 3; ++k) {
-                const Vec3 v = out.vertices[tri[k]];
-                p[k][0] = v.x - 0.5 * (low[0] + high[0]);
-                p[k][1] = v.y - 0.5 * (low[1] + high[1]);
-                p[k][2] = v.z - 0.5 * (low[2] + high[2]);
-            }
-            sixTimesVolume += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
-                              p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-                              p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
-        }
-        if (sixTimesVolume < 0.0)
-            for (std::uint32_t t : part) flipped[t] ^= 1;
+        orientPartByVolume(out.vertices, out.triangles, part, flipped);
     }
     // A pair still inconsistent after the flips: it needed different flips and got the same, or the other way.
     Orientation result;

@@ -47,7 +47,7 @@ Vec3 columnNormal(const std::vector<int>& heights, Int3 gridSize, int x, int z) 
     return normalised(sx, sy, sz);
 }
 
-Vec3 gradientNormal(const CellGrid& grid, std::uint32_t cell) {
+Int3 occupancyGradientSums(const CellGrid& grid, std::uint32_t cell) {
     const Int3 c = grid.coordinate(cell);
     const CellNeighbourhood around(grid, c.x, c.y, c.z);
     int gx = 0, gy = 0, gz = 0;
@@ -60,7 +60,12 @@ Vec3 gradientNormal(const CellGrid& grid, std::uint32_t cell) {
             gz += dz;
         });
     }
-    return occupancyGradientNormal(gx, gy, gz);
+    return {gx, gy, gz};
+}
+
+Vec3 gradientNormal(const CellGrid& grid, std::uint32_t cell) {
+    const Int3 g = occupancyGradientSums(grid, cell);
+    return occupancyGradientNormal(g.x, g.y, g.z);
 }
 
 // Sand lies where the gradient points; the surface faces the other way.

@@ -41,19 +41,8 @@ const GradientTable& gradientTable() {
 
 // gradientNormal's sums, read from the grid: for cells at the grid's edge.
 std::uint16_t gradientKeyFromGrid(const CellGrid& grid, std::uint32_t cell) {
-    const Int3 c = grid.coordinate(cell);
-    const CellNeighbourhood around(grid, c.x, c.y, c.z);
-    int gx = 0, gy = 0, gz = 0;
-    for (int dy = -1; dy <= 1; ++dy) {
-        if (!around.hasLayer(dy)) continue;
-        around.forEachWithCentre([&](int dx, int dz) {
-            if (around.at(dx, dy, dz) < 0) return;
-            gx += dx;
-            gy += dy;
-            gz += dz;
-        });
-    }
-    return gradientKey(gx, gy, gz);
+    const Int3 g = occupancyGradientSums(grid, cell);
+    return gradientKey(g.x, g.y, g.z);
 }
 
 template <class T> void prefetch(const T* address) { __builtin_prefetch(address); }

@@ -5,7 +5,9 @@
 
 #include "sandcore/triangle_mesh.hpp"
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace sandcore {
@@ -23,6 +25,11 @@ struct OrientedMesh {
     MeshClosedness closedness;      ///< closednessOf the mesh as it was given
     std::int64_t inconsistentAfter = 0; ///< closednessOf(mesh).inconsistentEdges, after the flips
 };
+/// Flips every triangle of `part` (flipped[t] ^= 1) when the part, with its current flips,
+/// encloses a negative signed volume about its own centre. Shared by both orientation walks.
+void orientPartByVolume(std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles,
+                        std::span<const std::uint32_t> part, std::span<std::int8_t> flipped);
+
 /// orientedOutward, without the weld.
 OrientedMesh orientedOutwardWelded(TriangleMesh welded);
 

@@ -29,6 +29,10 @@ Vec3 columnNormal(const std::vector<int>& heights, Int3 gridSize, int x, int z);
 /// empty); (0, 1, 0) where the neighbourhood is balanced.
 Vec3 gradientNormal(const CellGrid& grid, std::uint32_t cell);
 
+/// The sums (gx, gy, gz) of the offsets of the grains among a cell's 26 neighbours (each in
+/// -9..9; INVALID and outside count as empty): what gradientNormal reads.
+Int3 occupancyGradientSums(const CellGrid& grid, std::uint32_t cell);
+
 /// The normal gradientNormal gives for the sums (gx, gy, gz) of the offsets of the grains
 /// around a cell (each in -9..9): the unit vector of (-gx, -gy, -gz), or (0, 1, 0) for none.
 Vec3 occupancyGradientNormal(int gx, int gy, int gz);
