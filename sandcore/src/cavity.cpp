@@ -42,13 +42,13 @@ CavitySearch findCavities(const InsideMask& solid) {
     const std::size_t layer = std::size_t(s.x) * std::size_t(s.z);
     // One byte per cell (wall 1, outside 2, a cavity 3): a label per cavity would cost four.
     constexpr std::uint8_t kUnvisited = 0, kOutside = 2, kCavity = 3;
-    std::vector<std::uint8_t> state = solid.inside;
+    MaskCells state = solid.inside;
     std::vector<std::uint32_t> queue;
     // Marks every cell holding `from` that is 6-connected to seed (which holds `from`) with
     // `mark`; returns how many. A scanline fill: each popped cell grows to the whole run of
     // `from` cells along x, and the run pushes one cell per run it touches in the four rows
     // beside it (z and y), so the queue sees a few entries per run instead of six per cell.
-    auto fill = [&](std::size_t seed, std::uint8_t mark, std::uint8_t from, std::vector<std::uint8_t>& cells) {
+    auto fill = [&](std::size_t seed, std::uint8_t mark, std::uint8_t from, MaskCells& cells) {
         std::int64_t count = 0;
         const std::size_t width = std::size_t(s.x);
         queue.clear();

@@ -154,7 +154,7 @@ std::vector<Point> quantize(const std::vector<std::array<double, 3>>& grid) {
 // union and a closed mesh gives the same count from both ends).
 // `alongside`, when given, runs as one more task of the rows' loop, on whichever thread takes it.
 void castRays(std::span<const Point> points, std::span<const MeshTriangle> triangles, RayFrame f, Int3 size,
-              const VoxelizeSettings& settings, WorkerPool& pool, std::vector<std::uint8_t>& out, bool votes,
+              const VoxelizeSettings& settings, WorkerPool& pool, std::span<std::uint8_t> out, bool votes,
               const std::function<void()>* alongside = nullptr) {
     const int sizes[3] = {size.x, size.y, size.z};
     const int rowsV = sizes[f.v], rowsW = sizes[f.w], length = sizes[f.u];
@@ -225,7 +225,7 @@ InsideMask insideFromPoints(std::span<const Point> points, std::span<const MeshT
     }
     if (alongside) (*alongside)();
     // S5: each axis gives two votes (parity counted from either end); they agree on a closed mesh.
-    std::vector<std::uint8_t> votes(mask.inside.size(), 0);
+    MaskCells votes(mask.inside.size(), 0);
     castRays(points, triangles, {0, 1, 2}, size, settings, pool, votes, true);
     castRays(points, triangles, {1, 2, 0}, size, settings, pool, votes, true);
     castRays(points, triangles, {2, 0, 1}, size, settings, pool, votes, true);

@@ -2,6 +2,7 @@
 // A voxel mask: which cells of a box lie inside a shape. Scenes are built from masks (R10);
 // masks come from procedural shapes (procedural_shapes.hpp) or from a voxelized model.
 
+#include "sandcore/large_pages.hpp"
 #include "sandcore/vec3.hpp"
 
 #include <cstdint>
@@ -9,10 +10,13 @@
 
 namespace sandcore {
 
+/// A mask's flags: a model at 256 cells is 16 MiB, so in huge pages, reused once freed.
+using MaskCells = std::vector<std::uint8_t, LargePageAllocator<std::uint8_t>>;
+
 /// Inside flags for a box of cells, in CellGrid's index layout (x fastest, then z, then y).
 struct InsideMask {
     Int3 size;                       ///< cells per axis
-    std::vector<std::uint8_t> inside; ///< 1 = inside the shape, 0 = outside; size.x*size.y*size.z entries
+    MaskCells inside;                ///< 1 = inside the shape, 0 = outside; size.x*size.y*size.z entries
 
     /// An all-outside mask; throws std::invalid_argument for an invalid size (see validateGridSize).
     static InsideMask empty(Int3 size);

@@ -1,8 +1,10 @@
 #pragma once
-// Memory for the big arrays of a scene (cell grids): blocks of 2 MiB and more are aligned to
-// 2 MiB and offered to the kernel as transparent huge pages (madvise), so a sweep over a grid of
-// a million cells takes a few TLB entries instead of thousands of 4 KiB ones. Smaller blocks
-// come from operator new as usual.
+// Memory for the big arrays of a scene (cell grids) and of the voxelizer: blocks of 2 MiB and
+// more are aligned to 2 MiB and offered to the kernel as transparent huge pages (madvise), so a
+// sweep over a grid of a million cells takes a few TLB entries instead of thousands of 4 KiB
+// ones. Freed blocks are kept, up to kLargeBlockCacheBytes, for the next allocation of a similar
+// size: fresh memory costs a page fault per page and the kernel's clearing of every byte.
+// Smaller blocks come from operator new as usual.
 
 #include <cstddef>
 #include <new>
@@ -12,11 +14,19 @@ namespace sandcore {
 /// Smallest block handed to huge pages, bytes.
 inline constexpr std::size_t kLargePageBytes = std::size_t{2} << 20;
 
+/// Freed large blocks kept for reuse at most, bytes (none under AddressSanitizer).
+inline constexpr std::size_t kLargeBlockCacheBytes = std::size_t{256} << 20;
+
 /// bytes of memory, 2 MiB aligned and advised as huge pages when bytes >= kLargePageBytes.
 /// Throws std::bad_alloc when no memory is left.
 void* allocateLarge(std::size_t bytes);
-/// Frees a block of allocateLarge(bytes), given the same byte count.
+/// Frees a block of allocateLarge(bytes), given the same byte count: kept for reuse while the
+/// kept blocks stay within kLargeBlockCacheBytes, returned to the system otherwise.
 void freeLarge(void* block, std::size_t bytes) noexcept;
+/// Returns every kept block to the system (when memory is needed elsewhere).
+void releaseLargeBlockCache() noexcept;
+/// Bytes of the blocks kept for reuse.
+std::size_t largeBlockCacheBytes() noexcept;
 
 /// A std::allocator that takes its memory from allocateLarge.
 template <class T> struct LargePageAllocator {
