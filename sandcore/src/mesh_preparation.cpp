@@ -517,22 +517,11 @@ Orientation orientationOf(const WalkedMesh& walked) {
     return orientationBySearch(walked);
 }
 
-double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8_t>& flipped) {
+double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8_t>& flipped, const MeshBounds& bounds) {
     // signedVolume's loops, on the triangles as they will be after the flips.
     if (walked.triangles.empty()) return 0.0;
-    std::array<double, 3> low, high;
-    low.fill(std::numeric_limits<double>::infinity());
-    high.fill(-std::numeric_limits<double>::infinity());
-    for (const Triangle& t : walked.triangles)
-        for (std::uint32_t i : t) {
-            const Vec3 v = walked.vertices[i];
-            const double c[3] = {v.x, v.y, v.z};
-            for (std::size_t a = 0; a < 3; ++a) {
-                low[a] = std::min(low[a], c[a]);
-                high[a] = std::max(high[a], c[a]);
-            }
-        }
-    const double cx = 0.5 * (low[0] + high[0]), cy = 0.5 * (low[1] + high[1]), cz = 0.5 * (low[2] + high[2]);
+    const double cx = 0.5 * (bounds.min[0] + bounds.max[0]), cy = 0.5 * (bounds.min[1] + bounds.max[1]),
+                 cz = 0.5 * (bounds.min[2] + bounds.max[2]);
     double sixTimesVolume = 0.0;
     for (std::size_t n = 0; n < walked.triangles.size(); ++n) {
         const Triangle& t = walked.triangles[n];

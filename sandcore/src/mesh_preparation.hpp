@@ -56,8 +56,11 @@ struct Orientation {
 };
 Orientation orientationOf(const WalkedMesh& walked);
 
-/// signedVolume of the mesh with the flipped triangles turned over, bit for bit.
-double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8_t>& flipped);
+/// signedVolume of the mesh with the flipped triangles turned over, bit for bit, given the
+/// bounds of the mesh as loaded (boundsInParallel). Its triangles' corners are the welded mesh's
+/// at the same positions: welding and dropping repeated faces keep every position a kept
+/// triangle uses, and where they swap a -0.0 for a +0.0 the centre, and so each term, keeps its value.
+double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8_t>& flipped, const MeshBounds& bounds);
 
 /// Turns the flipped triangles over.
 void applyOrientation(WalkedMesh& walked, const Orientation& orientation, WorkerPool& pool);

@@ -341,7 +341,8 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     VoxelizeResult result;
     checkResolution(settings);
     WorkerPool pool(std::max(settings.threads, 1));
-    result.placement = placementFor(boundsInParallel(mesh, pool), settings); // placeInGrid, its errors in the same order
+    const MeshBounds bounds = boundsInParallel(mesh, pool);
+    result.placement = placementFor(bounds, settings); // placeInGrid, its errors in the same order
     const VoxelPlacement& p = result.placement;
     if (settings.threads < 1) throw std::invalid_argument("voxelize needs at least one thread");
     // Welded once; one walk over the edges measures closedness and links the faces the outward
@@ -355,7 +356,7 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     double signedVolume = 0.0;
     const std::function<void()> orient = [&] {
         orientation = orientationOf(walked);
-        signedVolume = signedVolumeOf(walked, orientation.flipped);
+        signedVolume = signedVolumeOf(walked, orientation.flipped, bounds);
         if (settings.robust) applyOrientation(walked, orientation, pool);
     };
     const LargePageVector<Point> points = quantizedGridPoints(walked.vertices, p, pool);
