@@ -113,14 +113,23 @@ GranularOutcome GranularRules::visit(CellGrid& grid, GrainStore& grains, std::ui
     if (below >= 0 && grains.fallSpeed[std::size_t(below)] > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
         // so the grain follows at once when the one below moves on (a column flows as one).
-        grains.fallSpeed[id] = grains.fallSpeed[std::size_t(below)];
-        const std::uint32_t progress = grains.fallFraction[id] + grains.fallSpeed[id] + gravity_ / 2;
-        grains.fallFraction[id] = std::uint16_t(std::min<std::uint32_t>(progress, kOne - 1));
+        const std::uint32_t speed = grains.fallSpeed[std::size_t(below)];
+        const auto fraction = std::uint16_t(std::min<std::uint32_t>(grains.fallFraction[id] + speed + gravity_ / 2, kOne - 1));
+        // Nothing changed (it waits, a cell of progress gathered, on a grain held at the same
+        // speed): it may sleep, since the one below wakes it when it changes speed or moves. Not
+        // on the outlet row of the upper grid, whose speeds the transition sets without a visit.
+        if (speed == grains.fallSpeed[id] && fraction == grains.fallFraction[id] && (y > 1 || !bottomIsOutlet))
+            return {GranularOutcome::Riding, {}};
+        grains.fallSpeed[id] = speed;
+        grains.fallFraction[id] = fraction;
         return {GranularOutcome::Waiting, {}};
     }
     if (grains.fallSpeed[id] | grains.fallFraction[id]) { // most visited grains rest already: no write
         grains.fallSpeed[id] = 0;
         grains.fallFraction[id] = 0;
+        GranularOutcome outcome = slide(grid, grains, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+        outcome.stopped = outcome.kind == GranularOutcome::Resting;
+        return outcome;
     }
     return slide(grid, grains, seed, step, stream, x, y, z, from, grain, below == kInvalid);
 }

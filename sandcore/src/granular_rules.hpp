@@ -43,8 +43,11 @@ struct GranularOutcome {
         Resting, ///< nothing can move it: it sleeps until a cell it reads empties
         Waiting, ///< it did not change cells but is in motion (speed or fraction grew): keep it awake
         Moved,   ///< it moved to `to`
+        Riding,  ///< it rides a moving grain and nothing of it changed: it sleeps until the one below
+                 ///< changes speed or leaves (both wake it), so a held column is not visited every step
     } kind = Resting;
     Int3 to{};   ///< the cell it moved to (Moved only)
+    bool stopped = false; ///< Resting only: it was in motion and stopped, so whoever rides it must look again
 };
 
 /// The tables the granular rules need, computed once from PhysicsSettings.

@@ -369,8 +369,8 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
     }
     const GranularOutcome outcome = granular_->visit(context.grid, context.grains, context.seed, context.step,
                                                      std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
-    if (outcome.kind == GranularOutcome::Waiting) {
-        wakeAt(x, y, z); // in motion: visited again next step
+    if (outcome.kind == GranularOutcome::Waiting || outcome.stopped) {
+        if (outcome.kind == GranularOutcome::Waiting) wakeAt(x, y, z); // in motion: visited again next step
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
         // speed changed without a cell emptying, so the grain above must look again.
         if (y + 1 < size_.y && context.grid.at(x, y + 1, z) >= 0) wakeAt(x, y + 1, z);
@@ -386,6 +386,52 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
     return true;
 }
 
+// The granular strip loop. Granular moves also wake cells of their own layer (the paths), and a
+// grain visited later sees the cells emptied by one visited earlier, so a fixed order lets grains
+// run one way more easily than the other and cones lean (PH2). The order therefore turns with the
+// step: x ascending or descending by bit 0 of the step number, z by bit 1, so over four steps every
+// mirror of the grid is swept alike. With sleeping, each bit is taken as it is reached: a bit set
+// ahead of the cell being visited is visited in this step, one set behind it in the next, as a
+// full sweep in the same order would see the change.
+SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd) {
+    SweepResult totals;
+    const bool xDown = (context.step & 1) != 0, zDown = (context.step & 2) != 0;
+    auto visit = [&](int x, int z) {
+        ++totals.visited;
+        totals.moves += visitGranular(context, log, x, y, z) ? 1 : 0;
+    };
+    for (int i = zBegin; i < zEnd; ++i) {
+        const int z = zDown ? zBegin + zEnd - 1 - i : i;
+        const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
+        if (context.sleeping && !rowAwake_[row]) continue;
+        rowAwake_[row] = 0;
+        RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+        for (int j = 0; j < rowWords_; ++j) {
+            const int w = xDown ? rowWords_ - 1 - j : j;
+            if (!context.sleeping) { // every cell of the row, as if awake
+                words[w].awake = 0;
+                for (std::uint64_t bits = wholeWord(w); bits;) {
+                    const int bit = xDown ? 63 - __builtin_clzll(bits) : __builtin_ctzll(bits);
+                    bits &= ~(std::uint64_t{1} << bit);
+                    visit(w * 64 + bit, z);
+                }
+                continue;
+            }
+            std::uint64_t ahead = ~std::uint64_t{0};
+            while (const std::uint64_t bits = words[w].awake & ahead) {
+                const int bit = xDown ? 63 - __builtin_clzll(bits) : __builtin_ctzll(bits);
+                words[w].awake &= ~(std::uint64_t{1} << bit);
+                if (xDown)
+                    ahead = (std::uint64_t{1} << bit) - 1;
+                else
+                    ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
+                visit(w * 64 + bit, z);
+            }
+        }
+    }
+    return totals;
+}
+
 // The strip loop, instantiated once per rule set: the classic one is main's loop exactly (each
 // word's awake bits taken at once), with no test of the rule set per word or per grain.
 template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip) {
@@ -393,6 +439,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
     const Int3 size = size_;
     const int zEnd = std::min((strip + 1) * kStripRows, size.z);
     StripLog& log = logs_[std::size_t(strip)];
+    if constexpr (Granular) return sweepGranularStrip(context, log, y, strip * kStripRows, zEnd);
     for (int z = strip * kStripRows; z < zEnd; ++z) {
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size.z) + std::uint32_t(z);
         if (context.sleeping && !rowAwake_[row]) continue;
@@ -401,32 +448,13 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
         // bits first. Without sleeping, every cell of the row is visited as if awake.
         RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
         for (int w = 0; w < rowWords_; ++w) {
-            if constexpr (Granular) {
-                if (context.sleeping) {
-                    // Granular moves also wake cells of their own layer (the paths): a bit set ahead
-                    // of the cell being visited is visited in this step, one set behind it in the
-                    // next, as a full sweep would see the change. So each bit is taken as it is reached.
-                    std::uint64_t ahead = ~std::uint64_t{0};
-                    while (const std::uint64_t bits = words[w].awake & ahead) {
-                        const int bit = __builtin_ctzll(bits);
-                        words[w].awake &= ~(std::uint64_t{1} << bit);
-                        ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
-                        ++totals.visited;
-                        totals.moves += visitGranular(context, log, w * 64 + bit, y, z) ? 1 : 0;
-                    }
-                    continue;
-                }
-            }
             std::uint64_t bits = context.sleeping ? words[w].awake : wholeWord(w);
             words[w].awake = 0;
             while (bits) {
                 const int x = w * 64 + __builtin_ctzll(bits);
                 bits &= bits - 1;
                 ++totals.visited;
-                if constexpr (Granular)
-                    totals.moves += visitGranular(context, log, x, y, z) ? 1 : 0;
-                else
-                    totals.moves += visitCell(context, log, x, y, z) ? 1 : 0;
+                totals.moves += visitCell(context, log, x, y, z) ? 1 : 0;
             }
         }
     }
