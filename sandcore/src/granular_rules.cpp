@@ -50,6 +50,7 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
     // from about 35 degrees on, thresholds rise towards the diagonals to keep the cone round.
     const double diagonalStiffening = std::clamp(1.6 * (slope_ - 0.87), 0.0, 0.3);
     int n = 0;
+    std::array<std::vector<std::uint64_t>, kWindow * kWindow> throughCentreLists;
     for (int dz = -kGranularReach; dz <= kGranularReach; ++dz)
         for (int dx = -kGranularReach; dx <= kGranularReach; ++dx) {
             if (dx == 0 && dz == 0) continue;
@@ -63,14 +64,33 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             // target column included, each rounded half away from zero so the path is symmetric
             // under every mirror of the grid.
             const int samples = 4 * std::max(std::abs(dx), std::abs(dz));
+            std::vector<std::array<int, 2>> path; // its cells in the order the line meets them
             for (int i = 1; i <= samples; ++i) {
                 const std::array<int, 2> cell{int(std::lround(double(dx) * i / samples)),
                                               int(std::lround(double(dz) * i / samples))};
                 if (cell == std::array<int, 2>{0, 0}) continue;
+                if (std::find(path.begin(), path.end(), cell) == path.end()) path.push_back(cell);
                 o.pathMask |= std::uint64_t{1} << ((cell[1] + kGranularReach) * kWindow + cell[0] + kGranularReach);
+            }
+            // Seen from each cell r of the path two or three columns out (a cell c that empties),
+            // the grain lies at -r: the path up to r, as window bits around r, goes to its list.
+            for (std::size_t k = 0; k < path.size(); ++k) {
+                const auto [rx, rz] = path[k];
+                if (std::max(std::abs(rx), std::abs(rz)) < 2) continue;
+                std::uint64_t prefix = 0;
+                for (std::size_t j = 0; j <= k; ++j)
+                    prefix |= std::uint64_t{1} << ((path[j][1] - rz + kGranularReach) * kWindow + path[j][0] - rx + kGranularReach);
+                throughCentreLists[std::size_t((kGranularReach - rz) * kWindow + kGranularReach - rx)].push_back(prefix);
             }
             maxDrop_ = std::max(maxDrop_, int((o.thresholdQ8 + 255) >> 8));
         }
+    for (std::size_t bit = 0; bit < throughCentreLists.size(); ++bit) {
+        std::vector<std::uint64_t>& list = throughCentreLists[bit];
+        std::sort(list.begin(), list.end());
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+        throughCentreSpans_[bit] = {throughCentre_.size(), list.size()};
+        throughCentre_.insert(throughCentre_.end(), list.begin(), list.end());
+    }
     for (const Offset& o : offsets_) {
         std::uint64_t path = 0;
         for (int bit = 0; bit < kWindow * kWindow; ++bit)

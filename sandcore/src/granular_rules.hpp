@@ -30,6 +30,8 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace sandcore {
@@ -69,6 +71,14 @@ public:
     /// For the grain at window bit `bit` (as in wakeMask) around a column c: the cells its slide
     /// into c's column crosses at its own level, as window bits around c's column.
     std::uint64_t pathTowardsCentre(int bit) const { return pathsTowardsCentre_[std::size_t(bit)]; }
+    /// For the grain at window bit `bit` (as in wakeMask) around a cell c of its own layer, two or
+    /// three columns away: the paths of its slides that cross c, each cut after c (the cells from
+    /// the grain up to c, as window bits around c). c's emptying can open a slide only when every
+    /// cell of one of them is EMPTY.
+    std::span<const std::uint64_t> pathsThroughCentre(int bit) const {
+        const auto& [first, count] = throughCentreSpans_[std::size_t(bit)];
+        return {throughCentre_.data() + first, count};
+    }
     /// g in cells per step squared, 16.16 fixed point.
     std::uint32_t gravity() const { return gravity_; }
     /// The slope T the thresholds use for the asked angle (after calibration).
@@ -96,6 +106,8 @@ private:
     std::uint32_t gravity_ = 0;
     std::vector<std::uint64_t> wakeMasks_;
     std::array<std::uint64_t, kWindow * kWindow> pathsTowardsCentre_{};
+    std::vector<std::uint64_t> throughCentre_;                           // pathsThroughCentre, all bits
+    std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCentreSpans_{}; // first, count
 };
 
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the

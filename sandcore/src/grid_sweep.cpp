@@ -177,7 +177,17 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
     if (woken & ~kWindowCentre) {
         const std::array<std::uint32_t, 9> empty = emptyAround(grid, x, y, z);
         if (layersAbove == 0) {
+            // A grain two or three columns away gains only through a path across (x, z) that is
+            // EMPTY from it up to (x, z) (the rest of the path is its own business: when a cell of
+            // it empties later, that wakes it).
             woken &= besideEmpty(empty) | kWindowCentre;
+            const std::uint64_t clear = emptyInWindow(empty);
+            for (std::uint64_t far = woken & ~kWindowCentre; far; far &= far - 1) {
+                const int bit = __builtin_ctzll(far);
+                const auto paths = granular_->pathsThroughCentre(bit);
+                if (std::none_of(paths.begin(), paths.end(), [&](std::uint64_t path) { return !(path & ~clear); }))
+                    woken &= ~(std::uint64_t{1} << bit);
+            }
         } else {
             const std::uint64_t clear = emptyInWindow(empty);
             for (std::uint64_t far = woken & ~kWindowCentre; far; far &= far - 1) {
