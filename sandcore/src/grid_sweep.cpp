@@ -98,15 +98,15 @@ constexpr int kGranularWindow = 2 * kGranularReach + 1;
 // The 3x3 cells around the window's centre: a grain there has the emptied cell beside it.
 constexpr std::uint64_t kWindowCentre = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x1c} << 21) | (std::uint64_t{0x1c} << 28);
 
-// The EMPTY cells of layer y within 4 columns of (x, z): row r (z - 4 + r), bit i (x - 4 + i);
-// cells outside the grid count as taken.
-std::array<std::uint32_t, 9> emptyAround(const CellGrid& grid, int x, int y, int z) {
-    constexpr int reach = kGranularReach + 1, span = 2 * reach + 1;
+// The EMPTY cells of layer y within 3 columns of (x, z), as a 7x7 window mask (bit (dz + 3) * 7 +
+// (dx + 3)); cells outside the grid count as taken.
+std::uint64_t emptyInWindow(const CellGrid& grid, int x, int y, int z) {
+    constexpr int reach = kGranularReach;
     const Int3 size = grid.size();
     const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, size.x - 1);
-    std::array<std::uint32_t, span> empty{};
-    const bool inside = x0 == x - reach && x1 == x + reach; // then each row is read without bounds tests
-    for (int r = 0; r < span; ++r) {
+    const bool inside = x0 == x - reach && x1 + 1 < size.x; // then each row is read as 8 cells, no bounds tests
+    std::uint64_t mask = 0;
+    for (int r = 0; r < kGranularWindow; ++r) {
         const int zz = z - reach + r;
         if (zz < 0 || zz >= size.z) continue;
         const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
@@ -114,34 +114,15 @@ std::array<std::uint32_t, 9> emptyAround(const CellGrid& grid, int x, int y, int
         if (inside) {
             const CellValue* left = cells + (x - reach);
             for (int i = 0; i < 8; ++i) bits |= std::uint32_t(left[i] == kEmpty) << i;
-            bits |= std::uint32_t(left[8] == kEmpty) << 8;
+            bits &= (1u << kGranularWindow) - 1;
         } else {
             for (int xx = x0; xx <= x1; ++xx) bits |= std::uint32_t(cells[xx] == kEmpty) << (xx - x + reach);
         }
-        empty[std::size_t(r)] = bits;
-    }
-    return empty;
-}
-
-// Of the 7x7 window (bit (dz + 3) * 7 + (dx + 3)): the cells with an EMPTY cell among their 8
-// neighbours. Only such a grain can slide at all (every path starts beside it).
-std::uint64_t besideEmpty(const std::array<std::uint32_t, 9>& empty) {
-    std::uint64_t mask = 0;
-    for (std::size_t r = 1; r + 1 < empty.size(); ++r) {
-        const std::uint32_t rows = empty[r - 1] | empty[r] | empty[r + 1];
-        const std::uint32_t beside = rows | rows << 1 | rows >> 1; // bit i: an EMPTY cell at i-1..i+1
-        mask |= std::uint64_t((beside >> 1) & ((1u << kGranularWindow) - 1)) << ((r - 1) * kGranularWindow);
+        mask |= std::uint64_t(bits) << (r * kGranularWindow);
     }
     return mask;
 }
 
-// The EMPTY cells of the 7x7 window.
-std::uint64_t emptyInWindow(const std::array<std::uint32_t, 9>& empty) {
-    std::uint64_t mask = 0;
-    for (std::size_t r = 1; r + 1 < empty.size(); ++r)
-        mask |= std::uint64_t((empty[r] >> 1) & ((1u << kGranularWindow) - 1)) << ((r - 1) * kGranularWindow);
-    return mask;
-}
 } // namespace
 
 // Wakes the grains of layer y at the cells of `mask` (GranularRules::wakeMask) around (x, z) that
@@ -175,13 +156,11 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
     }
     std::uint64_t woken = granular_->wakeMask(layersAbove) & grains;
     if (woken & ~kWindowCentre) {
-        const std::array<std::uint32_t, 9> empty = emptyAround(grid, x, y, z);
+        const std::uint64_t clear = emptyInWindow(grid, x, y, z);
         if (layersAbove == 0) {
             // A grain two or three columns away gains only through a path across (x, z) that is
             // EMPTY from it up to (x, z) (the rest of the path is its own business: when a cell of
             // it empties later, that wakes it).
-            woken &= besideEmpty(empty) | kWindowCentre;
-            const std::uint64_t clear = emptyInWindow(empty);
             for (std::uint64_t far = woken & ~kWindowCentre; far; far &= far - 1) {
                 const int bit = __builtin_ctzll(far);
                 const auto paths = granular_->pathsThroughCentre(bit);
@@ -189,7 +168,6 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
                     woken &= ~(std::uint64_t{1} << bit);
             }
         } else {
-            const std::uint64_t clear = emptyInWindow(empty);
             for (std::uint64_t far = woken & ~kWindowCentre; far; far &= far - 1) {
                 const int bit = __builtin_ctzll(far);
                 if (granular_->pathTowardsCentre(bit) & ~clear) woken &= ~(std::uint64_t{1} << bit);
