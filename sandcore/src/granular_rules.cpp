@@ -48,7 +48,12 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
     gravity_ = std::uint32_t(std::lround(double(physics.gravity) * kOne));
     // Steep cones lean towards the grid's axes (the lattice's 45-degree facets are stable there):
     // from about 35 degrees on, thresholds rise towards the diagonals to keep the cone round.
-    const double diagonalStiffening = std::clamp(1.6 * (slope_ - 0.87), 0.0, 0.3);
+    // Shallow cones stand low along the diagonals (about 24 against 26 degrees at 25): there too
+    // thresholds rise towards the diagonals, divided by the mean rise so the cone's mean angle,
+    // and with it the calibration below 30 degrees, stays where it was.
+    const double steepStiffening = std::clamp(1.6 * (slope_ - 0.87), 0.0, 0.3);
+    const double shallowStiffening = std::clamp(0.52 * (0.80 - slope_), 0.0, 0.08);
+    const double diagonalStiffening = steepStiffening + shallowStiffening;
     int n = 0;
     std::array<std::vector<std::uint64_t>, kWindow * kWindow> throughCentreLists;
     for (int dz = -kGranularReach; dz <= kGranularReach; ++dz)
@@ -58,7 +63,8 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             o.dx = dx;
             o.dz = dz;
             const double sin2 = std::sin(2.0 * std::atan2(double(dz), double(dx)));
-            const double threshold = slope_ * (1.0 + diagonalStiffening * sin2 * sin2) * std::hypot(dx, dz);
+            const double threshold =
+                slope_ * (1.0 + diagonalStiffening * sin2 * sin2) / (1.0 + shallowStiffening / 2) * std::hypot(dx, dz);
             o.thresholdQ8 = std::uint32_t(std::lround(threshold * 256.0));
             // The cells of the grain's layer under the straight line to the target column, the
             // target column included, each rounded half away from zero so the path is symmetric
