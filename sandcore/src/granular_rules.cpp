@@ -28,7 +28,7 @@ struct CalibrationPoint {
 };
 constexpr CalibrationPoint kCalibration[] = {
     {18.30, 0.520}, {20.73, 0.580}, {22.60, 0.620}, {24.33, 0.645}, {27.27, 0.750}, {29.17, 0.810},
-    {32.14, 0.870}, {33.65, 0.880}, {35.84, 0.930}, {39.30, 0.975}, {40.40, 0.985}, {46.36, 1.100},
+    {32.14, 0.870}, {33.65, 0.880}, {35.84, 0.930}, {39.30, 0.975}, {40.00, 0.985}, {46.36, 1.100},
 };
 } // namespace
 
@@ -48,8 +48,14 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
     gravity_ = std::uint32_t(std::lround(double(physics.gravity) * kOne));
     // Steep cones lean towards the grid's axes (the lattice's 45-degree facets are stable there):
     // from about 35 degrees on, thresholds rise towards the diagonals to keep the cone round.
-    const double diagonalStiffening = std::clamp(1.6 * (slope_ - 0.87), 0.0, 0.3);
+    // Shallow cones stand low along the diagonals (about 24 against 26 degrees at 25): there too
+    // thresholds rise towards the diagonals, divided by the mean rise so the cone's mean angle,
+    // and with it the calibration below 30 degrees, stays where it was.
+    const double steepStiffening = std::clamp(1.6 * (slope_ - 0.87), 0.0, 0.3);
+    const double shallowStiffening = std::clamp(0.52 * (0.80 - slope_), 0.0, 0.08);
+    const double diagonalStiffening = steepStiffening + shallowStiffening;
     int n = 0;
+    std::array<std::vector<std::uint64_t>, kWindow * kWindow> throughCentreLists;
     for (int dz = -kGranularReach; dz <= kGranularReach; ++dz)
         for (int dx = -kGranularReach; dx <= kGranularReach; ++dx) {
             if (dx == 0 && dz == 0) continue;
@@ -57,20 +63,40 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             o.dx = dx;
             o.dz = dz;
             const double sin2 = std::sin(2.0 * std::atan2(double(dz), double(dx)));
-            const double threshold = slope_ * (1.0 + diagonalStiffening * sin2 * sin2) * std::hypot(dx, dz);
+            const double threshold =
+                slope_ * (1.0 + diagonalStiffening * sin2 * sin2) / (1.0 + shallowStiffening / 2) * std::hypot(dx, dz);
             o.thresholdQ8 = std::uint32_t(std::lround(threshold * 256.0));
             // The cells of the grain's layer under the straight line to the target column, the
             // target column included, each rounded half away from zero so the path is symmetric
             // under every mirror of the grid.
             const int samples = 4 * std::max(std::abs(dx), std::abs(dz));
+            std::vector<std::array<int, 2>> path; // its cells in the order the line meets them
             for (int i = 1; i <= samples; ++i) {
                 const std::array<int, 2> cell{int(std::lround(double(dx) * i / samples)),
                                               int(std::lround(double(dz) * i / samples))};
                 if (cell == std::array<int, 2>{0, 0}) continue;
+                if (std::find(path.begin(), path.end(), cell) == path.end()) path.push_back(cell);
                 o.pathMask |= std::uint64_t{1} << ((cell[1] + kGranularReach) * kWindow + cell[0] + kGranularReach);
+            }
+            // Seen from each cell r of the path two or three columns out (a cell c that empties),
+            // the grain lies at -r: the path up to r, as window bits around r, goes to its list.
+            for (std::size_t k = 0; k < path.size(); ++k) {
+                const auto [rx, rz] = path[k];
+                if (std::max(std::abs(rx), std::abs(rz)) < 2) continue;
+                std::uint64_t prefix = 0;
+                for (std::size_t j = 0; j <= k; ++j)
+                    prefix |= std::uint64_t{1} << ((path[j][1] - rz + kGranularReach) * kWindow + path[j][0] - rx + kGranularReach);
+                throughCentreLists[std::size_t((kGranularReach - rz) * kWindow + kGranularReach - rx)].push_back(prefix);
             }
             maxDrop_ = std::max(maxDrop_, int((o.thresholdQ8 + 255) >> 8));
         }
+    for (std::size_t bit = 0; bit < throughCentreLists.size(); ++bit) {
+        std::vector<std::uint64_t>& list = throughCentreLists[bit];
+        std::sort(list.begin(), list.end());
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+        throughCentreSpans_[bit] = {throughCentre_.size(), list.size()};
+        throughCentre_.insert(throughCentre_.end(), list.begin(), list.end());
+    }
     for (const Offset& o : offsets_) {
         std::uint64_t path = 0;
         for (int bit = 0; bit < kWindow * kWindow; ++bit)
@@ -113,14 +139,23 @@ GranularOutcome GranularRules::visit(CellGrid& grid, GrainStore& grains, std::ui
     if (below >= 0 && grains.fallSpeed[std::size_t(below)] > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
         // so the grain follows at once when the one below moves on (a column flows as one).
-        grains.fallSpeed[id] = grains.fallSpeed[std::size_t(below)];
-        const std::uint32_t progress = grains.fallFraction[id] + grains.fallSpeed[id] + gravity_ / 2;
-        grains.fallFraction[id] = std::uint16_t(std::min<std::uint32_t>(progress, kOne - 1));
+        const std::uint32_t speed = grains.fallSpeed[std::size_t(below)];
+        const auto fraction = std::uint16_t(std::min<std::uint32_t>(grains.fallFraction[id] + speed + gravity_ / 2, kOne - 1));
+        // Nothing changed (it waits, a cell of progress gathered, on a grain held at the same
+        // speed): it may sleep, since the one below wakes it when it changes speed or moves. Not
+        // on the outlet row of the upper grid, whose speeds the transition sets without a visit.
+        if (speed == grains.fallSpeed[id] && fraction == grains.fallFraction[id] && (y > 1 || !bottomIsOutlet))
+            return {GranularOutcome::Riding, {}};
+        grains.fallSpeed[id] = speed;
+        grains.fallFraction[id] = fraction;
         return {GranularOutcome::Waiting, {}};
     }
     if (grains.fallSpeed[id] | grains.fallFraction[id]) { // most visited grains rest already: no write
         grains.fallSpeed[id] = 0;
         grains.fallFraction[id] = 0;
+        GranularOutcome outcome = slide(grid, grains, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+        outcome.stopped = outcome.kind == GranularOutcome::Resting;
+        return outcome;
     }
     return slide(grid, grains, seed, step, stream, x, y, z, from, grain, below == kInvalid);
 }

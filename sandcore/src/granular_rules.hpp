@@ -30,6 +30,8 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace sandcore {
@@ -43,8 +45,11 @@ struct GranularOutcome {
         Resting, ///< nothing can move it: it sleeps until a cell it reads empties
         Waiting, ///< it did not change cells but is in motion (speed or fraction grew): keep it awake
         Moved,   ///< it moved to `to`
+        Riding,  ///< it rides a moving grain and nothing of it changed: it sleeps until the one below
+                 ///< changes speed or leaves (both wake it), so a held column is not visited every step
     } kind = Resting;
     Int3 to{};   ///< the cell it moved to (Moved only)
+    bool stopped = false; ///< Resting only: it was in motion and stopped, so whoever rides it must look again
 };
 
 /// The tables the granular rules need, computed once from PhysicsSettings.
@@ -66,6 +71,14 @@ public:
     /// For the grain at window bit `bit` (as in wakeMask) around a column c: the cells its slide
     /// into c's column crosses at its own level, as window bits around c's column.
     std::uint64_t pathTowardsCentre(int bit) const { return pathsTowardsCentre_[std::size_t(bit)]; }
+    /// For the grain at window bit `bit` (as in wakeMask) around a cell c of its own layer, two or
+    /// three columns away: the paths of its slides that cross c, each cut after c (the cells from
+    /// the grain up to c, as window bits around c). c's emptying can open a slide only when every
+    /// cell of one of them is EMPTY.
+    std::span<const std::uint64_t> pathsThroughCentre(int bit) const {
+        const auto& [first, count] = throughCentreSpans_[std::size_t(bit)];
+        return {throughCentre_.data() + first, count};
+    }
     /// g in cells per step squared, 16.16 fixed point.
     std::uint32_t gravity() const { return gravity_; }
     /// The slope T the thresholds use for the asked angle (after calibration).
@@ -93,6 +106,8 @@ private:
     std::uint32_t gravity_ = 0;
     std::vector<std::uint64_t> wakeMasks_;
     std::array<std::uint64_t, kWindow * kWindow> pathsTowardsCentre_{};
+    std::vector<std::uint64_t> throughCentre_;                           // pathsThroughCentre, all bits
+    std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCentreSpans_{}; // first, count
 };
 
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the

@@ -98,15 +98,15 @@ constexpr int kGranularWindow = 2 * kGranularReach + 1;
 // The 3x3 cells around the window's centre: a grain there has the emptied cell beside it.
 constexpr std::uint64_t kWindowCentre = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x1c} << 21) | (std::uint64_t{0x1c} << 28);
 
-// The EMPTY cells of layer y within 4 columns of (x, z): row r (z - 4 + r), bit i (x - 4 + i);
-// cells outside the grid count as taken.
-std::array<std::uint32_t, 9> emptyAround(const CellGrid& grid, int x, int y, int z) {
-    constexpr int reach = kGranularReach + 1, span = 2 * reach + 1;
+// The EMPTY cells of layer y within 3 columns of (x, z), as a 7x7 window mask (bit (dz + 3) * 7 +
+// (dx + 3)); cells outside the grid count as taken.
+std::uint64_t emptyInWindow(const CellGrid& grid, int x, int y, int z) {
+    constexpr int reach = kGranularReach;
     const Int3 size = grid.size();
     const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, size.x - 1);
-    std::array<std::uint32_t, span> empty{};
-    const bool inside = x0 == x - reach && x1 == x + reach; // then each row is read without bounds tests
-    for (int r = 0; r < span; ++r) {
+    const bool inside = x0 == x - reach && x1 + 1 < size.x; // then each row is read as 8 cells, no bounds tests
+    std::uint64_t mask = 0;
+    for (int r = 0; r < kGranularWindow; ++r) {
         const int zz = z - reach + r;
         if (zz < 0 || zz >= size.z) continue;
         const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
@@ -114,34 +114,15 @@ std::array<std::uint32_t, 9> emptyAround(const CellGrid& grid, int x, int y, int
         if (inside) {
             const CellValue* left = cells + (x - reach);
             for (int i = 0; i < 8; ++i) bits |= std::uint32_t(left[i] == kEmpty) << i;
-            bits |= std::uint32_t(left[8] == kEmpty) << 8;
+            bits &= (1u << kGranularWindow) - 1;
         } else {
             for (int xx = x0; xx <= x1; ++xx) bits |= std::uint32_t(cells[xx] == kEmpty) << (xx - x + reach);
         }
-        empty[std::size_t(r)] = bits;
-    }
-    return empty;
-}
-
-// Of the 7x7 window (bit (dz + 3) * 7 + (dx + 3)): the cells with an EMPTY cell among their 8
-// neighbours. Only such a grain can slide at all (every path starts beside it).
-std::uint64_t besideEmpty(const std::array<std::uint32_t, 9>& empty) {
-    std::uint64_t mask = 0;
-    for (std::size_t r = 1; r + 1 < empty.size(); ++r) {
-        const std::uint32_t rows = empty[r - 1] | empty[r] | empty[r + 1];
-        const std::uint32_t beside = rows | rows << 1 | rows >> 1; // bit i: an EMPTY cell at i-1..i+1
-        mask |= std::uint64_t((beside >> 1) & ((1u << kGranularWindow) - 1)) << ((r - 1) * kGranularWindow);
+        mask |= std::uint64_t(bits) << (r * kGranularWindow);
     }
     return mask;
 }
 
-// The EMPTY cells of the 7x7 window.
-std::uint64_t emptyInWindow(const std::array<std::uint32_t, 9>& empty) {
-    std::uint64_t mask = 0;
-    for (std::size_t r = 1; r + 1 < empty.size(); ++r)
-        mask |= std::uint64_t((empty[r] >> 1) & ((1u << kGranularWindow) - 1)) << ((r - 1) * kGranularWindow);
-    return mask;
-}
 } // namespace
 
 // Wakes the grains of layer y at the cells of `mask` (GranularRules::wakeMask) around (x, z) that
@@ -175,11 +156,18 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
     }
     std::uint64_t woken = granular_->wakeMask(layersAbove) & grains;
     if (woken & ~kWindowCentre) {
-        const std::array<std::uint32_t, 9> empty = emptyAround(grid, x, y, z);
+        const std::uint64_t clear = emptyInWindow(grid, x, y, z);
         if (layersAbove == 0) {
-            woken &= besideEmpty(empty) | kWindowCentre;
+            // A grain two or three columns away gains only through a path across (x, z) that is
+            // EMPTY from it up to (x, z) (the rest of the path is its own business: when a cell of
+            // it empties later, that wakes it).
+            for (std::uint64_t far = woken & ~kWindowCentre; far; far &= far - 1) {
+                const int bit = __builtin_ctzll(far);
+                const auto paths = granular_->pathsThroughCentre(bit);
+                if (std::none_of(paths.begin(), paths.end(), [&](std::uint64_t path) { return !(path & ~clear); }))
+                    woken &= ~(std::uint64_t{1} << bit);
+            }
         } else {
-            const std::uint64_t clear = emptyInWindow(empty);
             for (std::uint64_t far = woken & ~kWindowCentre; far; far &= far - 1) {
                 const int bit = __builtin_ctzll(far);
                 if (granular_->pathTowardsCentre(bit) & ~clear) woken &= ~(std::uint64_t{1} << bit);
@@ -369,8 +357,8 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
     }
     const GranularOutcome outcome = granular_->visit(context.grid, context.grains, context.seed, context.step,
                                                      std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
-    if (outcome.kind == GranularOutcome::Waiting) {
-        wakeAt(x, y, z); // in motion: visited again next step
+    if (outcome.kind == GranularOutcome::Waiting || outcome.stopped) {
+        if (outcome.kind == GranularOutcome::Waiting) wakeAt(x, y, z); // in motion: visited again next step
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
         // speed changed without a cell emptying, so the grain above must look again.
         if (y + 1 < size_.y && context.grid.at(x, y + 1, z) >= 0) wakeAt(x, y + 1, z);
@@ -386,6 +374,52 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
     return true;
 }
 
+// The granular strip loop. Granular moves also wake cells of their own layer (the paths), and a
+// grain visited later sees the cells emptied by one visited earlier, so a fixed order lets grains
+// run one way more easily than the other and cones lean (PH2). The order therefore turns with the
+// step: x ascending or descending by bit 0 of the step number, z by bit 1, so over four steps every
+// mirror of the grid is swept alike. With sleeping, each bit is taken as it is reached: a bit set
+// ahead of the cell being visited is visited in this step, one set behind it in the next, as a
+// full sweep in the same order would see the change.
+SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd) {
+    SweepResult totals;
+    const bool xDown = (context.step & 1) != 0, zDown = (context.step & 2) != 0;
+    auto visit = [&](int x, int z) {
+        ++totals.visited;
+        totals.moves += visitGranular(context, log, x, y, z) ? 1 : 0;
+    };
+    for (int i = zBegin; i < zEnd; ++i) {
+        const int z = zDown ? zBegin + zEnd - 1 - i : i;
+        const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
+        if (context.sleeping && !rowAwake_[row]) continue;
+        rowAwake_[row] = 0;
+        RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+        for (int j = 0; j < rowWords_; ++j) {
+            const int w = xDown ? rowWords_ - 1 - j : j;
+            if (!context.sleeping) { // every cell of the row, as if awake
+                words[w].awake = 0;
+                for (std::uint64_t bits = wholeWord(w); bits;) {
+                    const int bit = xDown ? 63 - __builtin_clzll(bits) : __builtin_ctzll(bits);
+                    bits &= ~(std::uint64_t{1} << bit);
+                    visit(w * 64 + bit, z);
+                }
+                continue;
+            }
+            std::uint64_t ahead = ~std::uint64_t{0};
+            while (const std::uint64_t bits = words[w].awake & ahead) {
+                const int bit = xDown ? 63 - __builtin_clzll(bits) : __builtin_ctzll(bits);
+                words[w].awake &= ~(std::uint64_t{1} << bit);
+                if (xDown)
+                    ahead = (std::uint64_t{1} << bit) - 1;
+                else
+                    ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
+                visit(w * 64 + bit, z);
+            }
+        }
+    }
+    return totals;
+}
+
 // The strip loop, instantiated once per rule set: the classic one is main's loop exactly (each
 // word's awake bits taken at once), with no test of the rule set per word or per grain.
 template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip) {
@@ -393,6 +427,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
     const Int3 size = size_;
     const int zEnd = std::min((strip + 1) * kStripRows, size.z);
     StripLog& log = logs_[std::size_t(strip)];
+    if constexpr (Granular) return sweepGranularStrip(context, log, y, strip * kStripRows, zEnd);
     for (int z = strip * kStripRows; z < zEnd; ++z) {
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size.z) + std::uint32_t(z);
         if (context.sleeping && !rowAwake_[row]) continue;
@@ -401,32 +436,13 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
         // bits first. Without sleeping, every cell of the row is visited as if awake.
         RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
         for (int w = 0; w < rowWords_; ++w) {
-            if constexpr (Granular) {
-                if (context.sleeping) {
-                    // Granular moves also wake cells of their own layer (the paths): a bit set ahead
-                    // of the cell being visited is visited in this step, one set behind it in the
-                    // next, as a full sweep would see the change. So each bit is taken as it is reached.
-                    std::uint64_t ahead = ~std::uint64_t{0};
-                    while (const std::uint64_t bits = words[w].awake & ahead) {
-                        const int bit = __builtin_ctzll(bits);
-                        words[w].awake &= ~(std::uint64_t{1} << bit);
-                        ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
-                        ++totals.visited;
-                        totals.moves += visitGranular(context, log, w * 64 + bit, y, z) ? 1 : 0;
-                    }
-                    continue;
-                }
-            }
             std::uint64_t bits = context.sleeping ? words[w].awake : wholeWord(w);
             words[w].awake = 0;
             while (bits) {
                 const int x = w * 64 + __builtin_ctzll(bits);
                 bits &= bits - 1;
                 ++totals.visited;
-                if constexpr (Granular)
-                    totals.moves += visitGranular(context, log, x, y, z) ? 1 : 0;
-                else
-                    totals.moves += visitCell(context, log, x, y, z) ? 1 : 0;
+                totals.moves += visitCell(context, log, x, y, z) ? 1 : 0;
             }
         }
     }

@@ -137,6 +137,7 @@ private:
     // classic rules; true when a grain moved
     bool visitCell(const SweepContext& context, StripLog& log, int x, int y, int z);
     bool visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z);
+    SweepResult sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd);
     void clearRow(std::uint32_t row);
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);

@@ -99,8 +99,9 @@ TEST_CASE("granular: the upper bulb empties to the last grain, since grains on t
     // A grain lying on the vessel needs only a free cell one layer down (granular_rules.hpp). With
     // the sand's thresholds on the glass too, the last grains of this drain (2 for seed 1) stayed
     // in the upper grid. (Some seeds pile this small lower bulb up into the neck either way, as
-    // classic does: 5 grains stay with its rules.)
-    for (std::uint64_t seed : {1u, 3u, 5u}) {
+    // classic does: 5 grains stay with its rules. Since the granular sweep turns its order with
+    // the step, seeds 1, 2, 5 and 7 do so: their lower pile reaches the neck row.)
+    for (std::uint64_t seed : {3u, 4u, 6u}) {
         Scene scene = granularHourglass(seed, 32, 2.5f, 0.02f);
         const std::int64_t grains = scene.grainCount();
         REQUIRE(grains > 1000);
@@ -127,11 +128,11 @@ TEST_CASE("granular: recorded state hashes (classic's stay in determinism_test.c
     // say why in the commit. Classic's recorded hashes live in test_determinism.cpp.
     Scene hourglass = granularHourglass(7);
     for (int i = 0; i < 300; ++i) hourglass.step();
-    CHECK(hourglass.stateHash() == 0x0981fdd0453a4f7cull);
+    CHECK(hourglass.stateHash() == 0x55dac09f4fcff63cull);
     Scene sculpture = granularSculpture(7);
     sculpture.setThreads(2);
     for (int i = 0; i < 100; ++i) sculpture.step();
-    CHECK(sculpture.stateHash() == 0x13e43606e432445aull);
+    CHECK(sculpture.stateHash() == 0x5e90a64336fa5b95ull);
 }
 
 TEST_CASE("granular and classic differ, and switching the level mid-run takes effect") {
