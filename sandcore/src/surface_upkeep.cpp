@@ -19,7 +19,7 @@ constexpr std::uint8_t kPlaceListed = 1, kInnerListed = 2, kGradientListed = 4;
 // A grain's gradient is kept as its sums (gx, gy, gz), each in -9..9, packed in 16 bits: 2 bytes
 // per grain instead of a 12-byte normal, and a table gives the normal.
 std::uint16_t gradientKey(int gx, int gy, int gz) { return std::uint16_t((gx + 9) + 19 * (gy + 9) + 361 * (gz + 9)); }
-constexpr std::size_t kGradientKeys = 19 * 19 * 19;
+constexpr std::size_t kGradientKeys = SurfaceUpkeep::kGradientKeys;
 
 class GradientTable {
 public:
@@ -58,6 +58,8 @@ bool sameVec(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && 
 constexpr std::size_t kPrefetchAhead = 12;
 
 } // namespace
+
+Vec3 SurfaceUpkeep::normalOfGradientKey(std::uint16_t key) { return gradientTable()[key]; }
 
 Vec3 SurfaceUpkeep::gradientNormal(std::uint32_t grain) const {
     if (!trackGradient_) return {0.0f, 1.0f, 0.0f};
@@ -106,6 +108,7 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
     updateNumber_ = 0;
     changedCells_.clear();
     changedPlace_.clear();
+    movedPlaces_.clear();
     changedInner_.clear();
     changedGradient_.clear();
     changedColumns_.clear();
@@ -119,6 +122,7 @@ void SurfaceUpkeep::clearChanges() {
     }
     for (const ColumnRef& ref : changedColumns_) columnListed_[index(ref.level)][ref.column] = 0;
     changedColumns_.clear();
+    movedPlaces_.clear();
     rebuilt_ = false;
 }
 
@@ -267,27 +271,31 @@ void SurfaceUpkeep::update(const Scene& scene) {
     origins_ = {scene.gridOrigin(GridLevel::Lower), scene.gridOrigin(GridLevel::Upper)};
     // First the net changes: after this the bits hold the grids' occupancy again.
     const std::span<const std::uint32_t> moved = scene.movedGrains();
-    placed_.clear();
+    const std::size_t firstPlace = movedPlaces_.size();
     for (std::size_t i = 0; i < moved.size(); ++i) {
         if (i + kPrefetchAhead < moved.size()) {
             const std::uint32_t ahead = moved[i + kPrefetchAhead];
             prefetch(&grains.level[ahead]);
             prefetch(&grains.cell[ahead]);
             prefetch(&grains.cameFrom[ahead]);
+            prefetch(&grains.movedAtStep[ahead]);
             prefetch(&grains_[ahead]);
         }
         const std::uint32_t id = moved[i];
         list(id, kPlaceListed, changedPlace_);
         syncCellsOf(scene, id);
-        placed_.push_back({id, grains.cell[id], grains.level[id]});
+        movedPlaces_.push_back({id, grains.cell[id], grains.level[id] == GridLevel::Upper ? 1u : 0u, grains.cameFrom[id],
+                                std::uint32_t(grains.movedAtStep[id])});
     }
     // A moved grain's flag and normal are about its new cell: look again at each. Grains that
     // stayed change only next to a net change, in its 6 world neighbours (flag) or its 26
     // neighbours in its grid (normal); both read only the bits, final by now.
     ++updateNumber_;
-    for (const Placed& grain : placed_) {
-        refreshFlag(scene, grain.level, grain.cell, grain.grain);
-        if (trackGradient_) refreshGradient(scene, grain.level, grain.cell, grain.grain);
+    for (std::size_t i = firstPlace; i < movedPlaces_.size(); ++i) {
+        const MovedPlace& grain = movedPlaces_[i];
+        const GridLevel level = grain.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+        refreshFlag(scene, level, grain.cell, grain.grain);
+        if (trackGradient_) refreshGradient(scene, level, grain.cell, grain.grain);
     }
     for (const auto& [level, cell] : changedCells_) {
         refreshInnerAround(scene, level, cell);
