@@ -144,6 +144,15 @@ void SurfaceUpkeep::syncCell(const Scene& scene, GridLevel level, std::uint32_t 
     changedCells_.emplace_back(level, cell);
 }
 
+// The cell a moved grain is in: it holds a grain now, no need to read the grid (a cache miss).
+void SurfaceUpkeep::syncFilledCell(GridLevel level, std::uint32_t cell) {
+    CellBits& grains = grainBits_[index(level)];
+    if (grains.test(cell)) return;
+    grains.set(cell, true);
+    hideBits_[index(level)].set(cell, true);
+    changedCells_.emplace_back(level, cell);
+}
+
 // A world cell, in every grid that holds it (the shared row is in both).
 void SurfaceUpkeep::syncWorldCell(const Scene& scene, Int3 world) {
     for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
@@ -163,7 +172,7 @@ void SurfaceUpkeep::syncCellsOf(const Scene& scene, std::uint32_t grain) {
     const GridLevel level = grains.level[grain];
     const std::uint32_t cell = grains.cell[grain];
     const MoveCode from = grains.cameFrom[grain];
-    syncCell(scene, level, cell);
+    syncFilledCell(level, cell);
     const GridShape& shape = shapes_[index(level)];
     const bool sharedRow = level == GridLevel::Lower && cell >= shape.layer * std::uint32_t(shape.size.y - 1);
     if (!sharedRow && from != kNoMove) {
@@ -242,6 +251,7 @@ void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std:
             const int x = world.x + d.x - origin.x, y = world.y + d.y - origin.y, z = world.z + d.z - origin.z;
             if (!grid.contains(x, y, z)) continue;
             const std::uint32_t n = grid.index(x, y, z);
+            if (!grainBits_[index(other)].test(n)) continue; // the bits hold the occupancy: no grid read for an empty cell
             if (grid[n] >= 0) refreshFlag(scene, other, n, std::uint32_t(grid[n]));
         }
 }
@@ -249,12 +259,14 @@ void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std:
 // gradientNormal reads the 26 neighbours within the grain's own grid.
 void SurfaceUpkeep::refreshGradientAround(const Scene& scene, GridLevel level, std::uint32_t cell) {
     const CellGrid& grid = scene.grid(level);
+    const CellBits& grains = grainBits_[index(level)];
     const Int3 c = shapes_[index(level)].coordinate(cell);
     for (int y = c.y - 1; y <= c.y + 1; ++y)
         for (int z = c.z - 1; z <= c.z + 1; ++z)
             for (int x = c.x - 1; x <= c.x + 1; ++x) {
                 if (!grid.contains(x, y, z)) continue;
                 const std::uint32_t n = grid.index(x, y, z);
+                if (!grains.test(n)) continue;
                 if (grid[n] >= 0) refreshGradient(scene, level, n, std::uint32_t(grid[n]));
             }
 }
@@ -280,6 +292,17 @@ void SurfaceUpkeep::update(const Scene& scene) {
             prefetch(&grains.cameFrom[ahead]);
             prefetch(&grains.movedAtStep[ahead]);
             prefetch(&grains_[ahead]);
+        }
+        // Half as far ahead, the grain's fields are in the cache: fetch the cell it left, which
+        // syncCell reads (whether another grain filled it).
+        if (i + kPrefetchAhead / 2 < moved.size()) {
+            const std::uint32_t ahead = moved[i + kPrefetchAhead / 2];
+            const MoveCode from = grains.cameFrom[ahead];
+            const GridShape& shape = shapes_[index(grains.level[ahead])];
+            const std::int64_t left = std::int64_t(grains.cell[ahead]) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
+                                      std::int64_t(shape.layer) * moveDy(from);
+            const CellGrid& grid = scene.grid(grains.level[ahead]);
+            if (from != kNoMove && left >= 0 && left < std::int64_t(grid.cellCount())) prefetch(grid.cells().data() + left);
         }
         const std::uint32_t id = moved[i];
         list(id, kPlaceListed, changedPlace_);

@@ -99,6 +99,7 @@ private:
     static std::size_t index(GridLevel level) { return level == GridLevel::Upper ? 1 : 0; }
     bool firstLook(GrainSurface& grain, std::uint32_t what) const;
     void syncCell(const Scene& scene, GridLevel level, std::uint32_t cell);
+    void syncFilledCell(GridLevel level, std::uint32_t cell);
     void syncWorldCell(const Scene& scene, Int3 world);
     void syncCellsOf(const Scene& scene, std::uint32_t grain);
     bool innerAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
