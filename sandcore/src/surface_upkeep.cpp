@@ -19,7 +19,7 @@ constexpr std::uint8_t kPlaceListed = 1, kInnerListed = 2, kGradientListed = 4;
 // A grain's gradient is kept as its sums (gx, gy, gz), each in -9..9, packed in 16 bits: 2 bytes
 // per grain instead of a 12-byte normal, and a table gives the normal.
 std::uint16_t gradientKey(int gx, int gy, int gz) { return std::uint16_t((gx + 9) + 19 * (gy + 9) + 361 * (gz + 9)); }
-constexpr std::size_t kGradientKeys = 19 * 19 * 19;
+constexpr std::size_t kGradientKeys = SurfaceUpkeep::kGradientKeys;
 
 class GradientTable {
 public:
@@ -58,6 +58,8 @@ bool sameVec(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && 
 constexpr std::size_t kPrefetchAhead = 12;
 
 } // namespace
+
+Vec3 SurfaceUpkeep::normalOfGradientKey(std::uint16_t key) { return gradientTable()[key]; }
 
 Vec3 SurfaceUpkeep::gradientNormal(std::uint32_t grain) const {
     if (!trackGradient_) return {0.0f, 1.0f, 0.0f};
@@ -106,6 +108,7 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
     updateNumber_ = 0;
     changedCells_.clear();
     changedPlace_.clear();
+    movedPlaces_.clear();
     changedInner_.clear();
     changedGradient_.clear();
     changedColumns_.clear();
@@ -119,6 +122,7 @@ void SurfaceUpkeep::clearChanges() {
     }
     for (const ColumnRef& ref : changedColumns_) columnListed_[index(ref.level)][ref.column] = 0;
     changedColumns_.clear();
+    movedPlaces_.clear();
     rebuilt_ = false;
 }
 
@@ -137,6 +141,15 @@ void SurfaceUpkeep::syncCell(const Scene& scene, GridLevel level, std::uint32_t 
     if (grains.test(cell) == (value >= 0)) return;
     grains.set(cell, value >= 0);
     hideBits_[index(level)].set(cell, value != kEmpty);
+    changedCells_.emplace_back(level, cell);
+}
+
+// The cell a moved grain is in: it holds a grain now, no need to read the grid (a cache miss).
+void SurfaceUpkeep::syncFilledCell(GridLevel level, std::uint32_t cell) {
+    CellBits& grains = grainBits_[index(level)];
+    if (grains.test(cell)) return;
+    grains.set(cell, true);
+    hideBits_[index(level)].set(cell, true);
     changedCells_.emplace_back(level, cell);
 }
 
@@ -159,7 +172,7 @@ void SurfaceUpkeep::syncCellsOf(const Scene& scene, std::uint32_t grain) {
     const GridLevel level = grains.level[grain];
     const std::uint32_t cell = grains.cell[grain];
     const MoveCode from = grains.cameFrom[grain];
-    syncCell(scene, level, cell);
+    syncFilledCell(level, cell);
     const GridShape& shape = shapes_[index(level)];
     const bool sharedRow = level == GridLevel::Lower && cell >= shape.layer * std::uint32_t(shape.size.y - 1);
     if (!sharedRow && from != kNoMove) {
@@ -231,6 +244,13 @@ void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std:
     const Int3 o = origins_[index(level)];
     const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
     static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    // First the grains, their records fetched together; then each looked at, in the same order.
+    struct Found {
+        GridLevel level;
+        std::uint32_t cell, grain;
+    };
+    std::array<Found, 14> found;
+    std::size_t count = 0;
     for (const Int3& d : kAround)
         for (GridLevel other : {GridLevel::Lower, GridLevel::Upper}) {
             const CellGrid& grid = scene.grid(other);
@@ -238,21 +258,34 @@ void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std:
             const int x = world.x + d.x - origin.x, y = world.y + d.y - origin.y, z = world.z + d.z - origin.z;
             if (!grid.contains(x, y, z)) continue;
             const std::uint32_t n = grid.index(x, y, z);
-            if (grid[n] >= 0) refreshFlag(scene, other, n, std::uint32_t(grid[n]));
+            if (!grainBits_[index(other)].test(n)) continue; // the bits hold the occupancy: no grid read for an empty cell
+            const CellValue value = grid[n];
+            if (value < 0) continue;
+            prefetch(&grains_[std::uint32_t(value)]);
+            found[count++] = {other, n, std::uint32_t(value)};
         }
+    for (std::size_t i = 0; i < count; ++i) refreshFlag(scene, found[i].level, found[i].cell, found[i].grain);
 }
 
 // gradientNormal reads the 26 neighbours within the grain's own grid.
 void SurfaceUpkeep::refreshGradientAround(const Scene& scene, GridLevel level, std::uint32_t cell) {
     const CellGrid& grid = scene.grid(level);
+    const CellBits& grains = grainBits_[index(level)];
     const Int3 c = shapes_[index(level)].coordinate(cell);
+    std::array<std::pair<std::uint32_t, std::uint32_t>, 27> found; // (cell, grain), records fetched together
+    std::size_t count = 0;
     for (int y = c.y - 1; y <= c.y + 1; ++y)
         for (int z = c.z - 1; z <= c.z + 1; ++z)
             for (int x = c.x - 1; x <= c.x + 1; ++x) {
                 if (!grid.contains(x, y, z)) continue;
                 const std::uint32_t n = grid.index(x, y, z);
-                if (grid[n] >= 0) refreshGradient(scene, level, n, std::uint32_t(grid[n]));
+                if (!grains.test(n)) continue;
+                const CellValue value = grid[n];
+                if (value < 0) continue;
+                prefetch(&grains_[std::uint32_t(value)]);
+                found[count++] = {n, std::uint32_t(value)};
             }
+    for (std::size_t i = 0; i < count; ++i) refreshGradient(scene, level, found[i].first, found[i].second);
 }
 
 void SurfaceUpkeep::update(const Scene& scene) {
@@ -267,7 +300,9 @@ void SurfaceUpkeep::update(const Scene& scene) {
     origins_ = {scene.gridOrigin(GridLevel::Lower), scene.gridOrigin(GridLevel::Upper)};
     // First the net changes: after this the bits hold the grids' occupancy again.
     const std::span<const std::uint32_t> moved = scene.movedGrains();
-    placed_.clear();
+    const std::size_t firstPlace = movedPlaces_.size();
+    // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
+    const auto step = std::uint32_t(scene.counters().stepsDone);
     for (std::size_t i = 0; i < moved.size(); ++i) {
         if (i + kPrefetchAhead < moved.size()) {
             const std::uint32_t ahead = moved[i + kPrefetchAhead];
@@ -276,18 +311,31 @@ void SurfaceUpkeep::update(const Scene& scene) {
             prefetch(&grains.cameFrom[ahead]);
             prefetch(&grains_[ahead]);
         }
+        // Half as far ahead, the grain's fields are in the cache: fetch the cell it left, which
+        // syncCell reads (whether another grain filled it).
+        if (i + kPrefetchAhead / 2 < moved.size()) {
+            const std::uint32_t ahead = moved[i + kPrefetchAhead / 2];
+            const MoveCode from = grains.cameFrom[ahead];
+            const GridShape& shape = shapes_[index(grains.level[ahead])];
+            const std::int64_t left = std::int64_t(grains.cell[ahead]) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
+                                      std::int64_t(shape.layer) * moveDy(from);
+            const CellGrid& grid = scene.grid(grains.level[ahead]);
+            if (from != kNoMove && left >= 0 && left < std::int64_t(grid.cellCount())) prefetch(grid.cells().data() + left);
+        }
         const std::uint32_t id = moved[i];
         list(id, kPlaceListed, changedPlace_);
         syncCellsOf(scene, id);
-        placed_.push_back({id, grains.cell[id], grains.level[id]});
+        movedPlaces_.push_back({id, grains.cell[id], grains.level[id] == GridLevel::Upper ? 1u : 0u, grains.cameFrom[id], step});
     }
     // A moved grain's flag and normal are about its new cell: look again at each. Grains that
     // stayed change only next to a net change, in its 6 world neighbours (flag) or its 26
     // neighbours in its grid (normal); both read only the bits, final by now.
     ++updateNumber_;
-    for (const Placed& grain : placed_) {
-        refreshFlag(scene, grain.level, grain.cell, grain.grain);
-        if (trackGradient_) refreshGradient(scene, grain.level, grain.cell, grain.grain);
+    for (std::size_t i = firstPlace; i < movedPlaces_.size(); ++i) {
+        const MovedPlace& grain = movedPlaces_[i];
+        const GridLevel level = grain.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+        refreshFlag(scene, level, grain.cell, grain.grain);
+        if (trackGradient_) refreshGradient(scene, level, grain.cell, grain.grain);
     }
     for (const auto& [level, cell] : changedCells_) {
         refreshInnerAround(scene, level, cell);

@@ -14,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <vector>
 
@@ -205,4 +206,43 @@ TEST_CASE("V8: the GPU path draws the same picture as the full CPU upload, every
                     different += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
                 CHECK(different == 0);
             }
+}
+
+namespace {
+
+// Draws `frames` frames with one step before each (only changes uploaded) and captures the last.
+RgbImage pictureAfterSteppedFrames(GrainPath path, int frames, bool* persistent) {
+    RenderSettings render;
+    render.lighting = true; // by the occupancy gradient: the per-grain normals change too
+    render.innerGrains = false; // the visible list changes
+    render.grainPath = path;
+    std::optional<Application> app = testing::openApplication(hourglassOptions(24, 40, render), "stepped frames");
+    REQUIRE(app);
+    app->renderFrame(0.0);
+    for (int frame = 0; frame < frames; ++frame) {
+        app->runSteps(1);
+        app->renderFrame(0.0);
+        if (path == GrainPath::GpuInterpolated) REQUIRE(!app->renderer().stats().fullUpload);
+    }
+    if (persistent != nullptr) *persistent = app->renderer().gpuStore().persistent();
+    return app->captureFrame();
+}
+
+} // namespace
+
+TEST_CASE("V8: after frames that upload only changes, both grain paths draw the same picture, mapped buffers or not") {
+    if (!testing::requireDisplay("same picture after changes")) return;
+    const RgbImage reference = pictureAfterSteppedFrames(GrainPath::CpuFullUpload, 12, nullptr);
+    for (bool mapping : {true, false}) {
+        CAPTURE(mapping);
+        if (!mapping) setenv("SANDGLASS_GL_BUFFER_STORAGE", "0", 1);
+        bool persistent = false;
+        const RgbImage gpu = pictureAfterSteppedFrames(GrainPath::GpuInterpolated, 12, &persistent);
+        unsetenv("SANDGLASS_GL_BUFFER_STORAGE");
+        if (!mapping) CHECK(!persistent); // the runs path really ran
+        REQUIRE(gpu.pixels.size() == reference.pixels.size());
+        std::size_t different = 0;
+        for (std::size_t i = 0; i < gpu.pixels.size(); ++i) different += gpu.pixels[i] != reference.pixels[i] ? 1 : 0;
+        CHECK(different == 0);
+    }
 }

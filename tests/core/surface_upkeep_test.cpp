@@ -110,6 +110,18 @@ int runAndCheck(Scene& scene, int steps) {
         for (std::uint32_t id = 0; id < flagsBefore.size(); ++id)
             REQUIRE((flagsBefore[id] != upkeep.isInner(id)) == (changed.count(id) > 0));
         CHECK(upkeep.movedGrains().size() == scene.movedGrains().size());
+        // The places listed for the renderer are the moved grains' records, in the step's order.
+        REQUIRE(upkeep.movedPlaces().size() == scene.movedGrains().size());
+        const GrainStore& grains = scene.grains();
+        for (std::size_t m = 0; m < upkeep.movedPlaces().size(); ++m) {
+            const MovedPlace& place = upkeep.movedPlaces()[m];
+            const std::uint32_t id = scene.movedGrains()[m];
+            REQUIRE(place.grain == id);
+            REQUIRE(place.cell == grains.cell[id]);
+            REQUIRE(place.level == (grains.level[id] == GridLevel::Upper ? 1u : 0u));
+            REQUIRE(place.cameFrom == grains.cameFrom[id]);
+            REQUIRE(place.movedStep == std::uint32_t(grains.movedAtStep[id]));
+        }
     }
     return moves;
 }

@@ -28,8 +28,22 @@ struct ColumnRef {
     std::uint32_t column = 0;           ///< x + sizeX * z
 };
 
+/// Where a moved grain is after an update: what the renderer's copy of its place needs, gathered
+/// while the upkeep reads the grain anyway, so a consumer writes it without reading the grain store.
+struct MovedPlace {
+    std::uint32_t grain = 0;    ///< grain id
+    std::uint32_t cell = 0;     ///< cell index in its grid
+    std::uint32_t level = 0;    ///< 0 lower grid, 1 upper grid
+    MoveCode cameFrom = 0;      ///< its last move
+    std::uint32_t movedStep = 0; ///< low 32 bits of the step of that move
+};
+
 class SurfaceUpkeep {
 public:
+    /// How many gradient keys there are (gradientKey(grain) is below this).
+    static constexpr std::size_t kGradientKeys = 19 * 19 * 19;
+    /// The normal a gradient key stands for (gradientNormal's floats).
+    static Vec3 normalOfGradientKey(std::uint16_t key);
     /// Also keep every grain's occupancy-gradient normal (R12's other method; costs a 3x3x3
     /// look at each moved grain and around each changed cell). Takes effect at the next rebuild.
     void setTrackGradientNormals(bool track) { trackGradient_ = track; }
@@ -51,6 +65,8 @@ public:
     std::span<const Vec3> columnNormals(GridLevel level) const { return normals_[index(level)]; }
     /// A grain's gradientNormal, by grain id (when tracked; else (0, 1, 0)).
     Vec3 gradientNormal(std::uint32_t grain) const;
+    /// A grain's occupancy-gradient sums as one key (when tracked): normalOfGradientKey gives its normal.
+    std::uint16_t gradientKeyOf(std::uint32_t grain) const { return grains_[grain].gradient; }
 
     // What changed since the last clearChanges(), for a consumer that mirrors these (the
     // renderer's GPU buffers); several steps between two frames add up, each entry listed once.
@@ -58,6 +74,9 @@ public:
     bool rebuilt() const { return rebuilt_; }
     /// Grains that changed cells (Scene::movedGrains of every update).
     std::span<const std::uint32_t> movedGrains() const { return changedPlace_; }
+    /// The places of the moved grains, in update order: a grain moved by several updates is
+    /// listed once per update, the last entry its place now.
+    std::span<const MovedPlace> movedPlaces() const { return movedPlaces_; }
     /// Grains whose inner flag changed.
     std::span<const std::uint32_t> changedInnerFlags() const { return changedInner_; }
     /// Grains whose gradient normal changed (when tracked).
@@ -77,14 +96,10 @@ private:
         std::uint8_t inner = 0;     // 1 for an inner grain
         std::uint8_t listed = 0;    // bits of the change lists naming it
     };
-    // A moved grain where it is now, kept from the first pass for the second.
-    struct Placed {
-        std::uint32_t grain, cell;
-        GridLevel level;
-    };
     static std::size_t index(GridLevel level) { return level == GridLevel::Upper ? 1 : 0; }
     bool firstLook(GrainSurface& grain, std::uint32_t what) const;
     void syncCell(const Scene& scene, GridLevel level, std::uint32_t cell);
+    void syncFilledCell(GridLevel level, std::uint32_t cell);
     void syncWorldCell(const Scene& scene, Int3 world);
     void syncCellsOf(const Scene& scene, std::uint32_t grain);
     bool innerAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
@@ -114,7 +129,7 @@ private:
     std::vector<std::uint32_t> changedInner_;
     std::vector<std::uint32_t> changedGradient_;
     std::vector<ColumnRef> changedColumns_;
-    std::vector<Placed> placed_;                          // scratch: the moved grains of this update
+    std::vector<MovedPlace> movedPlaces_;                 // since clearChanges; this update's at the end
     std::vector<ColumnRef> normalCandidates_;             // scratch: columns around changed heights
     std::vector<ColumnRef> touchedColumns_;               // scratch: columns whose height may have changed
     std::vector<int> heightsBefore_;                      // scratch: their heights before the step

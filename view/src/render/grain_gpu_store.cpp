@@ -61,16 +61,6 @@ std::int64_t uploadRuns(GLenum target, GLuint buffer, std::span<const T> all, In
     return bytes;
 }
 
-template <class T> std::int64_t uploadWhole(GLuint buffer, std::span<const T> all, GLenum usage) {
-    glBindBuffer(GL_TEXTURE_BUFFER, buffer);
-    if (all.empty())
-        glBufferData(GL_TEXTURE_BUFFER, 16, nullptr, usage); // a buffer texture needs some storage
-    else
-        glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(all.size_bytes()), all.data(), usage);
-    glBindBuffer(GL_TEXTURE_BUFFER, 0);
-    return std::int64_t(all.size_bytes());
-}
-
 bool needsGradient(const RenderSettings& settings) {
     return settings.lighting && settings.normals == sandcore::NormalMethod::OccupancyGradient;
 }
@@ -80,30 +70,29 @@ GrainPlace placeOf(const sandcore::GrainStore& grains, std::uint32_t id) {
             std::uint32_t(grains.movedAtStep[id])};
 }
 
+GrainPlace placeOf(const sandcore::MovedPlace& moved) { return {moved.cell, moved.level, moved.cameFrom, moved.movedStep}; }
+
 } // namespace
 
 GrainGpuStore::GrainGpuStore()
-    : places_gpu_{GlBuffer(newBuffer()), GlTexture(newTexture())}, looks_gpu_{GlBuffer(newBuffer()), GlTexture(newTexture())},
-      jitters_gpu_{GlBuffer(newBuffer()), GlTexture(newTexture())},
-      normals_gpu_{GlBuffer(newBuffer()), GlTexture(newTexture())}, visibleBuffer_(newBuffer()),
+    : persistent_(persistentMappingAvailable()),
+      places_gpu_{MappedBuffer(persistent_), GlTexture(newTexture()), GL_RGBA32UI},
+      looks_gpu_{MappedBuffer(false), GlTexture(newTexture()), GL_RG32UI},
+      jitters_gpu_{MappedBuffer(false), GlTexture(newTexture()), GL_RGBA32F},
+      normals_gpu_{MappedBuffer(persistent_), GlTexture(newTexture()), GL_R32UI}, visibleBuffer_(persistent_),
       visibleArray_(newVertexArray()), columnNormals_(newTexture()) {
     GLint maxTexels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
     maxTexels_ = maxTexels;
-    const std::pair<BufferTexture*, GLenum> textures[] = {
-        {&places_gpu_, GL_RGBA32UI}, {&looks_gpu_, GL_RG32UI}, {&jitters_gpu_, GL_RGBA32F}, {&normals_gpu_, GL_R32UI}};
-    for (const auto& [texture, format] : textures) {
-        glBindBuffer(GL_TEXTURE_BUFFER, texture->buffer.get());
-        glBufferData(GL_TEXTURE_BUFFER, 16, nullptr, GL_DYNAMIC_DRAW); // never empty: a texture needs storage
-        glBindTexture(GL_TEXTURE_BUFFER, texture->texture.get());
-        glTexBuffer(GL_TEXTURE_BUFFER, format, texture->buffer.get());
-    }
-    glBindTexture(GL_TEXTURE_BUFFER, 0);
-    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    for (BufferTexture* texture : {&places_gpu_, &looks_gpu_, &jitters_gpu_, &normals_gpu_})
+        allocate(*texture, 16, nullptr); // never empty: a texture needs storage
+    packedByKey_.resize(sandcore::SurfaceUpkeep::kGradientKeys);
+    for (std::size_t key = 0; key < packedByKey_.size(); ++key)
+        packedByKey_[key] = packNormal(sandcore::SurfaceUpkeep::normalOfGradientKey(std::uint16_t(key)));
     // The one per-instance attribute: the id of the grain to draw (when inner grains are hidden).
+    visibleBuffer_.allocate(GL_ARRAY_BUFFER, 4, nullptr);
     glBindVertexArray(visibleArray_.get());
     glBindBuffer(GL_ARRAY_BUFFER, visibleBuffer_.get());
-    glBufferData(GL_ARRAY_BUFFER, 4, nullptr, GL_DYNAMIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribIPointer(0, 1, GL_UNSIGNED_INT, 4, nullptr);
     glVertexAttribDivisor(0, 1);
@@ -115,9 +104,17 @@ GrainGpuStore::GrainGpuStore()
     glBindTexture(GL_TEXTURE_2D, 0);
 }
 
+// New storage, and the texture pointed at it (a persistent buffer's name changes).
+void GrainGpuStore::allocate(BufferTexture& texture, std::size_t bytes, const void* data) {
+    texture.buffer.allocate(GL_TEXTURE_BUFFER, bytes, data);
+    glBindTexture(GL_TEXTURE_BUFFER, texture.texture.get());
+    glTexBuffer(GL_TEXTURE_BUFFER, texture.format, texture.buffer.get());
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+}
+
 bool GrainGpuStore::canUpdate(const sandcore::Scene& scene, const RenderSettings& settings) const {
     const sandcore::Int3 size = scene.grid(sandcore::GridLevel::Lower).size();
-    return places_.size() == scene.grains().size() && uploadedJitter_ == settings.jitter &&
+    return grainCount_ == std::int64_t(scene.grains().size()) && uploadedJitter_ == settings.jitter &&
            (gradientUploaded_ || !needsGradient(settings)) && columnsX_ == size.x && columnsZ_ == size.z;
 }
 
@@ -149,24 +146,35 @@ void GrainGpuStore::makeVisibleList(const sandcore::SurfaceUpkeep& surface) {
 void GrainGpuStore::setVisible(std::uint32_t grain, bool visible) {
     std::uint32_t& slot = slotOf_[grain];
     if (visible == (slot != kNotListed)) return;
+    auto* mapped = static_cast<std::uint32_t*>(visibleBuffer_.mapped());
+    auto changedSlot = [&](std::uint32_t changed) {
+        if (mapped == nullptr) {
+            changedSlots_.mark(changed);
+            return;
+        }
+        mapped[changed] = visible_[changed];
+        visibleBytes_ += 4;
+    };
     if (visible) {
         slot = std::uint32_t(visible_.size());
         visible_.push_back(grain);
-        changedSlots_.mark(slot);
+        changedSlot(slot);
         return;
     }
     const std::uint32_t last = visible_.back();
     visible_[slot] = last;
     slotOf_[last] = slot;
-    if (last != grain) changedSlots_.mark(slot);
+    if (last != grain) changedSlot(slot);
     visible_.pop_back();
     slot = kNotListed;
 }
 
 std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface,
                                       const RenderSettings& settings) {
+    if (persistent_) fence_.waitForDraws();
     const sandcore::GrainStore& grains = scene.grains();
     const std::uint32_t count = grains.size();
+    grainCount_ = count;
     places_.resize(count);
     std::vector<std::uint32_t> looks(std::size_t(count) * 2);
     std::vector<float> jitters(std::size_t(count) * 4, 0.0f);
@@ -179,22 +187,36 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
         jitters[4 * std::size_t(id) + 1] = jitter.y;
         jitters[4 * std::size_t(id) + 2] = jitter.z;
     }
-    std::int64_t bytes = uploadWhole(places_gpu_.buffer.get(), std::span<const GrainPlace>(places_), GL_DYNAMIC_DRAW);
-    bytes += uploadWhole(looks_gpu_.buffer.get(), std::span<const std::uint32_t>(looks), GL_STATIC_DRAW);
-    bytes += uploadWhole(jitters_gpu_.buffer.get(), std::span<const float>(jitters), GL_STATIC_DRAW);
+    allocate(places_gpu_, places_.size() * sizeof(GrainPlace), places_.data());
+    allocate(looks_gpu_, looks.size() * 4, looks.data());
+    allocate(jitters_gpu_, jitters.size() * 4, jitters.data());
+    std::int64_t bytes = std::int64_t(places_.size() * sizeof(GrainPlace) + looks.size() * 4 + jitters.size() * 4);
     gradientUploaded_ = needsGradient(settings) && surface.tracksGradientNormals();
     packedNormals_.assign(gradientUploaded_ ? count : 0, 0u);
-    for (std::uint32_t id = 0; id < packedNormals_.size(); ++id) packedNormals_[id] = packNormal(surface.gradientNormal(id));
-    bytes += uploadWhole(normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_), GL_DYNAMIC_DRAW);
+    for (std::uint32_t id = 0; id < packedNormals_.size(); ++id) packedNormals_[id] = packedByKey_[surface.gradientKeyOf(id)];
+    allocate(normals_gpu_, packedNormals_.size() * 4, packedNormals_.data());
+    bytes += std::int64_t(packedNormals_.size()) * 4;
+    // A driver that would not map a buffer gets the runs for all of them (MappedBuffer fell back).
+    persistent_ = persistent_ && places_gpu_.buffer.persistent() && normals_gpu_.buffer.persistent();
+    if (persistent_) { // the mapped buffers are the copies now
+        places_ = {};
+        packedNormals_ = {};
+    }
 
-    for (IndexRuns* runs : {&changedIds_, &changedSlots_, &changedNormals_}) runs->resize(count);
+    for (IndexRuns* runs : {&changedIds_, &changedSlots_, &changedNormals_}) runs->resize(persistent_ ? 0 : count);
     // The visible list's buffer holds every grain, so the list can grow without reallocating.
     makeVisibleList(surface);
+    std::vector<std::uint32_t> visibleStore(std::max<std::size_t>(count, 1), 0u);
+    std::copy(visible_.begin(), visible_.end(), visibleStore.begin());
+    visibleBuffer_.allocate(GL_ARRAY_BUFFER, visibleStore.size() * 4, visibleStore.data());
+    persistent_ = persistent_ && visibleBuffer_.persistent();
+    glBindVertexArray(visibleArray_.get());
     glBindBuffer(GL_ARRAY_BUFFER, visibleBuffer_.get());
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(std::max<std::size_t>(count, 1) * 4), nullptr, GL_DYNAMIC_DRAW);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(visible_.size() * 4), visible_.data());
+    glVertexAttribIPointer(0, 1, GL_UNSIGNED_INT, 4, nullptr); // the buffer's name may be new
+    glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    bytes += std::int64_t(visible_.size()) * 4;
+    bytes += std::int64_t(visibleStore.size()) * 4;
+    visibleBytes_ = 0;
 
     const sandcore::Int3 size = scene.grid(sandcore::GridLevel::Lower).size();
     columnsX_ = size.x;
@@ -243,28 +265,50 @@ std::int64_t GrainGpuStore::uploadColumns(const sandcore::SurfaceUpkeep& surface
     return bytes;
 }
 
-// The moved grains' places and the changed normals go up in id order, each mirror entry
-// refreshed as its run goes up (in memory order, not the step's).
-std::int64_t GrainGpuStore::uploadChanges(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface) {
-    const sandcore::GrainStore& grains = scene.grains();
+std::int64_t GrainGpuStore::uploadChanges(const sandcore::Scene&, const sandcore::SurfaceUpkeep& surface) {
+    const std::int64_t bytes = persistent_ ? writeChanges(surface) : sendChangesInRuns(surface);
+    return bytes + uploadColumns(surface);
+}
+
+// Persistent mapping: each change is one store into the buffer the GPU reads, in the upkeep's
+// order (a grain moved twice since the last frame ends with its last place).
+std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface) {
+    const std::span<const sandcore::MovedPlace> moved = surface.movedPlaces();
+    const std::span<const std::uint32_t> flags = surface.changedInnerFlags();
+    const std::span<const std::uint32_t> normals = gradientUploaded_ ? surface.changedGradientNormals()
+                                                                     : std::span<const std::uint32_t>();
+    if (moved.empty() && flags.empty() && normals.empty()) return 0;
+    fence_.waitForDraws();
+    auto* places = static_cast<GrainPlace*>(places_gpu_.buffer.mapped());
+    for (const sandcore::MovedPlace& grain : moved) places[grain.grain] = placeOf(grain);
+    visibleBytes_ = 0;
+    for (std::uint32_t id : flags) setVisible(id, !surface.isInner(id));
+    auto* packed = static_cast<std::uint32_t*>(normals_gpu_.buffer.mapped());
+    for (std::uint32_t id : normals) packed[id] = packedByKey_[surface.gradientKeyOf(id)];
+    return std::int64_t(moved.size() * sizeof(GrainPlace)) + visibleBytes_ + std::int64_t(normals.size()) * 4;
+}
+
+// Without it: the copies here are brought up to date and the changed entries go up in id order,
+// in runs.
+std::int64_t GrainGpuStore::sendChangesInRuns(const sandcore::SurfaceUpkeep& surface) {
     std::int64_t bytes = 0;
-    for (std::uint32_t id : surface.movedGrains()) changedIds_.mark(id);
+    for (const sandcore::MovedPlace& grain : surface.movedPlaces()) {
+        places_[grain.grain] = placeOf(grain);
+        changedIds_.mark(grain.grain);
+    }
     bytes += uploadRuns(GL_TEXTURE_BUFFER, places_gpu_.buffer.get(), std::span<const GrainPlace>(places_), changedIds_, 0,
-                        runs_, [&](std::uint32_t first, std::uint32_t end) {
-                            for (std::uint32_t id = first; id < end; ++id) places_[id] = placeOf(grains, id);
-                        });
+                        runs_, [](std::uint32_t, std::uint32_t) {});
     for (std::uint32_t id : surface.changedInnerFlags()) setVisible(id, !surface.isInner(id));
     bytes += uploadRuns(GL_ARRAY_BUFFER, visibleBuffer_.get(), std::span<const std::uint32_t>(visible_), changedSlots_, 2,
                         runs_, [](std::uint32_t, std::uint32_t) {});
     if (gradientUploaded_) {
-        for (std::uint32_t id : surface.changedGradientNormals()) changedNormals_.mark(id);
+        for (std::uint32_t id : surface.changedGradientNormals()) {
+            packedNormals_[id] = packedByKey_[surface.gradientKeyOf(id)];
+            changedNormals_.mark(id);
+        }
         bytes += uploadRuns(GL_TEXTURE_BUFFER, normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_),
-                            changedNormals_, 4, runs_, [&](std::uint32_t first, std::uint32_t end) {
-                                for (std::uint32_t id = first; id < end; ++id)
-                                    packedNormals_[id] = packNormal(surface.gradientNormal(id));
-                            });
+                            changedNormals_, 4, runs_, [](std::uint32_t, std::uint32_t) {});
     }
-    bytes += uploadColumns(surface);
     return bytes;
 }
 

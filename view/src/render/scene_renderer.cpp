@@ -323,6 +323,7 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
     }
     else
         glDrawArraysInstanced(GL_POINTS, 0, perCell, GLsizei(instanceCount_));
+    if (path_ == GrainPath::GpuInterpolated) gpuStore_.drawn();
 }
 
 void SceneRenderer::drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection) {

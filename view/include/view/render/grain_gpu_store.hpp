@@ -4,14 +4,17 @@
 // identity and colour (8 bytes) and jitter (16 bytes), changed only by edits; its gradient normal
 // (4 bytes, when lit by that method); per column the thesis's column normal (a 2D texture); and
 // the list of visible (not inner) grain ids, the instances drawn when inner grains are hidden.
-// After a step only what changed goes up, in runs of consecutive entries found in a bitset (no
-// sort), several runs through one mapped range: the moved grains' places, the changed entries of
-// the visible list, the changed normals. The vertex
+// After a step only what changed goes up: the moved grains' places (taken from the upkeep's list,
+// not gathered again from the grain store), the changed entries of the visible list, the changed
+// normals. Where the GL maps buffers persistently (MappedBuffer) each is one store into mapped
+// memory; else they go up in runs of consecutive entries found in a bitset (no sort), several
+// runs through one mapped range. The vertex
 // shader (grain_gpu.vert) works out the display position from the place and the step fraction,
 // as sandcore::grainDisplayPosition does on the CPU.
 
 #include "view/render/gl_objects.hpp"
 #include "view/render/index_runs.hpp"
+#include "view/render/mapped_buffer.hpp"
 #include "view/render/render_settings.hpp"
 
 #include "sandcore/scene.hpp"
@@ -36,6 +39,13 @@ class GrainGpuStore {
 public:
     /// Buffers and textures; needs a current GL 3.3 context.
     GrainGpuStore();
+    /// After each draw that reads the store (persistently mapped buffers are not written while
+    /// the GPU may still read them).
+    void drawn() {
+        if (persistent_) fence_.drawn();
+    }
+    /// True when changes are written into persistently mapped buffers (see MappedBuffer).
+    bool persistent() const { return persistent_; }
 
     /// Uploads everything from the scene and its upkeep. Returns the bytes sent.
     std::int64_t uploadAll(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface,
@@ -51,30 +61,38 @@ public:
     /// Binds the buffer textures to units firstUnit.. (places, looks, jitters, gradient normals)
     /// and the column normals to columnUnit, and the vertex array of the visible list.
     void bind(int firstUnit, int columnUnit) const;
-    std::int64_t grainCount() const { return std::int64_t(places_.size()); }   ///< all grains
+    std::int64_t grainCount() const { return grainCount_; }                    ///< all grains
     std::int64_t visibleCount() const { return std::int64_t(visible_.size()); } ///< grains not inner
-    /// The places as uploaded (tests compare them with the scene).
-    std::span<const GrainPlace> places() const { return places_; }
 
 private:
     struct BufferTexture {
-        GlBuffer buffer;
+        MappedBuffer buffer;
         GlTexture texture;
+        GLenum format;
     };
     void makeVisibleList(const sandcore::SurfaceUpkeep& surface);
     void setVisible(std::uint32_t grain, bool visible);
     std::int64_t uploadColumns(const sandcore::SurfaceUpkeep& surface);
+    std::int64_t writeChanges(const sandcore::SurfaceUpkeep& surface);
+    std::int64_t sendChangesInRuns(const sandcore::SurfaceUpkeep& surface);
+    void allocate(BufferTexture& texture, std::size_t bytes, const void* data);
 
+    bool persistent_ = false;
+    DrawFence fence_;
     BufferTexture places_gpu_, looks_gpu_, jitters_gpu_, normals_gpu_;
-    GlBuffer visibleBuffer_;
+    MappedBuffer visibleBuffer_;
     GlVertexArray visibleArray_;
     GlTexture columnNormals_;
     std::int64_t maxTexels_ = 0;
-    std::vector<GrainPlace> places_;
-    std::vector<std::uint32_t> packedNormals_;  // gradient normals as uploaded
+    std::int64_t grainCount_ = 0;
+    std::vector<std::uint32_t> packedByKey_;    // packNormal of each gradient key
     std::vector<std::uint32_t> packedColumns_;  // column normals as uploaded, texel order
     std::vector<std::uint32_t> visible_;        // ids of the visible grains, as uploaded
     std::vector<std::uint32_t> slotOf_;         // per grain: its index in visible_, or kNotListed
+    std::int64_t visibleBytes_ = 0;             // visible-list bytes written since the last upload
+    // Without persistent mapping: the buffers' contents as sent, and what to send.
+    std::vector<GrainPlace> places_;
+    std::vector<std::uint32_t> packedNormals_;
     IndexRuns changedIds_;                      // places to send: the moved grains
     IndexRuns changedSlots_;                    // entries of visible_ to send
     IndexRuns changedNormals_;                  // gradient normals to send
