@@ -382,6 +382,21 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
     return true;
 }
 
+// The first awake cell of row z of layer y, and the cell below it, are usually not in the cache
+// yet (a visit reads the layer below, not the next row of its own): asking for them one row
+// ahead overlaps those misses with this row's visits. A hint only; classic moves never wake
+// cells of their own layer, so the row's awake bits are already final.
+void GridSweep::prefetchFirstAwake(const CellGrid& grid, int y, int z) const {
+    const RowWord* words = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z)) * std::size_t(rowWords_);
+    for (int w = 0; w < rowWords_; ++w) {
+        if (!words[w].awake) continue;
+        const CellValue* cell = grid.cells().data() + grid.index(w * 64 + __builtin_ctzll(words[w].awake), y, z);
+        __builtin_prefetch(cell);
+        __builtin_prefetch(cell - grid.layerSize());
+        return;
+    }
+}
+
 // The strip loop, instantiated once per rule set: the classic one is main's loop exactly (each
 // word's awake bits taken at once), with no test of the rule set per word or per grain.
 template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip) {
@@ -396,6 +411,8 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
         // Classic moves only wake cells in the layers above and below, never in this row: take its
         // bits first. Without sleeping, every cell of the row is visited as if awake.
         RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+        if constexpr (!Granular)
+            if (context.sleeping && z + 1 < zEnd && rowAwake_[row + 1]) prefetchFirstAwake(context.grid, y, z + 1);
         for (int w = 0; w < rowWords_; ++w) {
             if constexpr (Granular) {
                 if (context.sleeping) {

@@ -124,6 +124,7 @@ private:
     bool visitCell(const SweepContext& context, StripLog& log, int x, int y, int z);
     bool visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z);
     void clearRow(std::uint32_t row);
+    void prefetchFirstAwake(const CellGrid& grid, int y, int z) const;
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
     void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove);
