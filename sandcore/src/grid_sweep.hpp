@@ -10,6 +10,7 @@
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
+#include "move_feed.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -20,21 +21,11 @@ class WorkerPool;
 class GranularRules;
 
 inline constexpr int kStripRows = 8;
-inline constexpr int kGrainsPerPartBits = 8; ///< SweepContext::ownRecordBlocks: 256 grain ids per block
 
-/// One classic move, kept by the strip that made it and written into the GrainStore after the
-/// sweep: the two grids' workers then never write the same grain records' cache lines.
-struct LoggedMove {
-    std::uint32_t grain; ///< its id
-    std::uint32_t to;    ///< the cell it entered
-    MoveCode cameFrom;   ///< offset back to the cell it left
-};
-
-/// What one strip of a sweep keeps of its moves: the moves whose records wait (ownRecordBlocks), or
-/// the ids of grains whose records were written at once.
+/// What one strip of a sweep keeps of its moves when its grain records are written at once: the
+/// ids of the grains it moved (threads that share a layer's strips each append to their own).
 struct StripLog {
-    std::vector<LoggedMove> deferred; ///< moves whose grain records writeLoggedMoves writes
-    std::vector<std::uint32_t> moved; ///< ids of the other grains moved
+    std::vector<std::uint32_t> moved;
 };
 
 struct SweepResult {
@@ -53,12 +44,9 @@ struct SweepContext {
     GridLevel level;     ///< which grid: picks the slips, so the two grids draw differently
     bool sleeping;       ///< R5: visit awake cells only; false = every cell (same result)
     std::uint64_t stepKey; ///< counterRandomStepKey(seed, step), computed once per sweep
-    /// Whose grain records a classic move writes at once. -1: every one (no other thread writes
-    /// records meanwhile). 0 or 1, when the two grids are swept side by side: only those of grains
-    /// whose block of 2^kGrainsPerPartBits ids has this parity; the others are logged and written
-    /// by writeLoggedMoves after both sweeps. The two grids' workers then never write the same
-    /// cache lines of grain records, and neither waits for a pass over all the moves.
-    int ownRecordBlocks;
+    /// When set (the two grids swept side by side), a classic move writes no grain record and
+    /// lists no id: it is fed here for the thread that writes the records (move_feed.hpp).
+    MoveFeed* feed;
     /// When set (a sweep on one thread that writes records at once), the ids of moved grains are
     /// appended here directly instead of to the strips' logs.
     std::vector<std::uint32_t>* movedList;
@@ -91,10 +79,8 @@ public:
     void setDeferWakesAbove(bool defer) { deferWakesAbove_ = defer; }
     /// Applies the wakes kept while deferred.
     void applyDeferredWakes();
-    /// Writes the moves the last sweep logged (the other grid's worker's blocks of grain ids) into
-    /// grains: cell, cameFrom, movedAtStep = step. Granular sweeps write the records as they
-    /// move: nothing to do.
-    void writeLoggedMoves(GrainStore& grains, std::uint64_t step) const;
+    /// The feed a side-by-side sweep of this grid fills (SweepContext::feed).
+    MoveFeed& feed() { return feed_; }
     /// Appends the ids of the grains the last sweep logged to `moved` and empties the logs. A
     /// granular grain may be listed twice (it may move again in its own layer).
     void takeLoggedMoves(std::vector<std::uint32_t>& moved);
@@ -139,6 +125,7 @@ private:
     bool visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z);
     SweepResult sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd);
     void clearRow(std::uint32_t row);
+    void prefetchFirstAwake(const CellGrid& grid, int y, int z) const;
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
     void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove);
@@ -163,7 +150,7 @@ private:
     };
     std::vector<RowWord> words_; // row = y * sizeZ + z, padded to whole words
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
-    bool recordsDeferred_ = false;              // the last sweep left its records to writeLoggedMoves
+    MoveFeed feed_;
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
 };
 

@@ -7,6 +7,7 @@
 #include "sandcore/worker_pool.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 namespace sandcore {
@@ -126,43 +127,66 @@ void Scene::step() {
     // The two grids touch no common cell during their sweeps (the lower grid's wakes of the
     // outlet row wait until both are done), so when both have comparable work they run side by
     // side, each on one thread; otherwise the busy grid splits its layers into strips over the
-    // threads. Neither choice changes the result.
-    const std::int64_t lowerWork = settings_.sleeping ? lowerSweep_->awakeRowCount() : std::int64_t(lower_.cellCount());
-    const std::int64_t upperWork = settings_.sleeping ? upperSweep_->awakeRowCount() : std::int64_t(upper_.cellCount());
-    const bool sideBySide = pool && std::min(lowerWork, upperWork) > 0 &&
-                            4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
-    // Side by side, the two grids' threads would write the same cache lines of grain records
-    // (grains moving in both have nearby ids): each writes at once the records of its own
-    // alternate blocks of ids and logs the others. On one thread the sweeps list the moved grains
-    // in movedGrains_ directly.
+    // threads. Neither choice changes the result. One thread needs no measure of the work.
+    bool sideBySide = false;
+    if (pool) {
+        const std::int64_t lowerWork = settings_.sleeping ? lowerSweep_->awakeRowCount() : std::int64_t(lower_.cellCount());
+        const std::int64_t upperWork = settings_.sleeping ? upperSweep_->awakeRowCount() : std::int64_t(upper_.cellCount());
+        sideBySide = std::min(lowerWork, upperWork) > 0 && 4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
+    }
+    // Side by side, classic sweeps feed their moves to the thread that writes the grain records
+    // (move_feed.hpp). Otherwise strips on several threads list their moved grains in their own
+    // logs, and one thread lists them in movedGrains_ directly.
     movedGrains_.clear();
+    const bool feeding = sideBySide && !granular_;
     std::vector<std::uint32_t>* movedList = pool ? nullptr : &movedGrains_;
+    MoveFeed* lowerFeed = feeding ? &lowerSweep_->feed() : nullptr;
+    MoveFeed* upperFeed = feeding ? &upperSweep_->feed() : nullptr;
     const SweepContext lowerContext{lower_,   grains_,           settings_.seed,      stepNumber, GridLevel::Lower,
-                                    settings_.sleeping, stepKey, sideBySide ? 0 : -1, movedList};
+                                    settings_.sleeping, stepKey, lowerFeed, movedList};
     const SweepContext upperContext{upper_,   grains_,           settings_.seed,      stepNumber, GridLevel::Upper,
-                                    settings_.sleeping, stepKey, sideBySide ? 1 : -1, movedList};
+                                    settings_.sleeping, stepKey, upperFeed, movedList};
     if (sideBySide) {
         lowerSweep_->setDeferWakesAbove(true);
-        // A worker that is done writes the records it logged at once: they are of the other
-        // grid's blocks, but no grain is in both grids, so the two threads still write different
-        // records, and they share cache lines only while the other finishes its sweep. No second
-        // pass over the threads is needed before the transition reads the records. Each also
-        // lists its moved grains, the upper grid's apart, appended after both are done.
-        upperMovedGrains_.clear();
+        if (feeding) {
+            lowerFeed->start(grains_.size());
+            upperFeed->start(grains_.size());
+        }
+        // The thread whose sweep ends first writes the records of both grids' moves and lists
+        // them: its own grid's at once, then the other's as they are fed. A sweep that no thread
+        // has started by then (its worker is not running) writes its own after it, on whichever
+        // thread takes it: nobody waits for a sweep that has not begun. Only one thread at a time
+        // writes grain records or movedGrains_ during the loop; a sweep reads neither.
+        enum : int { kWaiting, kStarted, kWritesItsOwn };
+        std::atomic<int> sweepState[2] = {kWaiting, kWaiting};
+        std::atomic<int> sweepsDone{0};
         pool->parallelFor(2, [&](int grid) {
             GridSweep& sweep = grid == 0 ? *lowerSweep_ : *upperSweep_;
+            int state = kWaiting;
+            const bool writesItsOwn = !sweepState[grid].compare_exchange_strong(state, kStarted, std::memory_order_acq_rel);
             (grid == 0 ? lower : upper) = sweep.sweep(grid == 0 ? lowerContext : upperContext, nullptr);
-            sweep.writeLoggedMoves(grains_, stepNumber);
-            sweep.takeLoggedMoves(grid == 0 ? movedGrains_ : upperMovedGrains_);
+            if (!feeding) return;
+            sweep.feed().finish();
+            auto write = [&](const FedMove& move) {
+                grains_.cell[move.grain] = move.to;
+                grains_.cameFrom[move.grain] = move.cameFrom;
+                grains_.movedAtStep[move.grain] = stepNumber;
+                movedGrains_.push_back(move.grain);
+            };
+            if (writesItsOwn) return sweep.feed().drain(write);
+            if (sweepsDone.fetch_add(1, std::memory_order_acq_rel) != 0) return; // the other one writes
+            sweep.feed().drain(write);
+            state = kWaiting;
+            if (sweepState[1 - grid].compare_exchange_strong(state, kWritesItsOwn, std::memory_order_acq_rel)) return;
+            (grid == 0 ? *upperSweep_ : *lowerSweep_).feed().drain(write);
         });
-        movedGrains_.insert(movedGrains_.end(), upperMovedGrains_.begin(), upperMovedGrains_.end());
         lowerSweep_->setDeferWakesAbove(false);
         lowerSweep_->applyDeferredWakes();
     } else {
         lower = lowerSweep_->sweep(lowerContext, pool);
         upper = upperSweep_->sweep(upperContext, pool);
     }
-    lowerSweep_->takeLoggedMoves(movedGrains_); // side by side: already taken, nothing left
+    lowerSweep_->takeLoggedMoves(movedGrains_); // fed or listed directly: nothing left
     upperSweep_->takeLoggedMoves(movedGrains_);
     if (granular_) {
         // A granular grain may move again in its own layer within one sweep: list it once.

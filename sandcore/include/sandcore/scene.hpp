@@ -172,7 +172,6 @@ private:
     std::unique_ptr<NeckFlow> neckFlow_;      // granular hourglass only
     std::vector<std::uint32_t> transitionReady_; // scratch of transitionGranular
     std::vector<std::uint32_t> movedGrains_;     // movedGrains(); a flip moves every grain
-    std::vector<std::uint32_t> upperMovedGrains_; // step(): the upper grid's, listed by its own thread
 };
 
 } // namespace sandcore
