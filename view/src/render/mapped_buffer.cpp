@@ -1,6 +1,8 @@
 #include "view/render/mapped_buffer.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 
@@ -17,7 +19,15 @@ MappedBuffer::MappedBuffer(bool persistent) : buffer_(newBuffer()), persistent_(
 MappedBuffer::~MappedBuffer() = default; // deleting a mapped buffer unmaps it
 
 void MappedBuffer::allocate(GLenum target, std::size_t bytes, const void* data) {
-    bytes = std::max<std::size_t>(bytes, 16);
+    // Never empty (a texture needs storage): a smaller start is padded with zeros, so the driver
+    // never reads past the caller's data.
+    constexpr std::size_t kLeast = 16;
+    std::array<std::byte, kLeast> padded{};
+    if (bytes < kLeast && data != nullptr) {
+        std::memcpy(padded.data(), data, bytes);
+        data = padded.data();
+    }
+    bytes = std::max(bytes, kLeast);
     bytes_ = bytes;
     if (!persistent_) {
         glBindBuffer(target, buffer_.get());
