@@ -121,10 +121,7 @@ void moveGrain(CellGrid& grid, GrainStore& grains, CellValue grain, std::uint32_
                std::uint64_t step) {
     grid[to] = grain;
     grid[from] = kEmpty;
-    const auto id = std::size_t(grain);
-    grains.cell[id] = to;
-    grains.cameFrom[id] = packMove(back.x, back.y, back.z);
-    grains.movedAtStep[id] = step;
+    grains.recordMove(std::uint32_t(grain), to, packMove(back.x, back.y, back.z), step);
 }
 
 GranularOutcome GranularRules::visit(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step,

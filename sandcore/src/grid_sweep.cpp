@@ -330,10 +330,7 @@ inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int
     if (context.feed) {
         context.feed->push({std::uint32_t(grain), to, back}); // its record is written by another thread
     } else {
-        GrainStore& grains = context.grains;
-        grains.cell[std::size_t(grain)] = to;
-        grains.cameFrom[std::size_t(grain)] = back;
-        grains.movedAtStep[std::size_t(grain)] = context.step;
+        context.grains.recordMove(std::uint32_t(grain), to, back, context.step);
         (context.movedList ? *context.movedList : log.moved).push_back(std::uint32_t(grain));
     }
 

@@ -168,9 +168,7 @@ void Scene::step() {
             if (!feeding) return;
             sweep.feed().finish();
             auto write = [&](const FedMove& move) {
-                grains_.cell[move.grain] = move.to;
-                grains_.cameFrom[move.grain] = move.cameFrom;
-                grains_.movedAtStep[move.grain] = stepNumber;
+                grains_.recordMove(move.grain, move.to, move.cameFrom, stepNumber);
                 movedGrains_.push_back(move.grain);
             };
             if (writesItsOwn) return sweep.feed().drain(write);

@@ -47,6 +47,13 @@ struct GrainStore {
     std::uint32_t size() const { return std::uint32_t(cell.size()); } ///< number of grains
     void clear();                                                      ///< removes every grain
     void reserve(std::uint32_t count); ///< room for count grains without reallocating
+    /// Writes a move into grain id's record: the cell it entered, the offset back to the one it
+    /// left, and the step it moved in (what the display glides from).
+    void recordMove(std::uint32_t id, std::uint32_t to, MoveCode back, std::uint64_t step) {
+        cell[id] = to;
+        cameFrom[id] = back;
+        movedAtStep[id] = step;
+    }
     /// Appends a grain and returns its id.
     std::uint32_t add(GridLevel where, std::uint32_t cellIndex, std::uint32_t grainIdentity, std::uint32_t rgba);
     /// Moves the last grain into id (dropping id's record); returns the id the last grain had.
