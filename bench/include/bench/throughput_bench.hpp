@@ -39,7 +39,7 @@ struct MoveRate {
 };
 
 /// Drains the hourglass at this resolution once per thread count (sleeping on, the given seed),
-/// the runs interleaved in one process so they share the machine's conditions.
+/// the runs taking turns of a few steps in one process so they share the machine's conditions.
 std::vector<MoveRate> measureMoveRates(int resolution, const std::vector<int>& threads, std::uint64_t seed);
 
 /// The rates next to the ceiling: per run, moves per second and how many random writes per move
