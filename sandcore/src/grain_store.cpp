@@ -9,8 +9,7 @@ void GrainStore::clear() {
     movedAtStep.clear();
     identity.clear();
     color.clear();
-    fallSpeed.clear();
-    fallFraction.clear();
+    fall.clear();
 }
 
 void GrainStore::reserve(std::uint32_t count) {
@@ -20,8 +19,7 @@ void GrainStore::reserve(std::uint32_t count) {
     movedAtStep.reserve(count);
     identity.reserve(count);
     color.reserve(count);
-    fallSpeed.reserve(count);
-    fallFraction.reserve(count);
+    fall.reserve(count);
 }
 
 std::uint32_t GrainStore::add(GridLevel where, std::uint32_t cellIndex, std::uint32_t grainIdentity,
@@ -32,8 +30,7 @@ std::uint32_t GrainStore::add(GridLevel where, std::uint32_t cellIndex, std::uin
     movedAtStep.push_back(0);
     identity.push_back(grainIdentity);
     color.push_back(rgba);
-    fallSpeed.push_back(0);
-    fallFraction.push_back(0);
+    fall.push_back({});
     return std::uint32_t(cell.size() - 1);
 }
 
@@ -45,16 +42,14 @@ std::uint32_t GrainStore::removeBySwap(std::uint32_t id) {
     movedAtStep[id] = movedAtStep[last];
     identity[id] = identity[last];
     color[id] = color[last];
-    fallSpeed[id] = fallSpeed[last];
-    fallFraction[id] = fallFraction[last];
+    fall[id] = fall[last];
     level.pop_back();
     cell.pop_back();
     cameFrom.pop_back();
     movedAtStep.pop_back();
     identity.pop_back();
     color.pop_back();
-    fallSpeed.pop_back();
-    fallFraction.pop_back();
+    fall.pop_back();
     return last;
 }
 

@@ -133,23 +133,23 @@ GranularOutcome GranularRules::visit(CellGrid& grid, GrainStore& grains, std::ui
     if (below == kEmpty) return fall(grid, grains, step, bottomIsOutlet, x, y, z, from, grain);
 
     const auto id = std::size_t(grain);
-    if (below >= 0 && grains.fallSpeed[std::size_t(below)] > 0) {
+    if (below >= 0 && grains.fall[std::size_t(below)].speed > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
         // so the grain follows at once when the one below moves on (a column flows as one).
-        const std::uint32_t speed = grains.fallSpeed[std::size_t(below)];
-        const auto fraction = std::uint16_t(std::min<std::uint32_t>(grains.fallFraction[id] + speed + gravity_ / 2, kOne - 1));
+        const std::uint32_t speed = grains.fall[std::size_t(below)].speed;
+        const auto fraction = std::uint16_t(std::min<std::uint32_t>(grains.fall[id].fraction + speed + gravity_ / 2, kOne - 1));
         // Nothing changed (it waits, a cell of progress gathered, on a grain held at the same
         // speed): it may sleep, since the one below wakes it when it changes speed or moves. Not
         // on the outlet row of the upper grid, whose speeds the transition sets without a visit.
-        if (speed == grains.fallSpeed[id] && fraction == grains.fallFraction[id] && (y > 1 || !bottomIsOutlet))
+        if (speed == grains.fall[id].speed && fraction == grains.fall[id].fraction && (y > 1 || !bottomIsOutlet))
             return {GranularOutcome::Riding, {}};
-        grains.fallSpeed[id] = speed;
-        grains.fallFraction[id] = fraction;
+        grains.fall[id].speed = speed;
+        grains.fall[id].fraction = fraction;
         return {GranularOutcome::Waiting, {}};
     }
-    if (grains.fallSpeed[id] | grains.fallFraction[id]) { // most visited grains rest already: no write
-        grains.fallSpeed[id] = 0;
-        grains.fallFraction[id] = 0;
+    if (grains.fall[id].speed | grains.fall[id].fraction) { // most visited grains rest already: no write
+        grains.fall[id].speed = 0;
+        grains.fall[id].fraction = 0;
         GranularOutcome outcome = slide(grid, grains, seed, step, stream, x, y, z, from, grain, below == kInvalid);
         outcome.stopped = outcome.kind == GranularOutcome::Resting;
         return outcome;
@@ -161,12 +161,12 @@ GranularOutcome GranularRules::fall(CellGrid& grid, GrainStore& grains, std::uin
                                     int y, int z, std::uint32_t from, CellValue grain) const {
     const auto id = std::size_t(grain);
     // x(n) = g n^2 / 2 exactly at whole steps: each step advances by the mean speed v + g/2.
-    const std::uint64_t travel = std::uint64_t(grains.fallFraction[id]) + grains.fallSpeed[id] + gravity_ / 2;
-    const std::uint32_t speed = std::min(grains.fallSpeed[id] + gravity_, kMaxFallSpeed);
+    const std::uint64_t travel = std::uint64_t(grains.fall[id].fraction) + grains.fall[id].speed + gravity_ / 2;
+    const std::uint32_t speed = std::min(grains.fall[id].speed + gravity_, kMaxFallSpeed);
     const int wanted = int(std::min<std::uint64_t>(travel >> 16, std::uint64_t(y)));
     if (wanted == 0) {
-        grains.fallSpeed[id] = speed;
-        grains.fallFraction[id] = std::uint16_t(travel);
+        grains.fall[id].speed = speed;
+        grains.fall[id].fraction = std::uint16_t(travel);
         return {GranularOutcome::Waiting, {}};
     }
     // Check every cell of the path: the first non-EMPTY one stops the grain above it.
@@ -175,15 +175,15 @@ GranularOutcome GranularRules::fall(CellGrid& grid, GrainStore& grains, std::uin
     while (fallen < wanted && grid[from - std::uint32_t(fallen + 1) * layer] == kEmpty) ++fallen;
     const int landedY = y - fallen;
     if (landedY == 0) { // the grid's bottom layer: an outlet keeps the speed, a floor stops it
-        grains.fallSpeed[id] = bottomIsOutlet ? speed : 0;
-        grains.fallFraction[id] = 0;
+        grains.fall[id].speed = bottomIsOutlet ? speed : 0;
+        grains.fall[id].fraction = 0;
     } else if (fallen == int(travel >> 16)) { // free flight: nothing touched
-        grains.fallSpeed[id] = speed;
-        grains.fallFraction[id] = std::uint16_t(travel);
+        grains.fall[id].speed = speed;
+        grains.fall[id].fraction = std::uint16_t(travel);
     } else { // contact: the speed of a grain it lands on (0 when resting), or 0 on a wall
         const CellValue under = grid[from - std::uint32_t(fallen + 1) * layer];
-        grains.fallSpeed[id] = under >= 0 ? std::min(speed, grains.fallSpeed[std::size_t(under)]) : 0;
-        grains.fallFraction[id] = 0;
+        grains.fall[id].speed = under >= 0 ? std::min(speed, grains.fall[std::size_t(under)].speed) : 0;
+        grains.fall[id].fraction = 0;
     }
     moveGrain(grid, grains, grain, from, from - std::uint32_t(fallen) * layer, {0, fallen, 0}, step);
     return {GranularOutcome::Moved, {x, landedY, z}};

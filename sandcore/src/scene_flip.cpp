@@ -58,8 +58,7 @@ bool Scene::flip() {
     lower_ = std::move(lower);
     std::swap(counters_.grainsUpper, counters_.grainsLower);
     // Turning over stops every fall (granular): what fell down would now fall up.
-    std::fill(grains_.fallSpeed.begin(), grains_.fallSpeed.end(), 0u);
-    std::fill(grains_.fallFraction.begin(), grains_.fallFraction.end(), std::uint16_t{0});
+    std::fill(grains_.fall.begin(), grains_.fall.end(), FallState{});
     // Every grain changed its cell, so the scene is no longer settled.
     counters_.movesLastStep = grains_.size();
     movedGrains_.resize(grains_.size());

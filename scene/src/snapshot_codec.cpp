@@ -96,8 +96,15 @@ void writeGrains(ByteWriter& out, const sandcore::GrainStore& g) {
     out.putArray(g.movedAtStep);
     out.putArray(g.identity);
     out.putArray(g.color);
-    out.putArray(g.fallSpeed);
-    out.putArray(g.fallFraction);
+    // The file keeps speeds and fractions as two arrays (the format before they shared a record).
+    std::vector<std::uint32_t> speeds(g.fall.size());
+    std::vector<std::uint16_t> fractions(g.fall.size());
+    for (std::size_t i = 0; i < g.fall.size(); ++i) {
+        speeds[i] = g.fall[i].speed;
+        fractions[i] = g.fall[i].fraction;
+    }
+    out.putArray(speeds);
+    out.putArray(fractions);
 }
 
 sandcore::GrainStore readGrains(ByteReader& in) {
@@ -109,8 +116,10 @@ sandcore::GrainStore readGrains(ByteReader& in) {
     g.movedAtStep = in.getArray<std::uint64_t>("grain move steps", grains);
     g.identity = in.getArray<std::uint32_t>("grain identities", grains);
     g.color = in.getArray<std::uint32_t>("grain colours", grains);
-    g.fallSpeed = in.getArray<std::uint32_t>("grain fall speeds", grains);
-    g.fallFraction = in.getArray<std::uint16_t>("grain fall fractions", grains);
+    const std::vector<std::uint32_t> speeds = in.getArray<std::uint32_t>("grain fall speeds", grains);
+    const std::vector<std::uint16_t> fractions = in.getArray<std::uint16_t>("grain fall fractions", grains);
+    g.fall.resize(speeds.size());
+    for (std::size_t i = 0; i < g.fall.size(); ++i) g.fall[i] = {speeds[i], fractions[i]};
     return g;
 }
 

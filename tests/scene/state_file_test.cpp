@@ -293,7 +293,7 @@ TEST_CASE("state file: a granular scene keeps its physics and falling speeds thr
     saveState(folder / "granular.sand", saved, support::hourglassRequest());
     LoadedState loaded = loadState(folder / "granular.sand");
     CHECK(loaded.scene.settings().physics == step.physics);
-    CHECK(loaded.scene.grains().fallSpeed == saved.grains().fallSpeed);
+    CHECK(loaded.scene.grains().fall == saved.grains().fall);
     for (int i = 0; i < 60; ++i) {
         straight.step();
         loaded.scene.step();

@@ -172,6 +172,7 @@ private:
     std::unique_ptr<NeckFlow> neckFlow_;      // granular hourglass only
     std::vector<std::uint32_t> transitionReady_; // scratch of transitionGranular
     std::vector<std::uint32_t> movedGrains_;     // movedGrains(); a flip moves every grain
+    std::vector<std::uint64_t> movedSeen_;       // scratch of step: one bit per grain, all clear between steps
 };
 
 } // namespace sandcore
