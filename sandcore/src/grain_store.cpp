@@ -9,7 +9,7 @@ void GrainStore::clear() {
     movedAtStep.clear();
     identity.clear();
     color.clear();
-    fall.clear();
+    for (std::vector<FallState>& grid : fall) grid.clear();
 }
 
 void GrainStore::reserve(std::uint32_t count) {
@@ -19,7 +19,7 @@ void GrainStore::reserve(std::uint32_t count) {
     movedAtStep.reserve(count);
     identity.reserve(count);
     color.reserve(count);
-    fall.reserve(count);
+    for (std::vector<FallState>& grid : fall) grid.reserve(count);
 }
 
 std::uint32_t GrainStore::add(GridLevel where, std::uint32_t cellIndex, std::uint32_t grainIdentity,
@@ -30,7 +30,7 @@ std::uint32_t GrainStore::add(GridLevel where, std::uint32_t cellIndex, std::uin
     movedAtStep.push_back(0);
     identity.push_back(grainIdentity);
     color.push_back(rgba);
-    fall.push_back({});
+    for (std::vector<FallState>& grid : fall) grid.push_back({});
     return std::uint32_t(cell.size() - 1);
 }
 
@@ -42,14 +42,14 @@ std::uint32_t GrainStore::removeBySwap(std::uint32_t id) {
     movedAtStep[id] = movedAtStep[last];
     identity[id] = identity[last];
     color[id] = color[last];
-    fall[id] = fall[last];
+    for (std::vector<FallState>& grid : fall) grid[id] = grid[last];
     level.pop_back();
     cell.pop_back();
     cameFrom.pop_back();
     movedAtStep.pop_back();
     identity.pop_back();
     color.pop_back();
-    fall.pop_back();
+    for (std::vector<FallState>& grid : fall) grid.pop_back();
     return last;
 }
 

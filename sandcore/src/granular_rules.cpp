@@ -117,56 +117,63 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
                 wakeMasks_[std::size_t(d)] |= std::uint64_t{1} << ((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx);
 }
 
-void moveGrain(CellGrid& grid, GrainStore& grains, CellValue grain, std::uint32_t from, std::uint32_t to, Int3 back,
-               std::uint64_t step) {
+namespace {
+
+// Moves `grain` from cell `from` to cell `to` of the same grid; the outcome carries the offset back
+// (in cells) for the record, which the sweep writes or feeds.
+GranularOutcome moveGrain(CellGrid& grid, CellValue grain, std::uint32_t from, std::uint32_t to, Int3 back, Int3 toCell) {
     grid[to] = grain;
     grid[from] = kEmpty;
-    grains.recordMove(std::uint32_t(grain), to, packMove(back.x, back.y, back.z), step);
+    GranularOutcome outcome{GranularOutcome::Moved, toCell};
+    outcome.cameFrom = packMove(back.x, back.y, back.z);
+    return outcome;
 }
 
-GranularOutcome GranularRules::visit(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step,
+} // namespace
+
+GranularOutcome GranularRules::visit(CellGrid& grid, std::span<FallState> falls, std::uint64_t seed, std::uint64_t step,
                                      std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z) const {
     const std::uint32_t from = grid.index(x, y, z);
     const CellValue grain = grid[from];
     if (grain < 0) return {};
     const CellValue below = grid[from - grid.layerSize()];
-    if (below == kEmpty) return fall(grid, grains, step, bottomIsOutlet, x, y, z, from, grain);
+    if (below == kEmpty) return fall(grid, falls, bottomIsOutlet, x, y, z, from, grain);
 
     const auto id = std::size_t(grain);
-    if (below >= 0 && grains.fall[std::size_t(below)].speed > 0) {
+    if (below >= 0 && falls[std::size_t(below)].speed > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
         // so the grain follows at once when the one below moves on (a column flows as one).
-        const std::uint32_t speed = grains.fall[std::size_t(below)].speed;
-        const auto fraction = std::uint16_t(std::min<std::uint32_t>(grains.fall[id].fraction + speed + gravity_ / 2, kOne - 1));
+        const std::uint32_t speed = falls[std::size_t(below)].speed;
+        const auto fraction = std::uint16_t(std::min<std::uint32_t>(falls[id].fraction + speed + gravity_ / 2, kOne - 1));
         // Nothing changed (it waits, a cell of progress gathered, on a grain held at the same
         // speed): it may sleep, since the one below wakes it when it changes speed or moves. Not
         // on the outlet row of the upper grid, whose speeds the transition sets without a visit.
-        if (speed == grains.fall[id].speed && fraction == grains.fall[id].fraction && (y > 1 || !bottomIsOutlet))
+        if (speed == falls[id].speed && fraction == falls[id].fraction && (y > 1 || !bottomIsOutlet))
             return {GranularOutcome::Riding, {}};
-        grains.fall[id].speed = speed;
-        grains.fall[id].fraction = fraction;
+        falls[id].speed = speed;
+        falls[id].fraction = fraction;
         return {GranularOutcome::Waiting, {}};
     }
-    if (grains.fall[id].speed | grains.fall[id].fraction) { // most visited grains rest already: no write
-        grains.fall[id].speed = 0;
-        grains.fall[id].fraction = 0;
-        GranularOutcome outcome = slide(grid, grains, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+    if (falls[id].speed | falls[id].fraction) { // most visited grains rest already: no write
+        falls[id].speed = 0;
+        falls[id].fraction = 0;
+        GranularOutcome outcome = slide(grid, seed, step, stream, x, y, z, from, grain, below == kInvalid);
         outcome.stopped = outcome.kind == GranularOutcome::Resting;
         return outcome;
     }
-    return slide(grid, grains, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+    return slide(grid, seed, step, stream, x, y, z, from, grain, below == kInvalid);
 }
 
-GranularOutcome GranularRules::fall(CellGrid& grid, GrainStore& grains, std::uint64_t step, bool bottomIsOutlet, int x,
-                                    int y, int z, std::uint32_t from, CellValue grain) const {
+GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
+                                    std::uint32_t from, CellValue grain) const {
     const auto id = std::size_t(grain);
     // x(n) = g n^2 / 2 exactly at whole steps: each step advances by the mean speed v + g/2.
-    const std::uint64_t travel = std::uint64_t(grains.fall[id].fraction) + grains.fall[id].speed + gravity_ / 2;
-    const std::uint32_t speed = std::min(grains.fall[id].speed + gravity_, kMaxFallSpeed);
+    const std::uint64_t travel = std::uint64_t(falls[id].fraction) + falls[id].speed + gravity_ / 2;
+    const std::uint32_t speed = std::min(falls[id].speed + gravity_, kMaxFallSpeed);
     const int wanted = int(std::min<std::uint64_t>(travel >> 16, std::uint64_t(y)));
     if (wanted == 0) {
-        grains.fall[id].speed = speed;
-        grains.fall[id].fraction = std::uint16_t(travel);
+        falls[id].speed = speed;
+        falls[id].fraction = std::uint16_t(travel);
         return {GranularOutcome::Waiting, {}};
     }
     // Check every cell of the path: the first non-EMPTY one stops the grain above it.
@@ -175,23 +182,21 @@ GranularOutcome GranularRules::fall(CellGrid& grid, GrainStore& grains, std::uin
     while (fallen < wanted && grid[from - std::uint32_t(fallen + 1) * layer] == kEmpty) ++fallen;
     const int landedY = y - fallen;
     if (landedY == 0) { // the grid's bottom layer: an outlet keeps the speed, a floor stops it
-        grains.fall[id].speed = bottomIsOutlet ? speed : 0;
-        grains.fall[id].fraction = 0;
+        falls[id].speed = bottomIsOutlet ? speed : 0;
+        falls[id].fraction = 0;
     } else if (fallen == int(travel >> 16)) { // free flight: nothing touched
-        grains.fall[id].speed = speed;
-        grains.fall[id].fraction = std::uint16_t(travel);
+        falls[id].speed = speed;
+        falls[id].fraction = std::uint16_t(travel);
     } else { // contact: the speed of a grain it lands on (0 when resting), or 0 on a wall
         const CellValue under = grid[from - std::uint32_t(fallen + 1) * layer];
-        grains.fall[id].speed = under >= 0 ? std::min(speed, grains.fall[std::size_t(under)].speed) : 0;
-        grains.fall[id].fraction = 0;
+        falls[id].speed = under >= 0 ? std::min(speed, falls[std::size_t(under)].speed) : 0;
+        falls[id].fraction = 0;
     }
-    moveGrain(grid, grains, grain, from, from - std::uint32_t(fallen) * layer, {0, fallen, 0}, step);
-    return {GranularOutcome::Moved, {x, landedY, z}};
+    return moveGrain(grid, grain, from, from - std::uint32_t(fallen) * layer, {0, fallen, 0}, {x, landedY, z});
 }
 
-GranularOutcome GranularRules::slide(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step,
-                                     std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain,
-                                     bool onVessel) const {
+GranularOutcome GranularRules::slide(CellGrid& grid, std::uint64_t seed, std::uint64_t step, std::uint64_t stream, int x,
+                                     int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const {
     const Int3 size = grid.size();
     const std::int64_t row = size.x, layer = grid.layerSize();
     const CellValue* cells = grid.cells().data();
@@ -258,8 +263,7 @@ GranularOutcome GranularRules::slide(CellGrid& grid, GrainStore& grains, std::ui
     if (count == 0) return {};
     const Offset& o = offsets_[possible[pickBelow(counterRandom(seed, step, stream, from), std::uint32_t(count))]];
     const std::uint32_t to = std::uint32_t(std::int64_t(from) - layer + o.dz * row + o.dx);
-    moveGrain(grid, grains, grain, from, to, {-o.dx, 1, -o.dz}, step);
-    return {GranularOutcome::Moved, {x + o.dx, y - 1, z + o.dz}};
+    return moveGrain(grid, grain, from, to, {-o.dx, 1, -o.dz}, {x + o.dx, y - 1, z + o.dz});
 }
 
 } // namespace sandcore

@@ -49,6 +49,7 @@ struct GranularOutcome {
                  ///< changes speed or leaves (both wake it), so a held column is not visited every step
     } kind = Resting;
     Int3 to{};   ///< the cell it moved to (Moved only)
+    MoveCode cameFrom = kNoMove; ///< offset from `to` back to the cell it left (Moved only): its record's
     bool stopped = false; ///< Resting only: it was in motion and stopped, so whoever rides it must look again
 };
 
@@ -59,8 +60,10 @@ public:
 
     /// Applies the rules to the grain at (x, y, z), y >= 1, of `grid`, for step `step`; `stream`
     /// tells the grids apart in the random draws. bottomIsOutlet: the grid's layer 0 is open
-    /// below (the upper grid), so a grain falling onto it keeps its speed.
-    GranularOutcome visit(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step,
+    /// below (the upper grid), so a grain falling onto it keeps its speed. `falls`: the fall
+    /// states of this grid's grains (GrainStore::fall of its level). A move changes the grid's
+    /// cells only: the caller writes the grain's record from the outcome.
+    GranularOutcome visit(CellGrid& grid, std::span<FallState> falls, std::uint64_t seed, std::uint64_t step,
                           std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z) const;
 
     /// Deepest column a slide ever looks into, cells below the grain's layer.
@@ -95,10 +98,10 @@ public:
     static constexpr int kOffsets = kWindow * kWindow - 1; ///< 48
 
 private:
-    GranularOutcome fall(CellGrid& grid, GrainStore& grains, std::uint64_t step, bool bottomIsOutlet, int x, int y, int z,
+    GranularOutcome fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
                          std::uint32_t from, CellValue grain) const;
-    GranularOutcome slide(CellGrid& grid, GrainStore& grains, std::uint64_t seed, std::uint64_t step, std::uint64_t stream,
-                          int x, int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const;
+    GranularOutcome slide(CellGrid& grid, std::uint64_t seed, std::uint64_t step, std::uint64_t stream, int x, int y,
+                          int z, std::uint32_t from, CellValue grain, bool onVessel) const;
 
     std::array<Offset, kOffsets> offsets_{};
     double slope_ = 0;
@@ -113,10 +116,5 @@ private:
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the
 /// grains find the low-threshold paths, so T lies above tan of the angle).
 double calibratedThresholdSlope(double reposeDegrees);
-
-/// Places `grain`, which left cell `from`, in cell `to` of the same grid; records the move for
-/// display (offset from `to` back to `from`, in cells).
-void moveGrain(CellGrid& grid, GrainStore& grains, CellValue grain, std::uint32_t from, std::uint32_t to, Int3 back,
-               std::uint64_t step);
 
 } // namespace sandcore

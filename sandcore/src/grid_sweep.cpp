@@ -348,8 +348,9 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
         words_[word].occupied &= ~bit;
         return false;
     }
-    const GranularOutcome outcome = granular_->visit(context.grid, context.grains, context.seed, context.step,
-                                                     std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
+    const GranularOutcome outcome =
+        granular_->visit(context.grid, context.grains.fall[std::size_t(context.level)], context.seed, context.step,
+                         std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
     if (outcome.kind == GranularOutcome::Waiting || outcome.stopped) {
         if (outcome.kind == GranularOutcome::Waiting) wakeAt(x, y, z); // in motion: visited again next step
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
@@ -361,7 +362,12 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
     const Int3 to = outcome.to;
     const std::uint32_t toCell = context.grid.index(to.x, to.y, to.z);
     const auto grain = std::uint32_t(context.grid[toCell]);
-    (context.movedList ? *context.movedList : log.moved).push_back(grain); // the rules wrote its record
+    if (context.feed) {
+        context.feed->push({grain, toCell, outcome.cameFrom}); // its record is written by another thread
+    } else {
+        context.grains.recordMove(grain, toCell, outcome.cameFrom, context.step);
+        (context.movedList ? *context.movedList : log.moved).push_back(grain);
+    }
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
     wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
     return true;
@@ -409,6 +415,7 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
                 visit(w * 64 + bit, z);
             }
         }
+        if (context.feed) context.feed->publishSome();
     }
     return totals;
 }
@@ -455,7 +462,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
                 totals.moves += visitCell(context, log, x, y, z) ? 1 : 0;
             }
         }
-        if (!Granular && context.feed) context.feed->publishSome();
+        if (context.feed) context.feed->publishSome();
     }
     return totals;
 }

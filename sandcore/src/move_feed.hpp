@@ -1,5 +1,5 @@
 #pragma once
-// The classic moves of one grid's sweep, handed while the sweep runs to the thread that writes
+// The moves of one grid's sweep, handed while the sweep runs to the thread that writes
 // their grain records (one producer, one consumer). Private to sandcore.
 //
 // When the two grids are swept side by side, grains moving in both at once have nearby ids, so
@@ -16,10 +16,11 @@
 #include <cstdint>
 #include <memory>
 #include <thread>
+#include <vector>
 
 namespace sandcore {
 
-/// One classic move: what its grain's record gets.
+/// One move: what its grain's record gets.
 struct FedMove {
     std::uint32_t grain; ///< its id
     std::uint32_t to;    ///< the cell it entered
@@ -28,8 +29,10 @@ struct FedMove {
 
 class MoveFeed {
 public:
-    /// Before a sweep, by the thread that starts it: room for `moves` moves (a grid's sweep moves
-    /// each of its grains at most once), nothing fed. Fresh room is not written until used.
+    /// Before a sweep, by the thread that starts it: room for `moves` moves, nothing fed. A sweep
+    /// moves each of its grains at most once (every move goes down into a layer it has passed),
+    /// so room for every grain is enough; were that ever not so, the moves beyond the room would
+    /// wait in an overflow until the sweep ends. Fresh room is not written until used.
     void start(std::size_t moves) {
         if (moves > capacity_) {
             moves_ = std::make_unique_for_overwrite<FedMove[]>(moves);
@@ -37,12 +40,18 @@ public:
         }
         size_ = 0;
         sharedSize_ = 0;
+        overflow_.clear();
         published_.store(0, std::memory_order_relaxed);
         done_.store(false, std::memory_order_relaxed);
     }
 
     /// Producer: appends a move, not yet visible to the consumer.
-    void push(const FedMove& move) { moves_[size_++] = move; }
+    void push(const FedMove& move) {
+        if (size_ < capacity_)
+            moves_[size_++] = move;
+        else
+            overflow_.push_back(move); // after every move in the room: drained last, order kept
+    }
     /// Producer: makes the moves appended so far visible, once enough have gathered (each store
     /// pulls the consumer's copy of the counter's cache line away).
     void publishSome() {
@@ -63,7 +72,10 @@ public:
             const std::size_t end = published_.load(std::memory_order_acquire); // final once done
             if (next < end) idle = 0;
             for (; next < end; ++next) write(moves_[next]);
-            if (done) return;
+            if (done) {
+                for (const FedMove& move : overflow_) write(move);
+                return;
+            }
             // The producer is another thread that is running; yield only when it seems not to be.
             if (++idle % 4096 == 0) std::this_thread::yield();
 #if defined(__x86_64__) || defined(__i386__)
@@ -85,6 +97,7 @@ private:
     std::size_t capacity_ = 0;
     std::size_t size_ = 0;       // moves appended
     std::size_t sharedSize_ = 0; // moves published, as the producer last stored it
+    std::vector<FedMove> overflow_; // moves beyond capacity_, read by the consumer once done_
     alignas(64) std::atomic<std::size_t> published_{0};
     std::atomic<bool> done_{false};
 };

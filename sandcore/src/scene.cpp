@@ -14,6 +14,9 @@ namespace sandcore {
 
 namespace {
 
+// Indices of GrainStore::fall.
+constexpr std::size_t kLowerGrid = std::size_t(GridLevel::Lower), kUpperGrid = std::size_t(GridLevel::Upper);
+
 // Drops repeated ids, keeping each one's first place: one bit per grain, set as an id is kept and
 // cleared again afterwards, so the cost follows the list, not the grain count (a sort of the list
 // took about 7% of a granular step).
@@ -88,7 +91,7 @@ void Scene::setPhysics(const PhysicsSettings& physics) {
     validatePhysics(physics);
     settings_.physics = physics;
     configurePhysics();
-    std::fill(grains_.fall.begin(), grains_.fall.end(), FallState{});
+    for (std::vector<FallState>& grid : grains_.fall) std::fill(grid.begin(), grid.end(), FallState{});
     // The new rules read further than the old ones: every grain looks again (a superset of the awake set).
     markEverythingAwake();
 }
@@ -150,11 +153,11 @@ void Scene::step() {
         const std::int64_t upperWork = settings_.sleeping ? upperSweep_->awakeRowCount() : std::int64_t(upper_.cellCount());
         sideBySide = std::min(lowerWork, upperWork) > 0 && 4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
     }
-    // Side by side, classic sweeps feed their moves to the thread that writes the grain records
-    // (move_feed.hpp). Otherwise strips on several threads list their moved grains in their own
+    // Side by side, the sweeps feed their moves to the thread that writes the grain records
+    // (move_feed.hpp); each grid's granular rules keep their fall states in their own array. Otherwise strips on several threads list their moved grains in their own
     // logs, and one thread lists them in movedGrains_ directly.
     movedGrains_.clear();
-    const bool feeding = sideBySide && !granular_;
+    const bool feeding = sideBySide;
     std::vector<std::uint32_t>* movedList = pool ? nullptr : &movedGrains_;
     MoveFeed* lowerFeed = feeding ? &lowerSweep_->feed() : nullptr;
     MoveFeed* upperFeed = feeding ? &upperSweep_->feed() : nullptr;
@@ -267,8 +270,7 @@ void Scene::transitionGranular() {
             ready.push_back(cell);
             return;
         }
-        grains_.fall[std::size_t(grain)].speed = 0; // woken again when that cell empties
-        grains_.fall[std::size_t(grain)].fraction = 0;
+        grains_.fall[kUpperGrid][std::size_t(grain)] = FallState{}; // woken again when that cell empties
     });
     std::size_t passing = ready.size();
     if (neckFlow_) {
@@ -288,7 +290,8 @@ void Scene::transitionGranular() {
         // Grains in the neck row, let through or waiting, move at the flow's speed: a cell a step,
         // so the cell below the neck is free again by the next step and the column above refills
         // the neck row at once. The neck, not the supply around it, sets the rate.
-        if (neckFlow_) grains_.fall[grain].speed = NeckFlow::kFlowSpeed;
+        FallState& fall = grains_.fall[kUpperGrid][grain];
+        if (neckFlow_) fall.speed = NeckFlow::kFlowSpeed;
         if (i >= passing) {
             upperSweep_->wakeAt(c.x, 0, c.z); // waits for a later step
             // Its speed may have changed without a move: the grain resting on it looks again.
@@ -300,6 +303,7 @@ void Scene::transitionGranular() {
         upper_[cell] = kEmpty;
         grains_.level[grain] = GridLevel::Lower;
         grains_.cell[grain] = below;
+        grains_.fall[kLowerGrid][grain] = fall; // its state goes with it into the lower grid's array
         if (grains_.movedAtStep[grain] != step) {
             grains_.cameFrom[grain] = kNoMove;
             grains_.movedAtStep[grain] = step;

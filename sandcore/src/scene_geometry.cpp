@@ -20,12 +20,13 @@ template <class Vector> constexpr std::uint64_t elementBytes() { return sizeof(t
 // Each grid cell: the live cell, a bit of the layout that reset returns to, and the sweep's
 // awake and occupied bits, rounded up to a whole byte.
 constexpr std::uint64_t kBytesPerGridCell = sizeof(CellValue) + 1;
-// One grain's record across GrainStore's arrays (22 bytes today), rounded up to a power of two
-// for the spare capacity the arrays keep as they grow.
+// One grain's record across GrainStore's arrays (41 bytes today: 25 of place and look, 8 of fall
+// state in each grid's array), rounded up to whole 8 bytes (the scenes reserve their grains).
 constexpr std::uint64_t kBytesPerGrain =
-    std::bit_ceil(elementBytes<decltype(GrainStore::level)>() + elementBytes<decltype(GrainStore::cell)>() +
-                  elementBytes<decltype(GrainStore::cameFrom)>() + elementBytes<decltype(GrainStore::movedAtStep)>() +
-                  elementBytes<decltype(GrainStore::identity)>() + elementBytes<decltype(GrainStore::color)>());
+    (elementBytes<decltype(GrainStore::level)>() + elementBytes<decltype(GrainStore::cell)>() +
+     elementBytes<decltype(GrainStore::cameFrom)>() + elementBytes<decltype(GrainStore::movedAtStep)>() +
+     elementBytes<decltype(GrainStore::identity)>() + elementBytes<decltype(GrainStore::color)>() +
+     2 * elementBytes<std::vector<FallState>>() + 7) / 8 * 8;
 // A grain's entry in the scene's fill list (the upper-grid cells that reset fills).
 constexpr std::uint64_t kBytesPerFillEntry = sizeof(std::uint32_t);
 // The voxelizer's inside flag and, in robust mode, its vote count per cell.
@@ -33,7 +34,7 @@ constexpr std::uint64_t kMaskBytesPerCell = elementBytes<decltype(InsideMask::in
 // The canvas starts empty; it keeps room for one poured grain per 8 cells.
 constexpr std::uint64_t kCanvasCellsPerGrain = 8;
 
-static_assert(kBytesPerGridCell == 5 && kBytesPerGrain == 32 && kBytesPerFillEntry == 4 && kMaskBytesPerCell == 2,
+static_assert(kBytesPerGridCell == 5 && kBytesPerGrain == 48 && kBytesPerFillEntry == 4 && kMaskBytesPerCell == 2,
               "the memory estimates changed: check the application's memory limits and their tests");
 
 // Products saturate instead of wrapping, so an absurd size gives an absurd estimate, never a small one.

@@ -97,11 +97,11 @@ void writeGrains(ByteWriter& out, const sandcore::GrainStore& g) {
     out.putArray(g.identity);
     out.putArray(g.color);
     // The file keeps speeds and fractions as two arrays (the format before they shared a record).
-    std::vector<std::uint32_t> speeds(g.fall.size());
-    std::vector<std::uint16_t> fractions(g.fall.size());
-    for (std::size_t i = 0; i < g.fall.size(); ++i) {
-        speeds[i] = g.fall[i].speed;
-        fractions[i] = g.fall[i].fraction;
+    std::vector<std::uint32_t> speeds(g.size());
+    std::vector<std::uint16_t> fractions(g.size());
+    for (std::uint32_t id = 0; id < g.size(); ++id) {
+        speeds[id] = g.fallOf(id).speed;
+        fractions[id] = g.fallOf(id).fraction;
     }
     out.putArray(speeds);
     out.putArray(fractions);
@@ -118,8 +118,11 @@ sandcore::GrainStore readGrains(ByteReader& in) {
     g.color = in.getArray<std::uint32_t>("grain colours", grains);
     const std::vector<std::uint32_t> speeds = in.getArray<std::uint32_t>("grain fall speeds", grains);
     const std::vector<std::uint16_t> fractions = in.getArray<std::uint16_t>("grain fall fractions", grains);
-    g.fall.resize(speeds.size());
-    for (std::size_t i = 0; i < g.fall.size(); ++i) g.fall[i] = {speeds[i], fractions[i]};
+    // Into the array of each grain's grid; a damaged grid byte (which the consistency checks
+    // refuse later) picks the lower one rather than an array that is not there.
+    for (std::vector<sandcore::FallState>& grid : g.fall) grid.assign(speeds.size(), {});
+    for (std::uint32_t id = 0; id < g.size(); ++id)
+        g.fall[g.level[id] == GridLevel::Upper ? 1 : 0][id] = {speeds[id], fractions[id]};
     return g;
 }
 

@@ -67,11 +67,11 @@ TEST_CASE("memory estimates keep the application's numbers per cell") {
     const Int3 mask{10, 20, 30}; // 6000 cells
     CHECK(estimateMaskBytes(mask) == 6000u * 2);
     // A grid cell is 5 bytes (the live cell, a layout bit, the sweep's bits), a grain 32, a fill entry 4.
-    CHECK(estimateSceneBytes(SceneKind::Hourglass, mask) == 6000u * (2 * 5 + 32));
-    CHECK(estimateSceneBytes(SceneKind::Sculpture, mask) == 6000u * (12 * 5 + 32 + 4));
+    CHECK(estimateSceneBytes(SceneKind::Hourglass, mask) == 6000u * (2 * 5 + 48));
+    CHECK(estimateSceneBytes(SceneKind::Sculpture, mask) == 6000u * (12 * 5 + 48 + 4));
     // The canvas counts its grid cells: 60 x 60 x (10 + 40).
-    CHECK(estimateSceneBytes(SceneKind::Canvas, {60, 60, 60}) == 60u * 60 * 50 * 9);
-    CHECK(estimateSceneBytes(SceneKind::Canvas, {60, 0, 0}) == 60u * 60 * 50 * 9); // y and z unused
+    CHECK(estimateSceneBytes(SceneKind::Canvas, {60, 60, 60}) == 60u * 60 * 50 * 11);
+    CHECK(estimateSceneBytes(SceneKind::Canvas, {60, 0, 0}) == 60u * 60 * 50 * 11); // y and z unused
 }
 
 TEST_CASE("memory estimates cover the grids and grains of the scene built") {
@@ -81,9 +81,9 @@ TEST_CASE("memory estimates cover the grids and grains of the scene built") {
         const InsideMask& mask = kind == SceneKind::Hourglass ? vessel : ball;
         const Scene scene = kind == SceneKind::Hourglass ? makeHourglassScene(mask) : makeSculptureScene(mask);
         // The live grid, a layout bit and the sweep's awake and occupied bits for every cell, and
-        // each grain's record (31 bytes of fields).
+        // each grain's record (41 bytes of fields).
         const std::uint64_t gridCells = cells(scene.grid(GridLevel::Upper).size()) + cells(scene.grid(GridLevel::Lower).size());
-        const std::uint64_t held = sizeof(CellValue) * gridCells + 3 * gridCells / 8 + 31u * std::uint64_t(scene.grainCount());
+        const std::uint64_t held = sizeof(CellValue) * gridCells + 3 * gridCells / 8 + 41u * std::uint64_t(scene.grainCount());
         CHECK(estimateSceneBytes(kind, mask.size) >= held);
     }
 }

@@ -2,6 +2,7 @@
 // Per-grain records (structure of arrays), indexed by grain id. Ids are dense: [0, size()).
 // Removing a grain moves the last grain into the freed id, so arrays stay packed for drawing.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -47,8 +48,14 @@ struct GrainStore {
     std::vector<std::uint64_t> movedAtStep;  ///< step number of its last move (0 = never moved)
     std::vector<std::uint32_t> identity;     ///< stable per grain: picks its jitter and pattern
     std::vector<std::uint32_t> color;        ///< RGBA8 (R in the low byte); 0 = the default sand colours
-    /// granular: how each grain falls (classic keeps them at rest; no display effect)
-    std::vector<FallState> fall;
+    /// granular: how each grain falls (classic keeps them at rest; no display effect), one array
+    /// per grid indexed by GridLevel, each indexed by id: a grain's state is in its own grid's
+    /// array (fallOf), the other array's entry means nothing. The two grids are swept side by
+    /// side, and with one array their threads would keep writing the same cache lines.
+    std::array<std::vector<FallState>, 2> fall;
+    /// A grain's fall state, in the array of the grid that holds it.
+    FallState& fallOf(std::uint32_t id) { return fall[std::size_t(level[id])][id]; }
+    const FallState& fallOf(std::uint32_t id) const { return fall[std::size_t(level[id])][id]; } ///< as above
 
     std::uint32_t size() const { return std::uint32_t(cell.size()); } ///< number of grains
     void clear();                                                      ///< removes every grain
