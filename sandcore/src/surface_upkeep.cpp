@@ -75,7 +75,11 @@ bool SurfaceUpkeep::firstLook(GrainSurface& grain, std::uint32_t what) const {
 }
 
 void SurfaceUpkeep::rebuild(const Scene& scene) {
+    trackFlags_ = tracking_.grainFlags;
+    trackGradient_ = trackFlags_ && tracking_.gradientNormals;
+    trackColumns_ = tracking_.columnNormals;
     const GrainStore& grains = scene.grains();
+    grainCount_ = grains.size();
     std::vector<std::uint8_t> inner(grains.size());
     innerCount_ = flagInnerGrains(scene, inner);
     for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
@@ -90,6 +94,14 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
             if (grid[n] >= 0) holds.set(n, true);
             if (grid[n] != kEmpty) hides.set(n, true);
         }
+        seenCells_[index(level)].assign(trackFlags_ ? 0 : grid.cellCount());
+        if (!trackColumns_) {
+            heights_[index(level)] = {};
+            normals_[index(level)] = {};
+            columnStamp_[index(level)] = {};
+            columnListed_[index(level)] = {};
+            continue;
+        }
         std::vector<int>& heights = heights_[index(level)];
         heights = columnHeights(grid);
         std::vector<Vec3>& normals = normals_[index(level)];
@@ -100,8 +112,9 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
         columnStamp_[index(level)].assign(heights.size(), 0);
         columnListed_[index(level)].assign(heights.size(), 0);
     }
-    grains_.assign(grains.size(), GrainSurface{});
-    for (std::uint32_t id = 0; id < grains.size(); ++id) {
+    if (!trackFlags_) grains_ = {};
+    else grains_.assign(grains.size(), GrainSurface{});
+    for (std::uint32_t id = 0; id < grains_.size(); ++id) {
         grains_[id].inner = inner[id];
         if (trackGradient_) grains_[id].gradient = gradientKeyAt(scene, grains.level[id], grains.cell[id]);
     }
@@ -112,7 +125,9 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
     changedInner_.clear();
     changedGradient_.clear();
     changedColumns_.clear();
+    changedCellsListed_.clear();
     rebuilt_ = true;
+    built_ = true;
 }
 
 void SurfaceUpkeep::clearChanges() {
@@ -123,6 +138,7 @@ void SurfaceUpkeep::clearChanges() {
     for (const ColumnRef& ref : changedColumns_) columnListed_[index(ref.level)][ref.column] = 0;
     changedColumns_.clear();
     movedPlaces_.clear();
+    changedCellsListed_.clear();
     rebuilt_ = false;
 }
 
@@ -141,7 +157,7 @@ void SurfaceUpkeep::syncCell(const Scene& scene, GridLevel level, std::uint32_t 
     if (grains.test(cell) == (value >= 0)) return;
     grains.set(cell, value >= 0);
     hideBits_[index(level)].set(cell, value != kEmpty);
-    changedCells_.emplace_back(level, cell);
+    changedCells_.push_back({level, cell});
 }
 
 // The cell a moved grain is in: it holds a grain now, no need to read the grid (a cache miss).
@@ -150,7 +166,7 @@ void SurfaceUpkeep::syncFilledCell(GridLevel level, std::uint32_t cell) {
     if (grains.test(cell)) return;
     grains.set(cell, true);
     hideBits_[index(level)].set(cell, true);
-    changedCells_.emplace_back(level, cell);
+    changedCells_.push_back({level, cell});
 }
 
 // A world cell, in every grid that holds it (the shared row is in both).
@@ -292,15 +308,41 @@ void SurfaceUpkeep::update(const Scene& scene) {
     const GrainStore& grains = scene.grains();
     // A rebuild also restarts the stamps before the 32-bit update number could wrap (after
     // about 3.5e8 steps), when an old stamp could look current.
-    if (grains_.size() != grains.size() || heights_[0].empty() || updateNumber_ > (UINT32_MAX >> 2) - 8) {
+    if (!built_ || grainCount_ != grains.size() || updateNumber_ > (UINT32_MAX >> 2) - 8) {
         rebuild(scene);
         return;
     }
     changedCells_.clear();
     origins_ = {scene.gridOrigin(GridLevel::Lower), scene.gridOrigin(GridLevel::Upper)};
     // First the net changes: after this the bits hold the grids' occupancy again.
-    const std::span<const std::uint32_t> moved = scene.movedGrains();
     const std::size_t firstPlace = movedPlaces_.size();
+    syncMovedGrains(scene);
+    changedCellsListed_.insert(changedCellsListed_.end(), changedCells_.begin(), changedCells_.end());
+    if (trackFlags_) {
+        // A moved grain's flag and normal are about its new cell: look again at each. Grains that
+        // stayed change only next to a net change, in its 6 world neighbours (flag) or its 26
+        // neighbours in its grid (normal); both read only the bits, final by now.
+        ++updateNumber_;
+        for (std::size_t i = firstPlace; i < movedPlaces_.size(); ++i) {
+            const MovedPlace& grain = movedPlaces_[i];
+            const GridLevel level = grain.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+            refreshFlag(scene, level, grain.cell, grain.grain);
+            if (trackGradient_) refreshGradient(scene, level, grain.cell, grain.grain);
+        }
+        for (const auto& [level, cell] : changedCells_) {
+            refreshInnerAround(scene, level, cell);
+            if (trackGradient_) refreshGradientAround(scene, level, cell);
+        }
+    } else {
+        updateInnerCount();
+    }
+    if (trackColumns_) updateHeights(scene);
+}
+
+// The moved grains' cells into the bits, and their places into movedPlaces_.
+void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
+    const GrainStore& grains = scene.grains();
+    const std::span<const std::uint32_t> moved = scene.movedGrains();
     // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
     const auto step = std::uint32_t(scene.counters().stepsDone);
     for (std::size_t i = 0; i < moved.size(); ++i) {
@@ -309,7 +351,7 @@ void SurfaceUpkeep::update(const Scene& scene) {
             prefetch(&grains.level[ahead]);
             prefetch(&grains.cell[ahead]);
             prefetch(&grains.cameFrom[ahead]);
-            prefetch(&grains_[ahead]);
+            if (trackFlags_) prefetch(&grains_[ahead]);
         }
         // Half as far ahead, the grain's fields are in the cache: fetch the cell it left, which
         // syncCell reads (whether another grain filled it).
@@ -323,25 +365,80 @@ void SurfaceUpkeep::update(const Scene& scene) {
             if (from != kNoMove && left >= 0 && left < std::int64_t(grid.cellCount())) prefetch(grid.cells().data() + left);
         }
         const std::uint32_t id = moved[i];
-        list(id, kPlaceListed, changedPlace_);
+        if (trackFlags_) list(id, kPlaceListed, changedPlace_);
         syncCellsOf(scene, id);
         movedPlaces_.push_back({id, grains.cell[id], grains.level[id] == GridLevel::Upper ? 1u : 0u, grains.cameFrom[id], step});
     }
-    // A moved grain's flag and normal are about its new cell: look again at each. Grains that
-    // stayed change only next to a net change, in its 6 world neighbours (flag) or its 26
-    // neighbours in its grid (normal); both read only the bits, final by now.
-    ++updateNumber_;
-    for (std::size_t i = firstPlace; i < movedPlaces_.size(); ++i) {
-        const MovedPlace& grain = movedPlaces_[i];
-        const GridLevel level = grain.level != 0 ? GridLevel::Upper : GridLevel::Lower;
-        refreshFlag(scene, level, grain.cell, grain.grain);
-        if (trackGradient_) refreshGradient(scene, level, grain.cell, grain.grain);
+}
+
+// isInnerGrain from the bits alone, at the grid's edge and across the seam too.
+bool SurfaceUpkeep::hidesFromBits(GridLevel level, int x, int y, int z) const {
+    const GridShape& shape = shapes_[index(level)];
+    if (x < 0 || y < 0 || z < 0 || x >= shape.size.x || y >= shape.size.y || z >= shape.size.z) return true;
+    return hideBits_[index(level)].test(std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y));
+}
+
+bool SurfaceUpkeep::innerFromBits(GridLevel level, Int3 c) const {
+    const GridShape& shape = shapes_[index(level)];
+    if (shape.interior(c)) {
+        const std::uint32_t cell = std::uint32_t(c.x) + shape.row * std::uint32_t(c.z) + shape.layer * std::uint32_t(c.y);
+        const CellBits& hides = hideBits_[index(level)];
+        return (hides.around(cell) & 5u) == 5u && hides.test(cell - shape.row) && hides.test(cell + shape.row) &&
+               hides.test(cell - shape.layer) && hides.test(cell + shape.layer);
     }
-    for (const auto& [level, cell] : changedCells_) {
-        refreshInnerAround(scene, level, cell);
-        if (trackGradient_) refreshGradientAround(scene, level, cell);
+    if (!(hidesFromBits(level, c.x - 1, c.y, c.z) && hidesFromBits(level, c.x + 1, c.y, c.z) &&
+          hidesFromBits(level, c.x, c.y, c.z - 1) && hidesFromBits(level, c.x, c.y, c.z + 1)))
+        return false;
+    const int lowerTop = shapes_[index(GridLevel::Lower)].size.y - 1;
+    const bool above = level == GridLevel::Lower && c.y == lowerTop ? hidesFromBits(GridLevel::Upper, c.x, 1, c.z)
+                                                                   : hidesFromBits(level, c.x, c.y + 1, c.z);
+    const bool below = level == GridLevel::Upper && c.y == 0 ? hidesFromBits(GridLevel::Lower, c.x, lowerTop - 1, c.z)
+                                                             : hidesFromBits(level, c.x, c.y - 1, c.z);
+    return above && below;
+}
+
+// Without per-grain flags: the inner count changes only at the changed cells and their 6 world
+// neighbours (in either grid, as isInnerGrain reads across the seam). Those cells are counted
+// with the bits as before the update (the changed cells flipped back: each went from a grain to
+// EMPTY or back, so both its bits flip) and as after it.
+void SurfaceUpkeep::updateInnerCount() {
+    if (changedCells_.empty()) return;
+    static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    innerCells_.clear();
+    for (const CellRef& changed : changedCells_) {
+        const Int3 c = shapes_[index(changed.level)].coordinate(changed.cell);
+        const Int3 o = origins_[index(changed.level)];
+        for (const Int3& d : kAround)
+            for (GridLevel other : {GridLevel::Lower, GridLevel::Upper}) {
+                const GridShape& shape = shapes_[index(other)];
+                const Int3 origin = origins_[index(other)];
+                const int x = c.x + o.x + d.x - origin.x, y = c.y + o.y + d.y - origin.y, z = c.z + o.z + d.z - origin.z;
+                if (x < 0 || y < 0 || z < 0 || x >= shape.size.x || y >= shape.size.y || z >= shape.size.z) continue;
+                const std::uint32_t n = std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y);
+                CellBits& seen = seenCells_[index(other)];
+                if (seen.test(n)) continue;
+                seen.set(n, true);
+                innerCells_.push_back({other, n});
+            }
     }
-    updateHeights(scene);
+    auto innerAmong = [&] {
+        std::int64_t count = 0;
+        for (const CellRef& ref : innerCells_)
+            if (grainBits_[index(ref.level)].test(ref.cell) && innerFromBits(ref.level, shapes_[index(ref.level)].coordinate(ref.cell)))
+                ++count;
+        return count;
+    };
+    auto flipChanged = [&] {
+        for (const CellRef& ref : changedCells_) {
+            grainBits_[index(ref.level)].flip(ref.cell);
+            hideBits_[index(ref.level)].flip(ref.cell);
+        }
+    };
+    flipChanged();
+    const std::int64_t before = innerAmong();
+    flipChanged();
+    innerCount_ += innerAmong() - before;
+    for (const CellRef& ref : innerCells_) seenCells_[index(ref.level)].set(ref.cell, false);
 }
 
 // Heights: a filled cell can only raise its column; then each touched column scans down from
