@@ -95,6 +95,7 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
             if (grid[n] != kEmpty) hides.set(n, true);
         }
         seenCells_[index(level)].assign(trackFlags_ ? 0 : grid.cellCount());
+        changedMask_[index(level)].assign(trackFlags_ ? 0 : grid.cellCount());
         if (!trackColumns_) {
             heights_[index(level)] = {};
             normals_[index(level)] = {};
@@ -371,74 +372,75 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
     }
 }
 
-// isInnerGrain from the bits alone, at the grid's edge and across the seam too.
-bool SurfaceUpkeep::hidesFromBits(GridLevel level, int x, int y, int z) const {
+// isInnerGrain from the bits alone, at the grid's edge and across the seam too; Before: from the
+// bits as they were before this update (each changed cell went from a grain to EMPTY or back, so
+// both its bits are flipped).
+template <bool Before> bool SurfaceUpkeep::hidesFromBits(GridLevel level, int x, int y, int z) const {
     const GridShape& shape = shapes_[index(level)];
     if (x < 0 || y < 0 || z < 0 || x >= shape.size.x || y >= shape.size.y || z >= shape.size.z) return true;
-    return hideBits_[index(level)].test(std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y));
+    const std::uint32_t n = std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y);
+    return hideBits_[index(level)].test(n) != (Before && changedMask_[index(level)].test(n));
 }
 
-bool SurfaceUpkeep::innerFromBits(GridLevel level, Int3 c) const {
+template <bool Before> bool SurfaceUpkeep::innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) const {
     const GridShape& shape = shapes_[index(level)];
     if (shape.interior(c)) {
-        const std::uint32_t cell = std::uint32_t(c.x) + shape.row * std::uint32_t(c.z) + shape.layer * std::uint32_t(c.y);
         const CellBits& hides = hideBits_[index(level)];
-        return (hides.around(cell) & 5u) == 5u && hides.test(cell - shape.row) && hides.test(cell + shape.row) &&
-               hides.test(cell - shape.layer) && hides.test(cell + shape.layer);
+        const CellBits& changed = changedMask_[index(level)];
+        auto hidesAt = [&](std::uint32_t n) { return hides.test(n) != (Before && changed.test(n)); };
+        const unsigned row = hides.around(cell) ^ (Before ? changed.around(cell) : 0u);
+        return (row & 5u) == 5u && hidesAt(cell - shape.row) && hidesAt(cell + shape.row) && hidesAt(cell - shape.layer) &&
+               hidesAt(cell + shape.layer);
     }
-    if (!(hidesFromBits(level, c.x - 1, c.y, c.z) && hidesFromBits(level, c.x + 1, c.y, c.z) &&
-          hidesFromBits(level, c.x, c.y, c.z - 1) && hidesFromBits(level, c.x, c.y, c.z + 1)))
+    if (!(hidesFromBits<Before>(level, c.x - 1, c.y, c.z) && hidesFromBits<Before>(level, c.x + 1, c.y, c.z) &&
+          hidesFromBits<Before>(level, c.x, c.y, c.z - 1) && hidesFromBits<Before>(level, c.x, c.y, c.z + 1)))
         return false;
     const int lowerTop = shapes_[index(GridLevel::Lower)].size.y - 1;
-    const bool above = level == GridLevel::Lower && c.y == lowerTop ? hidesFromBits(GridLevel::Upper, c.x, 1, c.z)
-                                                                   : hidesFromBits(level, c.x, c.y + 1, c.z);
-    const bool below = level == GridLevel::Upper && c.y == 0 ? hidesFromBits(GridLevel::Lower, c.x, lowerTop - 1, c.z)
-                                                             : hidesFromBits(level, c.x, c.y - 1, c.z);
+    const bool above = level == GridLevel::Lower && c.y == lowerTop ? hidesFromBits<Before>(GridLevel::Upper, c.x, 1, c.z)
+                                                                   : hidesFromBits<Before>(level, c.x, c.y + 1, c.z);
+    const bool below = level == GridLevel::Upper && c.y == 0 ? hidesFromBits<Before>(GridLevel::Lower, c.x, lowerTop - 1, c.z)
+                                                             : hidesFromBits<Before>(level, c.x, c.y - 1, c.z);
     return above && below;
 }
 
 // Without per-grain flags: the inner count changes only at the changed cells and their 6 world
-// neighbours (in either grid, as isInnerGrain reads across the seam). Those cells are counted
-// with the bits as before the update (the changed cells flipped back: each went from a grain to
-// EMPTY or back, so both its bits flip) and as after it.
+// neighbours (in either grid, as isInnerGrain reads across the seam). Each of those cells, once,
+// counts as it is now and as it was before the update (its bits and the changed cells' mask).
 void SurfaceUpkeep::updateInnerCount() {
     if (changedCells_.empty()) return;
     static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    for (const CellRef& ref : changedCells_) changedMask_[index(ref.level)].set(ref.cell, true);
     innerCells_.clear();
+    auto consider = [&](GridLevel level, Int3 p) {
+        const GridShape& shape = shapes_[index(level)];
+        if (p.x < 0 || p.y < 0 || p.z < 0 || p.x >= shape.size.x || p.y >= shape.size.y || p.z >= shape.size.z) return;
+        const std::uint32_t n = std::uint32_t(p.x) + shape.row * std::uint32_t(p.z) + shape.layer * std::uint32_t(p.y);
+        CellBits& seen = seenCells_[index(level)];
+        if (seen.test(n)) return;
+        seen.set(n, true);
+        innerCells_.push_back({level, n, p});
+    };
     for (const CellRef& changed : changedCells_) {
         const Int3 c = shapes_[index(changed.level)].coordinate(changed.cell);
-        const Int3 o = origins_[index(changed.level)];
-        for (const Int3& d : kAround)
-            for (GridLevel other : {GridLevel::Lower, GridLevel::Upper}) {
-                const GridShape& shape = shapes_[index(other)];
-                const Int3 origin = origins_[index(other)];
-                const int x = c.x + o.x + d.x - origin.x, y = c.y + o.y + d.y - origin.y, z = c.z + o.z + d.z - origin.z;
-                if (x < 0 || y < 0 || z < 0 || x >= shape.size.x || y >= shape.size.y || z >= shape.size.z) continue;
-                const std::uint32_t n = std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y);
-                CellBits& seen = seenCells_[index(other)];
-                if (seen.test(n)) continue;
-                seen.set(n, true);
-                innerCells_.push_back({other, n});
-            }
+        for (const Int3& d : kAround) consider(changed.level, {c.x + d.x, c.y + d.y, c.z + d.z});
+        // The other grid holds world neighbours only next to the seam.
+        const GridLevel other = changed.level == GridLevel::Upper ? GridLevel::Lower : GridLevel::Upper;
+        const Int3 o = origins_[index(changed.level)], p = origins_[index(other)];
+        const Int3 there{c.x + o.x - p.x, c.y + o.y - p.y, c.z + o.z - p.z};
+        if (there.y < -1 || there.y > shapes_[index(other)].size.y) continue;
+        for (const Int3& d : kAround) consider(other, {there.x + d.x, there.y + d.y, there.z + d.z});
     }
-    auto innerAmong = [&] {
-        std::int64_t count = 0;
-        for (const CellRef& ref : innerCells_)
-            if (grainBits_[index(ref.level)].test(ref.cell) && innerFromBits(ref.level, shapes_[index(ref.level)].coordinate(ref.cell)))
-                ++count;
-        return count;
-    };
-    auto flipChanged = [&] {
-        for (const CellRef& ref : changedCells_) {
-            grainBits_[index(ref.level)].flip(ref.cell);
-            hideBits_[index(ref.level)].flip(ref.cell);
-        }
-    };
-    flipChanged();
-    const std::int64_t before = innerAmong();
-    flipChanged();
-    innerCount_ += innerAmong() - before;
-    for (const CellRef& ref : innerCells_) seenCells_[index(ref.level)].set(ref.cell, false);
+    std::int64_t change = 0;
+    for (const InnerCandidate& candidate : innerCells_) {
+        const std::size_t g = index(candidate.level);
+        seenCells_[g].set(candidate.cell, false);
+        const bool grainNow = grainBits_[g].test(candidate.cell);
+        const bool grainBefore = grainNow != changedMask_[g].test(candidate.cell);
+        if (grainNow) change += innerFromBits<false>(candidate.level, candidate.cell, candidate.at) ? 1 : 0;
+        if (grainBefore) change -= innerFromBits<true>(candidate.level, candidate.cell, candidate.at) ? 1 : 0;
+    }
+    innerCount_ += change;
+    for (const CellRef& ref : changedCells_) changedMask_[index(ref.level)].set(ref.cell, false);
 }
 
 // Heights: a filled cell can only raise its column; then each touched column scans down from

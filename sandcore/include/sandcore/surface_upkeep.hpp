@@ -144,8 +144,8 @@ private:
     void updateHeights(const Scene& scene);
     void list(std::uint32_t grain, std::uint8_t bit, std::vector<std::uint32_t>& into);
     void syncMovedGrains(const Scene& scene);
-    bool innerFromBits(GridLevel level, Int3 c) const;
-    bool hidesFromBits(GridLevel level, int x, int y, int z) const;
+    template <bool Before> bool innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) const;
+    template <bool Before> bool hidesFromBits(GridLevel level, int x, int y, int z) const;
     void updateInnerCount();
 
     SurfaceTracking tracking_;
@@ -177,8 +177,14 @@ private:
     std::vector<int> heightsBefore_;                      // scratch: their heights before the step
     std::vector<CellRef> changedCells_;                   // scratch: cells the step filled or emptied, net
     std::vector<CellRef> changedCellsListed_;             // changedCells_ of every update since clearChanges
+    struct InnerCandidate {
+        GridLevel level;
+        std::uint32_t cell;
+        Int3 at; // its coordinate
+    };
     std::array<CellBits, 2> seenCells_;                   // scratch: cells in innerCells_ (grainFlags off)
-    std::vector<CellRef> innerCells_;                     // scratch: cells whose inner flag a change may alter
+    std::array<CellBits, 2> changedMask_;                 // scratch: changedCells_ as bits (grainFlags off)
+    std::vector<InnerCandidate> innerCells_;              // scratch: cells whose inner flag a change may alter
 };
 
 } // namespace sandcore

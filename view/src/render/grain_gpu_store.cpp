@@ -5,6 +5,7 @@
 #include "sandcore/display_positions.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <cstddef>
 #include <limits>
@@ -128,6 +129,8 @@ void GrainGpuStore::allocate(BufferTexture& texture, std::size_t bytes, const vo
 }
 
 bool GrainGpuStore::holdsCellBits(const sandcore::Scene& scene) const {
+    const char* setting = std::getenv("SANDGLASS_GPU_CELL_BITS");
+    if (setting != nullptr && std::strcmp(setting, "0") == 0) return false; // per-grain flags, to compare
     std::int64_t words = 0;
     for (sandcore::GridLevel level : kLevels) words += 2 * cellBitWordsOf(scene.grid(level));
     return holds(scene) && words <= maxTexels_;

@@ -17,7 +17,8 @@
 // in one buffer texture of 32-bit words): after a step only the words of the cells that changed
 // go up, a few thousand where tens of thousands of grains moved, and the vertex shader works out
 // each grain's inner flag and gradient normal from them (dropping inner grains itself, so every
-// grain is an instance and no visible list is kept).
+// grain is an instance and no visible list is kept). SANDGLASS_GPU_CELL_BITS=0 in the environment
+// keeps the per-grain flags instead (to compare the two).
 
 #include "view/render/gl_objects.hpp"
 #include "view/render/index_runs.hpp"
