@@ -180,31 +180,6 @@ void SurfaceUpkeep::syncWorldCell(const Scene& scene, Int3 world) {
     }
 }
 
-// The cell a moved grain fills and the one it left: cameFrom back from where it is. Every move
-// goes down within one grid, except that a grain enters the lower grid's top row (the shared
-// row) from the upper grid, resting there (no move) or after a move in the same step: that row
-// goes through world coordinates, the rest stays in the grain's grid.
-void SurfaceUpkeep::syncCellsOf(const Scene& scene, std::uint32_t grain) {
-    const GrainStore& grains = scene.grains();
-    const GridLevel level = grains.level[grain];
-    const std::uint32_t cell = grains.cell[grain];
-    const MoveCode from = grains.cameFrom[grain];
-    syncFilledCell(level, cell);
-    const GridShape& shape = shapes_[index(level)];
-    const bool sharedRow = level == GridLevel::Lower && cell >= shape.layer * std::uint32_t(shape.size.y - 1);
-    if (!sharedRow && from != kNoMove) {
-        const std::int64_t offset =
-            moveDx(from) + std::int64_t(shape.row) * moveDz(from) + std::int64_t(shape.layer) * moveDy(from);
-        syncCell(scene, level, std::uint32_t(std::int64_t(cell) + offset));
-        return;
-    }
-    const Int3 c = shape.coordinate(cell);
-    const Int3 o = origins_[index(level)];
-    const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
-    syncWorldCell(scene, world);
-    if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
-}
-
 // isInnerGrain from the bits; at the grid's edge and across the seam, isInnerGrain itself.
 bool SurfaceUpkeep::innerAt(const Scene& scene, GridLevel level, std::uint32_t cell) const {
     const GridShape& shape = shapes_[index(level)];
@@ -340,12 +315,16 @@ void SurfaceUpkeep::update(const Scene& scene) {
     if (trackColumns_) updateHeights(scene);
 }
 
-// The moved grains' cells into the bits, and their places into movedPlaces_.
+// The moved grains' cells into the bits, and their places into movedPlaces_. Two passes: the
+// first reads each grain (its fields fetched a few grains ahead), marks the cell it fills and
+// lists the cell it left; the second reads the left cells from the grid, each fetched a few
+// ahead from that compact list (no chain of one miss waiting for another).
 void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
     const GrainStore& grains = scene.grains();
     const std::span<const std::uint32_t> moved = scene.movedGrains();
     // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
     const auto step = std::uint32_t(scene.counters().stepsDone);
+    leftCells_.clear();
     for (std::size_t i = 0; i < moved.size(); ++i) {
         if (i + kPrefetchAhead < moved.size()) {
             const std::uint32_t ahead = moved[i + kPrefetchAhead];
@@ -354,21 +333,37 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
             prefetch(&grains.cameFrom[ahead]);
             if (trackFlags_) prefetch(&grains_[ahead]);
         }
-        // Half as far ahead, the grain's fields are in the cache: fetch the cell it left, which
-        // syncCell reads (whether another grain filled it).
-        if (i + kPrefetchAhead / 2 < moved.size()) {
-            const std::uint32_t ahead = moved[i + kPrefetchAhead / 2];
-            const MoveCode from = grains.cameFrom[ahead];
-            const GridShape& shape = shapes_[index(grains.level[ahead])];
-            const std::int64_t left = std::int64_t(grains.cell[ahead]) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
-                                      std::int64_t(shape.layer) * moveDy(from);
-            const CellGrid& grid = scene.grid(grains.level[ahead]);
-            if (from != kNoMove && left >= 0 && left < std::int64_t(grid.cellCount())) prefetch(grid.cells().data() + left);
-        }
         const std::uint32_t id = moved[i];
         if (trackFlags_) list(id, kPlaceListed, changedPlace_);
-        syncCellsOf(scene, id);
-        movedPlaces_.push_back({id, grains.cell[id], grains.level[id] == GridLevel::Upper ? 1u : 0u, grains.cameFrom[id], step});
+        const GridLevel level = grains.level[id];
+        const std::uint32_t cell = grains.cell[id];
+        const MoveCode from = grains.cameFrom[id];
+        movedPlaces_.push_back({id, cell, level == GridLevel::Upper ? 1u : 0u, from, step});
+        syncFilledCell(level, cell);
+        // Every move goes down within one grid, except that a grain enters the lower grid's top
+        // row (the shared row) from the upper grid, resting there (no move) or after a move in
+        // the same step: that row goes through world coordinates, both grids.
+        const GridShape& shape = shapes_[index(level)];
+        const bool sharedRow = level == GridLevel::Lower && cell >= shape.layer * std::uint32_t(shape.size.y - 1);
+        if (!sharedRow && from != kNoMove) {
+            const std::int64_t offset =
+                moveDx(from) + std::int64_t(shape.row) * moveDz(from) + std::int64_t(shape.layer) * moveDy(from);
+            leftCells_.push_back({level, std::uint32_t(std::int64_t(cell) + offset)});
+            continue;
+        }
+        const Int3 c = shape.coordinate(cell);
+        const Int3 o = origins_[index(level)];
+        const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
+        syncWorldCell(scene, world);
+        if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
+    }
+    constexpr std::size_t kCellsAhead = 16;
+    for (std::size_t i = 0; i < leftCells_.size(); ++i) {
+        if (i + kCellsAhead < leftCells_.size()) {
+            const CellRef& ahead = leftCells_[i + kCellsAhead];
+            prefetch(scene.grid(ahead.level).cells().data() + ahead.cell);
+        }
+        syncCell(scene, leftCells_[i].level, leftCells_[i].cell);
     }
 }
 
@@ -436,6 +431,22 @@ void SurfaceUpkeep::updateInnerCount() {
         seenCells_[g].set(candidate.cell, false);
         const bool grainNow = grainBits_[g].test(candidate.cell);
         const bool grainBefore = grainNow != changedMask_[g].test(candidate.cell);
+        if (!grainNow && !grainBefore) continue;
+        const GridShape& shape = shapes_[g];
+        if (shape.interior(candidate.at)) { // the usual case: both looks in one pass over the 6 neighbours
+            const CellBits& hides = hideBits_[g];
+            const CellBits& changed = changedMask_[g];
+            const unsigned row = hides.around(candidate.cell), flipped = changed.around(candidate.cell);
+            bool now = (row & 5u) == 5u, before = ((row ^ flipped) & 5u) == 5u;
+            for (const std::uint32_t n : {candidate.cell - shape.row, candidate.cell + shape.row, candidate.cell - shape.layer,
+                                          candidate.cell + shape.layer}) {
+                const bool hidesNow = hides.test(n);
+                now = now && hidesNow;
+                before = before && hidesNow != changed.test(n);
+            }
+            change += (grainNow && now ? 1 : 0) - (grainBefore && before ? 1 : 0);
+            continue;
+        }
         if (grainNow) change += innerFromBits<false>(candidate.level, candidate.cell, candidate.at) ? 1 : 0;
         if (grainBefore) change -= innerFromBits<true>(candidate.level, candidate.cell, candidate.at) ? 1 : 0;
     }

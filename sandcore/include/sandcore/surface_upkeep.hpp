@@ -134,7 +134,6 @@ private:
     void syncCell(const Scene& scene, GridLevel level, std::uint32_t cell);
     void syncFilledCell(GridLevel level, std::uint32_t cell);
     void syncWorldCell(const Scene& scene, Int3 world);
-    void syncCellsOf(const Scene& scene, std::uint32_t grain);
     bool innerAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
     std::uint16_t gradientKeyAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
     void refreshFlag(const Scene& scene, GridLevel level, std::uint32_t cell, std::uint32_t grain);
@@ -176,6 +175,7 @@ private:
     std::vector<ColumnRef> touchedColumns_;               // scratch: columns whose height may have changed
     std::vector<int> heightsBefore_;                      // scratch: their heights before the step
     std::vector<CellRef> changedCells_;                   // scratch: cells the step filled or emptied, net
+    std::vector<CellRef> leftCells_;                      // scratch: cells the moved grains left (their grid)
     std::vector<CellRef> changedCellsListed_;             // changedCells_ of every update since clearChanges
     struct InnerCandidate {
         GridLevel level;
