@@ -316,15 +316,15 @@ void SurfaceUpkeep::update(const Scene& scene) {
 }
 
 // The moved grains' cells into the bits, and their places into movedPlaces_. Two passes: the
-// first reads each grain (its fields fetched a few grains ahead), marks the cell it fills and
-// lists the cell it left; the second reads the left cells from the grid, each fetched a few
-// ahead from that compact list (no chain of one miss waiting for another).
+// first reads each grain (its fields fetched a few grains ahead) and lists the cell it fills and
+// the cell it left; the second syncs those cells from a compact list, their bits and the left
+// cell's grid entry fetched a few ahead (no chain of one miss waiting for another).
 void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
     const GrainStore& grains = scene.grains();
     const std::span<const std::uint32_t> moved = scene.movedGrains();
     // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
     const auto step = std::uint32_t(scene.counters().stepsDone);
-    leftCells_.clear();
+    movedCells_.clear();
     for (std::size_t i = 0; i < moved.size(); ++i) {
         if (i + kPrefetchAhead < moved.size()) {
             const std::uint32_t ahead = moved[i + kPrefetchAhead];
@@ -339,7 +339,6 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
         const std::uint32_t cell = grains.cell[id];
         const MoveCode from = grains.cameFrom[id];
         movedPlaces_.push_back({id, cell, level == GridLevel::Upper ? 1u : 0u, from, step});
-        syncFilledCell(level, cell);
         // Every move goes down within one grid, except that a grain enters the lower grid's top
         // row (the shared row) from the upper grid, resting there (no move) or after a move in
         // the same step: that row goes through world coordinates, both grids.
@@ -348,9 +347,10 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
         if (!sharedRow && from != kNoMove) {
             const std::int64_t offset =
                 moveDx(from) + std::int64_t(shape.row) * moveDz(from) + std::int64_t(shape.layer) * moveDy(from);
-            leftCells_.push_back({level, std::uint32_t(std::int64_t(cell) + offset)});
+            movedCells_.push_back({level, cell, std::uint32_t(std::int64_t(cell) + offset)});
             continue;
         }
+        syncFilledCell(level, cell);
         const Int3 c = shape.coordinate(cell);
         const Int3 o = origins_[index(level)];
         const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
@@ -358,12 +358,16 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
         if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
     }
     constexpr std::size_t kCellsAhead = 16;
-    for (std::size_t i = 0; i < leftCells_.size(); ++i) {
-        if (i + kCellsAhead < leftCells_.size()) {
-            const CellRef& ahead = leftCells_[i + kCellsAhead];
-            prefetch(scene.grid(ahead.level).cells().data() + ahead.cell);
+    for (std::size_t i = 0; i < movedCells_.size(); ++i) {
+        if (i + kCellsAhead < movedCells_.size()) {
+            const MovedCells& ahead = movedCells_[i + kCellsAhead];
+            prefetch(scene.grid(ahead.level).cells().data() + ahead.left);
+            prefetch(grainBits_[index(ahead.level)].byteOf(ahead.filled));
+            prefetch(grainBits_[index(ahead.level)].byteOf(ahead.left));
         }
-        syncCell(scene, leftCells_[i].level, leftCells_[i].cell);
+        const MovedCells& cells = movedCells_[i];
+        syncFilledCell(cells.level, cells.filled);
+        syncCell(scene, cells.level, cells.left);
     }
 }
 

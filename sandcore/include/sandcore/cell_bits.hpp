@@ -59,6 +59,8 @@ public:
         std::uint8_t& byte = bytes_[n >> 3];
         byte = std::uint8_t(on ? byte | (1u << (n & 7u)) : byte & ~(1u << (n & 7u)));
     }
+    /// The address of the byte holding cell n's bit (to fetch it ahead).
+    const std::uint8_t* byteOf(std::uint32_t n) const { return bytes_.data() + (n >> 3); }
     void flip(std::uint32_t n) { bytes_[n >> 3] = std::uint8_t(bytes_[n >> 3] ^ (1u << (n & 7u))); }
     /// 32-bit words in the bits (cell n is bit n % 32 of word n / 32).
     std::uint32_t wordCount() const { return std::uint32_t(bytes_.size() / 4); }
