@@ -94,8 +94,6 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
             if (grid[n] >= 0) holds.set(n, true);
             if (grid[n] != kEmpty) hides.set(n, true);
         }
-        seenCells_[index(level)].assign(trackFlags_ ? 0 : grid.cellCount());
-        changedMask_[index(level)].assign(trackFlags_ ? 0 : grid.cellCount());
         if (!trackColumns_) {
             heights_[index(level)] = {};
             normals_[index(level)] = {};
@@ -156,18 +154,78 @@ void SurfaceUpkeep::syncCell(const Scene& scene, GridLevel level, std::uint32_t 
     const CellValue value = scene.grid(level)[cell];
     CellBits& grains = grainBits_[index(level)];
     if (grains.test(cell) == (value >= 0)) return;
-    grains.set(cell, value >= 0);
-    hideBits_[index(level)].set(cell, value != kEmpty);
-    changedCells_.push_back({level, cell});
+    changeCell(level, cell, value >= 0); // a step only moves grains: EMPTY or a grain, never INVALID
 }
 
 // The cell a moved grain is in: it holds a grain now, no need to read the grid (a cache miss).
 void SurfaceUpkeep::syncFilledCell(GridLevel level, std::uint32_t cell) {
     CellBits& grains = grainBits_[index(level)];
     if (grains.test(cell)) return;
-    grains.set(cell, true);
-    hideBits_[index(level)].set(cell, true);
-    changedCells_.push_back({level, cell});
+    changeCell(level, cell, true);
+}
+
+// A net change: the cell now holds a grain (filled) or is EMPTY. Without per-grain flags the
+// inner count follows each change as it is made: only the cell and its 6 world neighbours can
+// change their flag, so the count moves by their flags after the change less their flags before
+// (a sum of such steps is the change of the whole update, whatever the order).
+void SurfaceUpkeep::changeCell(GridLevel level, std::uint32_t cell, bool filled) {
+    auto apply = [&] {
+        grainBits_[index(level)].set(cell, filled);
+        hideBits_[index(level)].set(cell, filled);
+        changedCells_.push_back({level, cell});
+    };
+    if (trackFlags_) return apply();
+    const GridShape& shape = shapes_[index(level)];
+    const Int3 c = shape.coordinate(cell);
+    if (c.x >= 2 && c.z >= 2 && c.y >= 2 && c.x + 2 < shape.size.x && c.z + 2 < shape.size.z && c.y + 2 < shape.size.y) {
+        // Two cells from every face and the seam: all the flags involved lie in this grid.
+        const std::int64_t inner = innerChangeInside(level, cell);
+        apply();
+        innerCount_ += filled ? inner : -inner;
+        return;
+    }
+    const std::int64_t before = innerAround(level, c);
+    apply();
+    innerCount_ += innerAround(level, c) - before;
+}
+
+// The inner grains among a cell and its 6 world neighbours, in either grid (from the bits).
+std::int64_t SurfaceUpkeep::innerAround(GridLevel level, Int3 c) const {
+    static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    const Int3 o = origins_[index(level)];
+    std::int64_t inner = 0;
+    for (GridLevel other : {GridLevel::Lower, GridLevel::Upper}) {
+        const GridShape& shape = shapes_[index(other)];
+        const Int3 p = origins_[index(other)];
+        for (const Int3& d : kAround) {
+            const Int3 at{c.x + o.x - p.x + d.x, c.y + o.y - p.y + d.y, c.z + o.z - p.z + d.z};
+            if (at.x < 0 || at.y < 0 || at.z < 0 || at.x >= shape.size.x || at.y >= shape.size.y || at.z >= shape.size.z) continue;
+            const std::uint32_t n = std::uint32_t(at.x) + shape.row * std::uint32_t(at.z) + shape.layer * std::uint32_t(at.y);
+            if (grainBits_[index(other)].test(n) && innerFromBits(other, n, at)) ++inner;
+        }
+    }
+    return inner;
+}
+
+// Away from faces and seam, what filling `cell` adds to the inner count (emptying it takes as
+// much away), read before the change without reading the cell's own bits: its own flag (its 6
+// neighbours hide), and each neighbour grain whose 5 other neighbours hide (the cell decides it).
+std::int64_t SurfaceUpkeep::innerChangeInside(GridLevel level, std::uint32_t cell) const {
+    const GridShape& shape = shapes_[index(level)];
+    const CellBits& grains = grainBits_[index(level)];
+    const CellBits& hides = hideBits_[index(level)];
+    const std::uint32_t around[6] = {cell - 1, cell + 1, cell - shape.row, cell + shape.row, cell - shape.layer, cell + shape.layer};
+    bool hidden = true;
+    for (const std::uint32_t n : around) hidden = hidden && hides.test(n);
+    std::int64_t inner = hidden ? 1 : 0;
+    for (const std::uint32_t n : around) {
+        if (!grains.test(n)) continue;
+        bool othersHide = true;
+        for (const std::uint32_t m : {n - 1, n + 1, n - shape.row, n + shape.row, n - shape.layer, n + shape.layer})
+            if (m != cell) othersHide = othersHide && hides.test(m);
+        inner += othersHide ? 1 : 0;
+    }
+    return inner;
 }
 
 // A world cell, in every grid that holds it (the shared row is in both).
@@ -309,8 +367,6 @@ void SurfaceUpkeep::update(const Scene& scene) {
             refreshInnerAround(scene, level, cell);
             if (trackGradient_) refreshGradientAround(scene, level, cell);
         }
-    } else {
-        updateInnerCount();
     }
     if (trackColumns_) updateHeights(scene);
 }
@@ -371,91 +427,29 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
     }
 }
 
-// isInnerGrain from the bits alone, at the grid's edge and across the seam too; Before: from the
-// bits as they were before this update (each changed cell went from a grain to EMPTY or back, so
-// both its bits are flipped).
-template <bool Before> bool SurfaceUpkeep::hidesFromBits(GridLevel level, int x, int y, int z) const {
+// isInnerGrain from the bits alone, at the grid's edge and across the seam too.
+bool SurfaceUpkeep::hidesFromBits(GridLevel level, int x, int y, int z) const {
     const GridShape& shape = shapes_[index(level)];
     if (x < 0 || y < 0 || z < 0 || x >= shape.size.x || y >= shape.size.y || z >= shape.size.z) return true;
-    const std::uint32_t n = std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y);
-    return hideBits_[index(level)].test(n) != (Before && changedMask_[index(level)].test(n));
+    return hideBits_[index(level)].test(std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y));
 }
 
-template <bool Before> bool SurfaceUpkeep::innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) const {
+bool SurfaceUpkeep::innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) const {
     const GridShape& shape = shapes_[index(level)];
     if (shape.interior(c)) {
         const CellBits& hides = hideBits_[index(level)];
-        const CellBits& changed = changedMask_[index(level)];
-        auto hidesAt = [&](std::uint32_t n) { return hides.test(n) != (Before && changed.test(n)); };
-        const unsigned row = hides.around(cell) ^ (Before ? changed.around(cell) : 0u);
-        return (row & 5u) == 5u && hidesAt(cell - shape.row) && hidesAt(cell + shape.row) && hidesAt(cell - shape.layer) &&
-               hidesAt(cell + shape.layer);
+        return (hides.around(cell) & 5u) == 5u && hides.test(cell - shape.row) && hides.test(cell + shape.row) &&
+               hides.test(cell - shape.layer) && hides.test(cell + shape.layer);
     }
-    if (!(hidesFromBits<Before>(level, c.x - 1, c.y, c.z) && hidesFromBits<Before>(level, c.x + 1, c.y, c.z) &&
-          hidesFromBits<Before>(level, c.x, c.y, c.z - 1) && hidesFromBits<Before>(level, c.x, c.y, c.z + 1)))
+    if (!(hidesFromBits(level, c.x - 1, c.y, c.z) && hidesFromBits(level, c.x + 1, c.y, c.z) &&
+          hidesFromBits(level, c.x, c.y, c.z - 1) && hidesFromBits(level, c.x, c.y, c.z + 1)))
         return false;
     const int lowerTop = shapes_[index(GridLevel::Lower)].size.y - 1;
-    const bool above = level == GridLevel::Lower && c.y == lowerTop ? hidesFromBits<Before>(GridLevel::Upper, c.x, 1, c.z)
-                                                                   : hidesFromBits<Before>(level, c.x, c.y + 1, c.z);
-    const bool below = level == GridLevel::Upper && c.y == 0 ? hidesFromBits<Before>(GridLevel::Lower, c.x, lowerTop - 1, c.z)
-                                                             : hidesFromBits<Before>(level, c.x, c.y - 1, c.z);
+    const bool above = level == GridLevel::Lower && c.y == lowerTop ? hidesFromBits(GridLevel::Upper, c.x, 1, c.z)
+                                                                   : hidesFromBits(level, c.x, c.y + 1, c.z);
+    const bool below = level == GridLevel::Upper && c.y == 0 ? hidesFromBits(GridLevel::Lower, c.x, lowerTop - 1, c.z)
+                                                             : hidesFromBits(level, c.x, c.y - 1, c.z);
     return above && below;
-}
-
-// Without per-grain flags: the inner count changes only at the changed cells and their 6 world
-// neighbours (in either grid, as isInnerGrain reads across the seam). Each of those cells, once,
-// counts as it is now and as it was before the update (its bits and the changed cells' mask).
-void SurfaceUpkeep::updateInnerCount() {
-    if (changedCells_.empty()) return;
-    static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
-    for (const CellRef& ref : changedCells_) changedMask_[index(ref.level)].set(ref.cell, true);
-    innerCells_.clear();
-    auto consider = [&](GridLevel level, Int3 p) {
-        const GridShape& shape = shapes_[index(level)];
-        if (p.x < 0 || p.y < 0 || p.z < 0 || p.x >= shape.size.x || p.y >= shape.size.y || p.z >= shape.size.z) return;
-        const std::uint32_t n = std::uint32_t(p.x) + shape.row * std::uint32_t(p.z) + shape.layer * std::uint32_t(p.y);
-        CellBits& seen = seenCells_[index(level)];
-        if (seen.test(n)) return;
-        seen.set(n, true);
-        innerCells_.push_back({level, n, p});
-    };
-    for (const CellRef& changed : changedCells_) {
-        const Int3 c = shapes_[index(changed.level)].coordinate(changed.cell);
-        for (const Int3& d : kAround) consider(changed.level, {c.x + d.x, c.y + d.y, c.z + d.z});
-        // The other grid holds world neighbours only next to the seam.
-        const GridLevel other = changed.level == GridLevel::Upper ? GridLevel::Lower : GridLevel::Upper;
-        const Int3 o = origins_[index(changed.level)], p = origins_[index(other)];
-        const Int3 there{c.x + o.x - p.x, c.y + o.y - p.y, c.z + o.z - p.z};
-        if (there.y < -1 || there.y > shapes_[index(other)].size.y) continue;
-        for (const Int3& d : kAround) consider(other, {there.x + d.x, there.y + d.y, there.z + d.z});
-    }
-    std::int64_t change = 0;
-    for (const InnerCandidate& candidate : innerCells_) {
-        const std::size_t g = index(candidate.level);
-        seenCells_[g].set(candidate.cell, false);
-        const bool grainNow = grainBits_[g].test(candidate.cell);
-        const bool grainBefore = grainNow != changedMask_[g].test(candidate.cell);
-        if (!grainNow && !grainBefore) continue;
-        const GridShape& shape = shapes_[g];
-        if (shape.interior(candidate.at)) { // the usual case: both looks in one pass over the 6 neighbours
-            const CellBits& hides = hideBits_[g];
-            const CellBits& changed = changedMask_[g];
-            const unsigned row = hides.around(candidate.cell), flipped = changed.around(candidate.cell);
-            bool now = (row & 5u) == 5u, before = ((row ^ flipped) & 5u) == 5u;
-            for (const std::uint32_t n : {candidate.cell - shape.row, candidate.cell + shape.row, candidate.cell - shape.layer,
-                                          candidate.cell + shape.layer}) {
-                const bool hidesNow = hides.test(n);
-                now = now && hidesNow;
-                before = before && hidesNow != changed.test(n);
-            }
-            change += (grainNow && now ? 1 : 0) - (grainBefore && before ? 1 : 0);
-            continue;
-        }
-        if (grainNow) change += innerFromBits<false>(candidate.level, candidate.cell, candidate.at) ? 1 : 0;
-        if (grainBefore) change -= innerFromBits<true>(candidate.level, candidate.cell, candidate.at) ? 1 : 0;
-    }
-    innerCount_ += change;
-    for (const CellRef& ref : changedCells_) changedMask_[index(ref.level)].set(ref.cell, false);
 }
 
 // Heights: a filled cell can only raise its column; then each touched column scans down from

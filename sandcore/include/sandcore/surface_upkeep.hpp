@@ -143,9 +143,11 @@ private:
     void updateHeights(const Scene& scene);
     void list(std::uint32_t grain, std::uint8_t bit, std::vector<std::uint32_t>& into);
     void syncMovedGrains(const Scene& scene);
-    template <bool Before> bool innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) const;
-    template <bool Before> bool hidesFromBits(GridLevel level, int x, int y, int z) const;
-    void updateInnerCount();
+    void changeCell(GridLevel level, std::uint32_t cell, bool filled);
+    std::int64_t innerAround(GridLevel level, Int3 c) const;
+    std::int64_t innerChangeInside(GridLevel level, std::uint32_t cell) const;
+    bool innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) const;
+    bool hidesFromBits(GridLevel level, int x, int y, int z) const;
 
     SurfaceTracking tracking_;
     bool trackGradient_ = false;                        // as of the last rebuild: tracking_'s
@@ -181,14 +183,6 @@ private:
     };
     std::vector<MovedCells> movedCells_;                  // scratch: the cells a moved grain filled and left
     std::vector<CellRef> changedCellsListed_;             // changedCells_ of every update since clearChanges
-    struct InnerCandidate {
-        GridLevel level;
-        std::uint32_t cell;
-        Int3 at; // its coordinate
-    };
-    std::array<CellBits, 2> seenCells_;                   // scratch: cells in innerCells_ (grainFlags off)
-    std::array<CellBits, 2> changedMask_;                 // scratch: changedCells_ as bits (grainFlags off)
-    std::vector<InnerCandidate> innerCells_;              // scratch: cells whose inner flag a change may alter
 };
 
 } // namespace sandcore
