@@ -372,15 +372,28 @@ void SurfaceUpkeep::update(const Scene& scene) {
 }
 
 // The moved grains' cells into the bits, and their places into movedPlaces_. Two passes: the
-// first reads each grain (its fields fetched a few grains ahead) and lists the cell it fills and
-// the cell it left; the second syncs those cells from a compact list, their bits and the left
-// cell's grid entry fetched a few ahead (no chain of one miss waiting for another).
+// first reads each grain (its fields fetched a few grains ahead) into movedPlaces_; the second
+// syncs the cell each fills and the cell it left from that compact list, their bits and the left
+// cell's grid entry fetched a few ahead (no chain of one miss waiting for another). Every move
+// goes down within one grid, except that a grain enters the lower grid's top row (the shared
+// row) from the upper grid, resting there (no move) or after a move in the same step: such
+// places go through world coordinates, both grids, in the first pass.
 void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
     const GrainStore& grains = scene.grains();
     const std::span<const std::uint32_t> moved = scene.movedGrains();
     // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
     const auto step = std::uint32_t(scene.counters().stepsDone);
-    movedCells_.clear();
+    const std::size_t first = movedPlaces_.size();
+    auto withinGrid = [&](const MovedPlace& place) {
+        const GridShape& shape = shapes_[place.level];
+        return place.cameFrom != kNoMove && (place.level != 0 || place.cell < shape.layer * std::uint32_t(shape.size.y - 1));
+    };
+    auto leftCell = [&](const MovedPlace& place) {
+        const GridShape& shape = shapes_[place.level];
+        const MoveCode from = place.cameFrom;
+        return std::uint32_t(std::int64_t(place.cell) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
+                             std::int64_t(shape.layer) * moveDy(from));
+    };
     for (std::size_t i = 0; i < moved.size(); ++i) {
         if (i + kPrefetchAhead < moved.size()) {
             const std::uint32_t ahead = moved[i + kPrefetchAhead];
@@ -391,39 +404,36 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
         }
         const std::uint32_t id = moved[i];
         if (trackFlags_) list(id, kPlaceListed, changedPlace_);
-        const GridLevel level = grains.level[id];
-        const std::uint32_t cell = grains.cell[id];
-        const MoveCode from = grains.cameFrom[id];
-        movedPlaces_.push_back({id, cell, level == GridLevel::Upper ? 1u : 0u, from, step});
-        // Every move goes down within one grid, except that a grain enters the lower grid's top
-        // row (the shared row) from the upper grid, resting there (no move) or after a move in
-        // the same step: that row goes through world coordinates, both grids.
-        const GridShape& shape = shapes_[index(level)];
-        const bool sharedRow = level == GridLevel::Lower && cell >= shape.layer * std::uint32_t(shape.size.y - 1);
-        if (!sharedRow && from != kNoMove) {
-            const std::int64_t offset =
-                moveDx(from) + std::int64_t(shape.row) * moveDz(from) + std::int64_t(shape.layer) * moveDy(from);
-            movedCells_.push_back({level, cell, std::uint32_t(std::int64_t(cell) + offset)});
-            continue;
-        }
-        syncFilledCell(level, cell);
-        const Int3 c = shape.coordinate(cell);
-        const Int3 o = origins_[index(level)];
+        const MovedPlace& place =
+            movedPlaces_.emplace_back(MovedPlace{id, grains.cell[id], grains.level[id] == GridLevel::Upper ? 1u : 0u, grains.cameFrom[id], step});
+        if (withinGrid(place)) continue;
+        const GridLevel level = place.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+        syncFilledCell(level, place.cell);
+        const Int3 c = shapes_[place.level].coordinate(place.cell);
+        const Int3 o = origins_[place.level];
         const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
         syncWorldCell(scene, world);
+        const MoveCode from = place.cameFrom;
         if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
     }
     constexpr std::size_t kCellsAhead = 16;
-    for (std::size_t i = 0; i < movedCells_.size(); ++i) {
-        if (i + kCellsAhead < movedCells_.size()) {
-            const MovedCells& ahead = movedCells_[i + kCellsAhead];
-            prefetch(scene.grid(ahead.level).cells().data() + ahead.left);
-            prefetch(grainBits_[index(ahead.level)].byteOf(ahead.filled));
-            prefetch(grainBits_[index(ahead.level)].byteOf(ahead.left));
+    const std::size_t end = movedPlaces_.size();
+    for (std::size_t i = first; i < end; ++i) {
+        if (i + kCellsAhead < end) {
+            const MovedPlace& ahead = movedPlaces_[i + kCellsAhead];
+            if (withinGrid(ahead)) {
+                const GridLevel level = ahead.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+                const std::uint32_t left = leftCell(ahead);
+                prefetch(scene.grid(level).cells().data() + left);
+                prefetch(grainBits_[ahead.level].byteOf(ahead.cell));
+                prefetch(grainBits_[ahead.level].byteOf(left));
+            }
         }
-        const MovedCells& cells = movedCells_[i];
-        syncFilledCell(cells.level, cells.filled);
-        syncCell(scene, cells.level, cells.left);
+        const MovedPlace& place = movedPlaces_[i];
+        if (!withinGrid(place)) continue;
+        const GridLevel level = place.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+        syncFilledCell(level, place.cell);
+        syncCell(scene, level, leftCell(place));
     }
 }
 

@@ -177,11 +177,6 @@ private:
     std::vector<ColumnRef> touchedColumns_;               // scratch: columns whose height may have changed
     std::vector<int> heightsBefore_;                      // scratch: their heights before the step
     std::vector<CellRef> changedCells_;                   // scratch: cells the step filled or emptied, net
-    struct MovedCells {
-        GridLevel level;
-        std::uint32_t filled, left; // in that grid
-    };
-    std::vector<MovedCells> movedCells_;                  // scratch: the cells a moved grain filled and left
     std::vector<CellRef> changedCellsListed_;             // changedCells_ of every update since clearChanges
 };
 
