@@ -104,15 +104,25 @@ const vec2 corners[4] = vec2[4](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 
 void main() {
     int id = (showInner || flagsFromBits) ? gl_InstanceID : int(visibleGrain);
     uvec4 grainPlace = texelFetch(grainPlaces, id);
-    uvec2 look = texelFetch(grainLooks, id).xy;
-    uint grainIdentity = look.x;
-    uint grainColor = look.y;
-    vec3 grainJitter = texelFetch(grainJitters, id).xyz;
     bool upper = (grainPlace.y & 1u) != 0u;
     ivec3 size = upper ? upperSize : lowerSize;
     uint cell = grainPlace.x;
     uint rest = cell / uint(size.x);
     ivec3 local = ivec3(int(cell % uint(size.x)), int(rest / uint(size.z)), int(rest % uint(size.z)));
+    if (flagsFromBits && !showInner && innerGrain(upper, local)) {
+        // Hidden: outside the clip volume, so nothing of it is drawn (decided before anything
+        // else is fetched: most grains of a full bulb are inner).
+        displayPosition = vec3(0.0);
+        shadedColor = vec3(0.0);
+        quadCorner = vec2(0.0);
+        gl_PointSize = 1.0;
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    uvec2 look = texelFetch(grainLooks, id).xy;
+    uint grainIdentity = look.x;
+    uint grainColor = look.y;
+    vec3 grainJitter = texelFetch(grainJitters, id).xyz;
     ivec3 worldCell = local + (upper ? upperOrigin : ivec3(0));
     vec3 ahead = vec3(0.0);
     if (grainPlace.w == currentStep && stepRemaining > 0.0 && grainPlace.z != kNoMove) {
@@ -122,14 +132,6 @@ void main() {
     }
     vec3 grainPosition = (vec3(worldCell) + 0.5 + grainJitter + ahead) * cellSize;
     displayPosition = grainPosition;
-    if (flagsFromBits && !showInner && innerGrain(upper, local)) {
-        // Hidden: outside the clip volume, so nothing of it is drawn.
-        shadedColor = vec3(0.0);
-        quadCorner = vec2(0.0);
-        gl_PointSize = 1.0;
-        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
-        return;
-    }
     uint packedNormal = 0u;
     if (normalSource == 2) packedNormal = lighting ? texelFetch(gradientNormalTable, gradientKey(upper, local)).r : 0u;
     else if (normalSource == 1) packedNormal = texelFetch(grainNormals, id).r;
