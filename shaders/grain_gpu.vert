@@ -132,10 +132,12 @@ void main() {
     }
     vec3 grainPosition = (vec3(worldCell) + 0.5 + grainJitter + ahead) * cellSize;
     displayPosition = grainPosition;
-    uint packedNormal = 0u;
-    if (normalSource == 2) packedNormal = lighting ? texelFetch(gradientNormalTable, gradientKey(upper, local)).r : 0u;
-    else if (normalSource == 1) packedNormal = texelFetch(grainNormals, id).r;
-    else packedNormal = texelFetch(columnNormals, ivec2(local.x, local.z + (upper ? size.z : 0)), 0).r;
+    uint packedNormal = 0u; // unlit: not read
+    if (lighting) {
+        if (normalSource == 2) packedNormal = texelFetch(gradientNormalTable, gradientKey(upper, local)).r;
+        else if (normalSource == 1) packedNormal = texelFetch(grainNormals, id).r;
+        else packedNormal = texelFetch(columnNormals, ivec2(local.x, local.z + (upper ? size.z : 0)), 0).r;
+    }
     vec3 normal = unpackNormal(packedNormal);
 
     bool quads = mode >= 2;
