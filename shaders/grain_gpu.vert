@@ -4,7 +4,10 @@
 // here exactly as sandcore::grainDisplayPosition does (R8): (world cell + 1/2 + jitter + the
 // share of the move still ahead) * cellSize, summed in the same order, never accumulated.
 // gl_VertexID picks the sub-grain (thesis §3.8 "Scribble") and, for quads, the corner; when
-// inner grains are hidden, the instances are the visible list's ids.
+// inner grains are hidden, the instances are the visible list's ids, or, when the store holds the
+// cells' occupancy bits (flagsFromBits), every grain, and the inner ones are dropped here: their
+// flag and their gradient normal are worked out from the bits exactly as sandcore::isInnerGrain
+// and sandcore::occupancyGradientSums do on the CPU.
 
 layout(location = 0) in uint visibleGrain;  // inner grains hidden: the id of a visible grain
 
@@ -13,6 +16,11 @@ uniform usamplerBuffer grainPlaces;   // cell, level (0 lower, 1 upper), cameFro
 uniform usamplerBuffer grainLooks;    // identity (picks the pattern), RGBA8 colour (0 = the pattern's)
 uniform samplerBuffer grainJitters;   // sandcore::jitterOffset, cells
 uniform usamplerBuffer grainNormals;  // occupancy-gradient normal, packed 10:10:10:2
+// Per cell, one bit (cell n: bit n % 32 of word n / 32): holds a grain; is not EMPTY (hides).
+uniform usamplerBuffer cellBits;
+uniform ivec4 cellBitsOffsets;   // first word of: lower grains, upper grains, lower hides, upper hides
+uniform usamplerBuffer gradientNormalTable; // packed normal of each gradient key (gx+9) + 19 (gy+9) + 361 (gz+9)
+uniform bool flagsFromBits;      // inner flags and gradient normals from the bits
 
 uniform ivec3 lowerSize;         // cells per axis of each grid
 uniform ivec3 upperSize;
@@ -20,7 +28,7 @@ uniform ivec3 upperOrigin;       // world cell of the upper grid's (0, 0, 0)
 uniform uint currentStep;        // low 32 bits of the steps done
 uniform float stepRemaining;     // 1 - step fraction: share of a move still ahead (0: at rest)
 uniform bool showInner;          // every grain is an instance (id = gl_InstanceID); else the visible list
-uniform int normalSource;        // 0 column normals, 1 per-grain gradient normals
+uniform int normalSource;        // 0 column normals, 1 per-grain gradient normals, 2 gradient from the bits
 uniform usampler2D columnNormals; // per column, packed 10:10:10:2; row z + level * sizeZ
 
 uniform mat4 viewProjection;
@@ -48,23 +56,73 @@ vec3 unpackNormal(uint word) {
     return max(vec3(bits) / 511.0, vec3(-1.0));
 }
 
+// The bit of cell n in the set starting at word `offset`.
+bool cellBit(int offset, uint n) { return ((texelFetch(cellBits, offset + int(n >> 5u)).r >> (n & 31u)) & 1u) != 0u; }
+
+uint cellIndex(ivec3 size, ivec3 p) { return uint(p.x + size.x * (p.z + size.z * p.y)); }
+
+// sandcore's hidesAt: outside its grid a neighbour hides; inside, a grain or INVALID does.
+bool hidesAt(bool upperGrid, ivec3 p) {
+    ivec3 size = upperGrid ? upperSize : lowerSize;
+    if (any(lessThan(p, ivec3(0))) || any(greaterThanEqual(p, size))) return true;
+    return cellBit(upperGrid ? cellBitsOffsets.w : cellBitsOffsets.z, cellIndex(size, p));
+}
+
+// sandcore::isInnerGrain: 6 face neighbours hide; across the seam the lower grid's top row looks
+// at the upper grid's layer 1 above, the upper grid's layer 0 at the lower grid's row sizeY-2.
+bool innerGrain(bool upperGrid, ivec3 c) {
+    if (!(hidesAt(upperGrid, c - ivec3(1, 0, 0)) && hidesAt(upperGrid, c + ivec3(1, 0, 0)) &&
+          hidesAt(upperGrid, c - ivec3(0, 0, 1)) && hidesAt(upperGrid, c + ivec3(0, 0, 1))))
+        return false;
+    int lowerTop = lowerSize.y - 1;
+    bool above = (!upperGrid && c.y == lowerTop) ? hidesAt(true, ivec3(c.x, 1, c.z)) : hidesAt(upperGrid, c + ivec3(0, 1, 0));
+    bool below = (upperGrid && c.y == 0) ? hidesAt(false, ivec3(c.x, lowerTop - 1, c.z)) : hidesAt(upperGrid, c - ivec3(0, 1, 0));
+    return above && below;
+}
+
+// sandcore::occupancyGradientSums: the offsets of the grains among the 26 neighbours within the
+// grain's own grid (outside it nothing), as a key of the normal table.
+int gradientKey(bool upperGrid, ivec3 c) {
+    ivec3 size = upperGrid ? upperSize : lowerSize;
+    int offset = upperGrid ? cellBitsOffsets.y : cellBitsOffsets.x;
+    ivec3 g = ivec3(0);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dx = -1; dx <= 1; ++dx) {
+                ivec3 p = c + ivec3(dx, dy, dz);
+                if (any(lessThan(p, ivec3(0))) || any(greaterThanEqual(p, size))) continue;
+                if (cellBit(offset, cellIndex(size, p))) g += ivec3(dx, dy, dz);
+            }
+    return (g.x + 9) + 19 * (g.y + 9) + 361 * (g.z + 9);
+}
+
 const uint kNoMove = 0x80008080u; // sandcore::packMove(0, 0, 0)
 
 // A quad's 4 corners; its two triangles index them (0 1 2, 0 2 3), so a GPU shades each corner once.
 const vec2 corners[4] = vec2[4](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
 
 void main() {
-    int id = showInner ? gl_InstanceID : int(visibleGrain);
+    int id = (showInner || flagsFromBits) ? gl_InstanceID : int(visibleGrain);
     uvec4 grainPlace = texelFetch(grainPlaces, id);
-    uvec2 look = texelFetch(grainLooks, id).xy;
-    uint grainIdentity = look.x;
-    uint grainColor = look.y;
-    vec3 grainJitter = texelFetch(grainJitters, id).xyz;
     bool upper = (grainPlace.y & 1u) != 0u;
     ivec3 size = upper ? upperSize : lowerSize;
     uint cell = grainPlace.x;
     uint rest = cell / uint(size.x);
     ivec3 local = ivec3(int(cell % uint(size.x)), int(rest / uint(size.z)), int(rest % uint(size.z)));
+    if (flagsFromBits && !showInner && innerGrain(upper, local)) {
+        // Hidden: outside the clip volume, so nothing of it is drawn (decided before anything
+        // else is fetched: most grains of a full bulb are inner).
+        displayPosition = vec3(0.0);
+        shadedColor = vec3(0.0);
+        quadCorner = vec2(0.0);
+        gl_PointSize = 1.0;
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    uvec2 look = texelFetch(grainLooks, id).xy;
+    uint grainIdentity = look.x;
+    uint grainColor = look.y;
+    vec3 grainJitter = texelFetch(grainJitters, id).xyz;
     ivec3 worldCell = local + (upper ? upperOrigin : ivec3(0));
     vec3 ahead = vec3(0.0);
     if (grainPlace.w == currentStep && stepRemaining > 0.0 && grainPlace.z != kNoMove) {
@@ -74,8 +132,12 @@ void main() {
     }
     vec3 grainPosition = (vec3(worldCell) + 0.5 + grainJitter + ahead) * cellSize;
     displayPosition = grainPosition;
-    uint packedNormal = normalSource == 1 ? texelFetch(grainNormals, id).r
-                                          : texelFetch(columnNormals, ivec2(local.x, local.z + (upper ? size.z : 0)), 0).r;
+    uint packedNormal = 0u; // unlit: not read
+    if (lighting) {
+        if (normalSource == 2) packedNormal = texelFetch(gradientNormalTable, gradientKey(upper, local)).r;
+        else if (normalSource == 1) packedNormal = texelFetch(grainNormals, id).r;
+        else packedNormal = texelFetch(columnNormals, ivec2(local.x, local.z + (upper ? size.z : 0)), 0).r;
+    }
     vec3 normal = unpackNormal(packedNormal);
 
     bool quads = mode >= 2;

@@ -293,8 +293,8 @@ void Application::drawHost(SceneHost& host, const RenderSettings& render) {
     // Steps and edits reach the renderer through the host's surface upkeep: a step lists what it
     // moved, anything else rebuilds it, and the renderer uploads everything after a rebuild.
     if (render.grainPath == GrainPath::GpuInterpolated) {
-        const bool gradientNormals = render.lighting && render.normals == sandcore::NormalMethod::OccupancyGradient;
-        renderer_.useSurface(&host.surfaceUpkeep(gradientNormals));
+        // Only what the GPU cannot work out itself: where the cells' bits fit, no per-grain flags.
+        renderer_.useSurface(&host.surfaceUpkeep(renderer_.gpuStore().trackingFor(host.scene(), render)));
     } else {
         renderer_.useSurface(nullptr);
         if (host.contentRevision() != drawnContent_) renderer_.sceneChanged();

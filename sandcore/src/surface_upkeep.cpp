@@ -75,7 +75,11 @@ bool SurfaceUpkeep::firstLook(GrainSurface& grain, std::uint32_t what) const {
 }
 
 void SurfaceUpkeep::rebuild(const Scene& scene) {
+    trackFlags_ = tracking_.grainFlags;
+    trackGradient_ = trackFlags_ && tracking_.gradientNormals;
+    trackColumns_ = tracking_.columnNormals;
     const GrainStore& grains = scene.grains();
+    grainCount_ = grains.size();
     std::vector<std::uint8_t> inner(grains.size());
     innerCount_ = flagInnerGrains(scene, inner);
     for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
@@ -90,6 +94,13 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
             if (grid[n] >= 0) holds.set(n, true);
             if (grid[n] != kEmpty) hides.set(n, true);
         }
+        if (!trackColumns_) {
+            heights_[index(level)] = {};
+            normals_[index(level)] = {};
+            columnStamp_[index(level)] = {};
+            columnListed_[index(level)] = {};
+            continue;
+        }
         std::vector<int>& heights = heights_[index(level)];
         heights = columnHeights(grid);
         std::vector<Vec3>& normals = normals_[index(level)];
@@ -100,8 +111,9 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
         columnStamp_[index(level)].assign(heights.size(), 0);
         columnListed_[index(level)].assign(heights.size(), 0);
     }
-    grains_.assign(grains.size(), GrainSurface{});
-    for (std::uint32_t id = 0; id < grains.size(); ++id) {
+    if (!trackFlags_) grains_ = {};
+    else grains_.assign(grains.size(), GrainSurface{});
+    for (std::uint32_t id = 0; id < grains_.size(); ++id) {
         grains_[id].inner = inner[id];
         if (trackGradient_) grains_[id].gradient = gradientKeyAt(scene, grains.level[id], grains.cell[id]);
     }
@@ -112,7 +124,9 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
     changedInner_.clear();
     changedGradient_.clear();
     changedColumns_.clear();
+    changedCellsListed_.clear();
     rebuilt_ = true;
+    built_ = true;
 }
 
 void SurfaceUpkeep::clearChanges() {
@@ -123,6 +137,7 @@ void SurfaceUpkeep::clearChanges() {
     for (const ColumnRef& ref : changedColumns_) columnListed_[index(ref.level)][ref.column] = 0;
     changedColumns_.clear();
     movedPlaces_.clear();
+    changedCellsListed_.clear();
     rebuilt_ = false;
 }
 
@@ -139,18 +154,78 @@ void SurfaceUpkeep::syncCell(const Scene& scene, GridLevel level, std::uint32_t 
     const CellValue value = scene.grid(level)[cell];
     CellBits& grains = grainBits_[index(level)];
     if (grains.test(cell) == (value >= 0)) return;
-    grains.set(cell, value >= 0);
-    hideBits_[index(level)].set(cell, value != kEmpty);
-    changedCells_.emplace_back(level, cell);
+    changeCell(level, cell, value >= 0); // a step only moves grains: EMPTY or a grain, never INVALID
 }
 
 // The cell a moved grain is in: it holds a grain now, no need to read the grid (a cache miss).
 void SurfaceUpkeep::syncFilledCell(GridLevel level, std::uint32_t cell) {
     CellBits& grains = grainBits_[index(level)];
     if (grains.test(cell)) return;
-    grains.set(cell, true);
-    hideBits_[index(level)].set(cell, true);
-    changedCells_.emplace_back(level, cell);
+    changeCell(level, cell, true);
+}
+
+// A net change: the cell now holds a grain (filled) or is EMPTY. Without per-grain flags the
+// inner count follows each change as it is made: only the cell and its 6 world neighbours can
+// change their flag, so the count moves by their flags after the change less their flags before
+// (a sum of such steps is the change of the whole update, whatever the order).
+void SurfaceUpkeep::changeCell(GridLevel level, std::uint32_t cell, bool filled) {
+    auto apply = [&] {
+        grainBits_[index(level)].set(cell, filled);
+        hideBits_[index(level)].set(cell, filled);
+        changedCells_.push_back({level, cell});
+    };
+    if (trackFlags_) return apply();
+    const GridShape& shape = shapes_[index(level)];
+    const Int3 c = shape.coordinate(cell);
+    if (c.x >= 2 && c.z >= 2 && c.y >= 2 && c.x + 2 < shape.size.x && c.z + 2 < shape.size.z && c.y + 2 < shape.size.y) {
+        // Two cells from every face and the seam: all the flags involved lie in this grid.
+        const std::int64_t inner = innerChangeInside(level, cell);
+        apply();
+        innerCount_ += filled ? inner : -inner;
+        return;
+    }
+    const std::int64_t before = innerAround(level, c);
+    apply();
+    innerCount_ += innerAround(level, c) - before;
+}
+
+// The inner grains among a cell and its 6 world neighbours, in either grid (from the bits).
+std::int64_t SurfaceUpkeep::innerAround(GridLevel level, Int3 c) const {
+    static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    const Int3 o = origins_[index(level)];
+    std::int64_t inner = 0;
+    for (GridLevel other : {GridLevel::Lower, GridLevel::Upper}) {
+        const GridShape& shape = shapes_[index(other)];
+        const Int3 p = origins_[index(other)];
+        for (const Int3& d : kAround) {
+            const Int3 at{c.x + o.x - p.x + d.x, c.y + o.y - p.y + d.y, c.z + o.z - p.z + d.z};
+            if (at.x < 0 || at.y < 0 || at.z < 0 || at.x >= shape.size.x || at.y >= shape.size.y || at.z >= shape.size.z) continue;
+            const std::uint32_t n = std::uint32_t(at.x) + shape.row * std::uint32_t(at.z) + shape.layer * std::uint32_t(at.y);
+            if (grainBits_[index(other)].test(n) && innerFromBits(other, n, at)) ++inner;
+        }
+    }
+    return inner;
+}
+
+// Away from faces and seam, what filling `cell` adds to the inner count (emptying it takes as
+// much away), read before the change without reading the cell's own bits: its own flag (its 6
+// neighbours hide), and each neighbour grain whose 5 other neighbours hide (the cell decides it).
+std::int64_t SurfaceUpkeep::innerChangeInside(GridLevel level, std::uint32_t cell) const {
+    const GridShape& shape = shapes_[index(level)];
+    const CellBits& grains = grainBits_[index(level)];
+    const CellBits& hides = hideBits_[index(level)];
+    const std::uint32_t around[6] = {cell - 1, cell + 1, cell - shape.row, cell + shape.row, cell - shape.layer, cell + shape.layer};
+    bool hidden = true;
+    for (const std::uint32_t n : around) hidden = hidden && hides.test(n);
+    std::int64_t inner = hidden ? 1 : 0;
+    for (const std::uint32_t n : around) {
+        if (!grains.test(n)) continue;
+        bool othersHide = true;
+        for (const std::uint32_t m : {n - 1, n + 1, n - shape.row, n + shape.row, n - shape.layer, n + shape.layer})
+            if (m != cell) othersHide = othersHide && hides.test(m);
+        inner += othersHide ? 1 : 0;
+    }
+    return inner;
 }
 
 // A world cell, in every grid that holds it (the shared row is in both).
@@ -161,31 +236,6 @@ void SurfaceUpkeep::syncWorldCell(const Scene& scene, Int3 world) {
         const int x = world.x - origin.x, y = world.y - origin.y, z = world.z - origin.z;
         if (grid.contains(x, y, z)) syncCell(scene, level, grid.index(x, y, z));
     }
-}
-
-// The cell a moved grain fills and the one it left: cameFrom back from where it is. Every move
-// goes down within one grid, except that a grain enters the lower grid's top row (the shared
-// row) from the upper grid, resting there (no move) or after a move in the same step: that row
-// goes through world coordinates, the rest stays in the grain's grid.
-void SurfaceUpkeep::syncCellsOf(const Scene& scene, std::uint32_t grain) {
-    const GrainStore& grains = scene.grains();
-    const GridLevel level = grains.level[grain];
-    const std::uint32_t cell = grains.cell[grain];
-    const MoveCode from = grains.cameFrom[grain];
-    syncFilledCell(level, cell);
-    const GridShape& shape = shapes_[index(level)];
-    const bool sharedRow = level == GridLevel::Lower && cell >= shape.layer * std::uint32_t(shape.size.y - 1);
-    if (!sharedRow && from != kNoMove) {
-        const std::int64_t offset =
-            moveDx(from) + std::int64_t(shape.row) * moveDz(from) + std::int64_t(shape.layer) * moveDy(from);
-        syncCell(scene, level, std::uint32_t(std::int64_t(cell) + offset));
-        return;
-    }
-    const Int3 c = shape.coordinate(cell);
-    const Int3 o = origins_[index(level)];
-    const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
-    syncWorldCell(scene, world);
-    if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
 }
 
 // isInnerGrain from the bits; at the grid's edge and across the seam, isInnerGrain itself.
@@ -292,56 +342,124 @@ void SurfaceUpkeep::update(const Scene& scene) {
     const GrainStore& grains = scene.grains();
     // A rebuild also restarts the stamps before the 32-bit update number could wrap (after
     // about 3.5e8 steps), when an old stamp could look current.
-    if (grains_.size() != grains.size() || heights_[0].empty() || updateNumber_ > (UINT32_MAX >> 2) - 8) {
+    if (!built_ || grainCount_ != grains.size() || updateNumber_ > (UINT32_MAX >> 2) - 8) {
         rebuild(scene);
         return;
     }
     changedCells_.clear();
     origins_ = {scene.gridOrigin(GridLevel::Lower), scene.gridOrigin(GridLevel::Upper)};
     // First the net changes: after this the bits hold the grids' occupancy again.
-    const std::span<const std::uint32_t> moved = scene.movedGrains();
     const std::size_t firstPlace = movedPlaces_.size();
+    syncMovedGrains(scene);
+    changedCellsListed_.insert(changedCellsListed_.end(), changedCells_.begin(), changedCells_.end());
+    if (trackFlags_) {
+        // A moved grain's flag and normal are about its new cell: look again at each. Grains that
+        // stayed change only next to a net change, in its 6 world neighbours (flag) or its 26
+        // neighbours in its grid (normal); both read only the bits, final by now.
+        ++updateNumber_;
+        for (std::size_t i = firstPlace; i < movedPlaces_.size(); ++i) {
+            const MovedPlace& grain = movedPlaces_[i];
+            const GridLevel level = grain.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+            refreshFlag(scene, level, grain.cell, grain.grain);
+            if (trackGradient_) refreshGradient(scene, level, grain.cell, grain.grain);
+        }
+        for (const auto& [level, cell] : changedCells_) {
+            refreshInnerAround(scene, level, cell);
+            if (trackGradient_) refreshGradientAround(scene, level, cell);
+        }
+    }
+    if (trackColumns_) updateHeights(scene);
+}
+
+// The moved grains' cells into the bits, and their places into movedPlaces_. Two passes: the
+// first reads each grain (its fields fetched a few grains ahead) into movedPlaces_; the second
+// syncs the cell each fills and the cell it left from that compact list, their bits and the left
+// cell's grid entry fetched a few ahead (no chain of one miss waiting for another). Every move
+// goes down within one grid, except that a grain enters the lower grid's top row (the shared
+// row) from the upper grid, resting there (no move) or after a move in the same step: such
+// places go through world coordinates, both grids, in the first pass.
+void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
+    const GrainStore& grains = scene.grains();
+    const std::span<const std::uint32_t> moved = scene.movedGrains();
     // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
     const auto step = std::uint32_t(scene.counters().stepsDone);
+    const std::size_t first = movedPlaces_.size();
+    auto withinGrid = [&](const MovedPlace& place) {
+        const GridShape& shape = shapes_[place.level];
+        return place.cameFrom != kNoMove && (place.level != 0 || place.cell < shape.layer * std::uint32_t(shape.size.y - 1));
+    };
+    auto leftCell = [&](const MovedPlace& place) {
+        const GridShape& shape = shapes_[place.level];
+        const MoveCode from = place.cameFrom;
+        return std::uint32_t(std::int64_t(place.cell) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
+                             std::int64_t(shape.layer) * moveDy(from));
+    };
     for (std::size_t i = 0; i < moved.size(); ++i) {
         if (i + kPrefetchAhead < moved.size()) {
             const std::uint32_t ahead = moved[i + kPrefetchAhead];
             prefetch(&grains.level[ahead]);
             prefetch(&grains.cell[ahead]);
             prefetch(&grains.cameFrom[ahead]);
-            prefetch(&grains_[ahead]);
-        }
-        // Half as far ahead, the grain's fields are in the cache: fetch the cell it left, which
-        // syncCell reads (whether another grain filled it).
-        if (i + kPrefetchAhead / 2 < moved.size()) {
-            const std::uint32_t ahead = moved[i + kPrefetchAhead / 2];
-            const MoveCode from = grains.cameFrom[ahead];
-            const GridShape& shape = shapes_[index(grains.level[ahead])];
-            const std::int64_t left = std::int64_t(grains.cell[ahead]) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
-                                      std::int64_t(shape.layer) * moveDy(from);
-            const CellGrid& grid = scene.grid(grains.level[ahead]);
-            if (from != kNoMove && left >= 0 && left < std::int64_t(grid.cellCount())) prefetch(grid.cells().data() + left);
+            if (trackFlags_) prefetch(&grains_[ahead]);
         }
         const std::uint32_t id = moved[i];
-        list(id, kPlaceListed, changedPlace_);
-        syncCellsOf(scene, id);
-        movedPlaces_.push_back({id, grains.cell[id], grains.level[id] == GridLevel::Upper ? 1u : 0u, grains.cameFrom[id], step});
+        if (trackFlags_) list(id, kPlaceListed, changedPlace_);
+        const MovedPlace& place =
+            movedPlaces_.emplace_back(MovedPlace{id, grains.cell[id], grains.level[id] == GridLevel::Upper ? 1u : 0u, grains.cameFrom[id], step});
+        if (withinGrid(place)) continue;
+        const GridLevel level = place.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+        syncFilledCell(level, place.cell);
+        const Int3 c = shapes_[place.level].coordinate(place.cell);
+        const Int3 o = origins_[place.level];
+        const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
+        syncWorldCell(scene, world);
+        const MoveCode from = place.cameFrom;
+        if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
     }
-    // A moved grain's flag and normal are about its new cell: look again at each. Grains that
-    // stayed change only next to a net change, in its 6 world neighbours (flag) or its 26
-    // neighbours in its grid (normal); both read only the bits, final by now.
-    ++updateNumber_;
-    for (std::size_t i = firstPlace; i < movedPlaces_.size(); ++i) {
-        const MovedPlace& grain = movedPlaces_[i];
-        const GridLevel level = grain.level != 0 ? GridLevel::Upper : GridLevel::Lower;
-        refreshFlag(scene, level, grain.cell, grain.grain);
-        if (trackGradient_) refreshGradient(scene, level, grain.cell, grain.grain);
+    constexpr std::size_t kCellsAhead = 16;
+    const std::size_t end = movedPlaces_.size();
+    for (std::size_t i = first; i < end; ++i) {
+        if (i + kCellsAhead < end) {
+            const MovedPlace& ahead = movedPlaces_[i + kCellsAhead];
+            if (withinGrid(ahead)) {
+                const GridLevel level = ahead.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+                const std::uint32_t left = leftCell(ahead);
+                prefetch(scene.grid(level).cells().data() + left);
+                prefetch(grainBits_[ahead.level].byteOf(ahead.cell));
+                prefetch(grainBits_[ahead.level].byteOf(left));
+            }
+        }
+        const MovedPlace& place = movedPlaces_[i];
+        if (!withinGrid(place)) continue;
+        const GridLevel level = place.level != 0 ? GridLevel::Upper : GridLevel::Lower;
+        syncFilledCell(level, place.cell);
+        syncCell(scene, level, leftCell(place));
     }
-    for (const auto& [level, cell] : changedCells_) {
-        refreshInnerAround(scene, level, cell);
-        if (trackGradient_) refreshGradientAround(scene, level, cell);
+}
+
+// isInnerGrain from the bits alone, at the grid's edge and across the seam too.
+bool SurfaceUpkeep::hidesFromBits(GridLevel level, int x, int y, int z) const {
+    const GridShape& shape = shapes_[index(level)];
+    if (x < 0 || y < 0 || z < 0 || x >= shape.size.x || y >= shape.size.y || z >= shape.size.z) return true;
+    return hideBits_[index(level)].test(std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y));
+}
+
+bool SurfaceUpkeep::innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) const {
+    const GridShape& shape = shapes_[index(level)];
+    if (shape.interior(c)) {
+        const CellBits& hides = hideBits_[index(level)];
+        return (hides.around(cell) & 5u) == 5u && hides.test(cell - shape.row) && hides.test(cell + shape.row) &&
+               hides.test(cell - shape.layer) && hides.test(cell + shape.layer);
     }
-    updateHeights(scene);
+    if (!(hidesFromBits(level, c.x - 1, c.y, c.z) && hidesFromBits(level, c.x + 1, c.y, c.z) &&
+          hidesFromBits(level, c.x, c.y, c.z - 1) && hidesFromBits(level, c.x, c.y, c.z + 1)))
+        return false;
+    const int lowerTop = shapes_[index(GridLevel::Lower)].size.y - 1;
+    const bool above = level == GridLevel::Lower && c.y == lowerTop ? hidesFromBits(GridLevel::Upper, c.x, 1, c.z)
+                                                                   : hidesFromBits(level, c.x, c.y + 1, c.z);
+    const bool below = level == GridLevel::Upper && c.y == 0 ? hidesFromBits(GridLevel::Lower, c.x, lowerTop - 1, c.z)
+                                                             : hidesFromBits(level, c.x, c.y - 1, c.z);
+    return above && below;
 }
 
 // Heights: a filled cell can only raise its column; then each touched column scans down from

@@ -215,8 +215,12 @@ void SceneHost::stepOnce() {
 }
 
 sandcore::SurfaceUpkeep& SceneHost::surfaceUpkeep(bool gradientNormals) {
-    if (upkeepStale_ || upkeep_.tracksGradientNormals() != gradientNormals) {
-        upkeep_.setTrackGradientNormals(gradientNormals);
+    return surfaceUpkeep(sandcore::SurfaceTracking{true, gradientNormals, true});
+}
+
+sandcore::SurfaceUpkeep& SceneHost::surfaceUpkeep(sandcore::SurfaceTracking tracking) {
+    if (upkeepStale_ || upkeep_.kept() != tracking) {
+        upkeep_.setTracking(tracking);
         upkeep_.rebuild(*scene_);
         upkeepStale_ = false;
     }

@@ -249,3 +249,79 @@ TEST_CASE("surface upkeep: net changes in the hourglass are far fewer than the c
     CHECK(moved > 0);
     CHECK(net < moved); // a move fills one cell and empties one: 2 * moved without the net view
 }
+
+namespace {
+
+// Without per-grain flags (what the GPU path asks for): the bits are the grids' occupancy, the
+// inner count is flagInnerGrains', the changed cells name every cell whose bits changed, and the
+// column heights and normals, when kept, equal a full recompute.
+int runBitsOnlyAndCheck(Scene& scene, int steps, bool columns) {
+    SurfaceUpkeep upkeep;
+    upkeep.setTracking({false, false, columns});
+    upkeep.rebuild(scene);
+    int netChanges = 0;
+    for (int i = 0; i < steps; ++i) {
+        CAPTURE(i);
+        std::vector<std::uint8_t> before[2];
+        for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
+            const CellGrid& grid = scene.grid(level);
+            for (std::uint32_t n = 0; n < grid.cellCount(); ++n) before[int(level == GridLevel::Upper)].push_back(grid[n] >= 0);
+        }
+        upkeep.clearChanges();
+        scene.step();
+        upkeep.update(scene);
+        std::vector<std::uint8_t> inner(scene.grains().size());
+        REQUIRE(upkeep.innerCount() == flagInnerGrains(scene, inner));
+        REQUIRE(upkeep.movedPlaces().size() == scene.movedGrains().size());
+        std::set<std::pair<int, std::uint32_t>> listed;
+        for (const CellRef& ref : upkeep.changedCells()) listed.insert({int(ref.level == GridLevel::Upper), ref.cell});
+        for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
+            const CellGrid& grid = scene.grid(level);
+            const int g = int(level == GridLevel::Upper);
+            for (std::uint32_t n = 0; n < grid.cellCount(); ++n) {
+                REQUIRE(upkeep.grainBits(level).test(n) == (grid[n] >= 0));
+                REQUIRE(upkeep.hideBits(level).test(n) == (grid[n] != kEmpty));
+                if ((grid[n] >= 0) != (before[g][n] != 0)) REQUIRE_MESSAGE(listed.count({g, n}) == 1, "changed cell " << n);
+            }
+            if (!columns) continue;
+            const std::vector<int> heights = columnHeights(grid);
+            REQUIRE(std::equal(heights.begin(), heights.end(), upkeep.heights(level).begin(), upkeep.heights(level).end()));
+            const Int3 s = grid.size();
+            for (int z = 0; z < s.z; ++z)
+                for (int x = 0; x < s.x; ++x) {
+                    const Vec3 full = columnNormal(heights, s, x, z);
+                    const Vec3 kept = upkeep.columnNormals(level)[std::size_t(x) + std::size_t(s.x) * std::size_t(z)];
+                    REQUIRE((kept.x == full.x && kept.y == full.y && kept.z == full.z));
+                }
+        }
+        netChanges += int(upkeep.netChangesLastUpdate());
+    }
+    return netChanges;
+}
+
+} // namespace
+
+TEST_CASE("surface upkeep without per-grain flags: bits, changed cells and inner count exact, classic and granular, 1 and 2 threads") {
+    for (bool granular : {false, true})
+        for (int threads : {1, 2}) {
+            CAPTURE(granular);
+            CAPTURE(threads);
+            Scene scene = makeHourglassScene(makeHourglassMask({28, 2.0f, 0.0f}), {}, stepSettings(13, threads, granular));
+            CHECK(runBitsOnlyAndCheck(scene, 110, threads == 2) > 0);
+            CHECK(scene.counters().grainsLower > 0); // the seam was crossed
+        }
+}
+
+TEST_CASE("surface upkeep without per-grain flags: columns through the seam and a sculpture stay exact") {
+    Scene scene = makeCanvasScene({{12, 4, 12}, {12, 10, 12}});
+    const CellGrid& upper = scene.grid(GridLevel::Upper);
+    const CellGrid& lower = scene.grid(GridLevel::Lower);
+    for (int y = 0; y <= 2; ++y) scene.addGrain(GridLevel::Upper, upper.index(5, y, 6));
+    for (int y = 6; y <= 8; ++y) scene.addGrain(GridLevel::Lower, lower.index(5, y, 6));
+    for (int y = 0; y <= 3; ++y) scene.addGrain(GridLevel::Upper, upper.index(6, y, 6));
+    for (int y = 0; y <= 3; ++y) scene.addGrain(GridLevel::Upper, upper.index(0, y, 0)); // at the grid's corner
+    CHECK(runBitsOnlyAndCheck(scene, 25, true) > 0);
+    CHECK(scene.counters().grainsUpper == 0);
+    Scene sculpture = makeSculptureScene(makeSphereMask(16), stepSettings(5, 1, false));
+    CHECK(runBitsOnlyAndCheck(sculpture, 40, false) > 0);
+}

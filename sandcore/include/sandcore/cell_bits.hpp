@@ -52,11 +52,22 @@ struct GridShape {
 /// row around a cell read the same on any byte order.
 class CellBits {
 public:
-    void assign(std::uint32_t cells) { bytes_.assign(std::size_t(cells) / 8 + 2, 0); } // all 0, one byte past the end
+    /// All 0, with at least one byte past the end, whole 32-bit words.
+    void assign(std::uint32_t cells) { bytes_.assign((std::size_t(cells) / 8 + 2 + 3) & ~std::size_t(3), 0); }
     bool test(std::uint32_t n) const { return (bytes_[n >> 3] >> (n & 7u)) & 1u; }
     void set(std::uint32_t n, bool on) {
         std::uint8_t& byte = bytes_[n >> 3];
         byte = std::uint8_t(on ? byte | (1u << (n & 7u)) : byte & ~(1u << (n & 7u)));
+    }
+    /// The address of the byte holding cell n's bit (to fetch it ahead).
+    const std::uint8_t* byteOf(std::uint32_t n) const { return bytes_.data() + (n >> 3); }
+    void flip(std::uint32_t n) { bytes_[n >> 3] = std::uint8_t(bytes_[n >> 3] ^ (1u << (n & 7u))); }
+    /// 32-bit words in the bits (cell n is bit n % 32 of word n / 32).
+    std::uint32_t wordCount() const { return std::uint32_t(bytes_.size() / 4); }
+    /// Word w, the same on any byte order.
+    std::uint32_t word(std::uint32_t w) const {
+        const std::uint8_t* b = bytes_.data() + std::size_t(w) * 4;
+        return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
     }
     /// Bits of cells n-1, n and n+1 as bits 0, 1 and 2 (n >= 1).
     unsigned around(std::uint32_t n) const {

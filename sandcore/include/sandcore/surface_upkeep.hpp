@@ -10,6 +10,10 @@
 // of k falling grains moves k grains but changes 2 cells (its bottom filled, its top emptied).
 // Only net changes alter a neighbour's flag, gradient normal or column height; a moved grain's
 // own flag and normal are looked at again in its new cell, from the bits.
+//
+// A consumer that works out the flags and normals itself from the bits (the renderer's GPU path)
+// asks for less (SurfaceTracking): then an update keeps only the bits, the moved grains' places,
+// the cells that changed and the inner count, with no work per moved grain beyond its place.
 
 #include "sandcore/cell_bits.hpp"
 #include "sandcore/scene.hpp"
@@ -38,6 +42,23 @@ struct MovedPlace {
     std::uint32_t movedStep = 0; ///< low 32 bits of the step of that move
 };
 
+/// One cell of one grid.
+struct CellRef {
+    GridLevel level = GridLevel::Lower; ///< which grid
+    std::uint32_t cell = 0;             ///< cell index in it
+};
+
+/// What a SurfaceUpkeep keeps besides the occupancy bits, the moved places, the changed cells
+/// and the inner count (always kept).
+struct SurfaceTracking {
+    /// Per grain: its inner flag (isInner, changedInnerFlags) and, with gradientNormals, its
+    /// occupancy-gradient normal. Off, the consumer derives both from the bits itself.
+    bool grainFlags = true;
+    bool gradientNormals = false; ///< per-grain gradient normals (only with grainFlags)
+    bool columnNormals = true;    ///< column heights and the thesis's column normals
+    friend bool operator==(const SurfaceTracking&, const SurfaceTracking&) = default;
+};
+
 class SurfaceUpkeep {
 public:
     /// How many gradient keys there are (gradientKey(grain) is below this).
@@ -46,8 +67,14 @@ public:
     static Vec3 normalOfGradientKey(std::uint16_t key);
     /// Also keep every grain's occupancy-gradient normal (R12's other method; costs a 3x3x3
     /// look at each moved grain and around each changed cell). Takes effect at the next rebuild.
-    void setTrackGradientNormals(bool track) { trackGradient_ = track; }
-    bool tracksGradientNormals() const { return trackGradient_; } ///< as set
+    void setTrackGradientNormals(bool track) { tracking_.gradientNormals = track; }
+    /// True when per-grain gradient normals are kept (grainFlags and gradientNormals).
+    bool tracksGradientNormals() const { return tracking_.grainFlags && tracking_.gradientNormals; }
+    /// What to keep (see SurfaceTracking). Takes effect at the next rebuild.
+    void setTracking(SurfaceTracking tracking) { tracking_ = tracking; }
+    SurfaceTracking tracking() const { return tracking_; } ///< as set
+    /// What the last rebuild took from setTracking: what the lists and accessors hold now.
+    SurfaceTracking kept() const { return {trackFlags_, trackGradient_, trackColumns_}; }
     /// Everything from scratch: after a new scene and after any edit that did not go through
     /// Scene::step (painting, obstacles, undo, load, flip, reset, grain removal).
     void rebuild(const Scene& scene);
@@ -55,14 +82,18 @@ public:
     /// normals the step changed. Rebuilds when the grain count changed.
     void update(const Scene& scene);
 
-    std::uint32_t grainCount() const { return std::uint32_t(grains_.size()); } ///< grains it knows
-    /// True for an inner grain (R13), by grain id.
+    std::uint32_t grainCount() const { return grainCount_; } ///< grains it knows
+    /// True for an inner grain (R13), by grain id (tracking().grainFlags only).
     bool isInner(std::uint32_t grain) const { return grains_[grain].inner != 0; }
-    std::int64_t innerCount() const { return innerCount_; } ///< inner grains
-    /// Column heights of a grid (as columnHeights), indexed x + sizeX * z.
+    std::int64_t innerCount() const { return innerCount_; } ///< inner grains (always kept)
+    /// Column heights of a grid (as columnHeights), indexed x + sizeX * z (tracking().columnNormals only).
     std::span<const int> heights(GridLevel level) const { return heights_[index(level)]; }
-    /// The thesis's column normals of a grid (as columnNormal), indexed x + sizeX * z.
+    /// The thesis's column normals of a grid (as columnNormal), indexed x + sizeX * z (tracking().columnNormals only).
     std::span<const Vec3> columnNormals(GridLevel level) const { return normals_[index(level)]; }
+    /// Per cell of a grid: holds a grain (as of the last update).
+    const CellBits& grainBits(GridLevel level) const { return grainBits_[index(level)]; }
+    /// Per cell of a grid: is not EMPTY (a grain or INVALID: hides a neighbour).
+    const CellBits& hideBits(GridLevel level) const { return hideBits_[index(level)]; }
     /// A grain's gradientNormal, by grain id (when tracked; else (0, 1, 0)).
     Vec3 gradientNormal(std::uint32_t grain) const;
     /// A grain's occupancy-gradient sums as one key (when tracked): normalOfGradientKey gives its normal.
@@ -72,8 +103,10 @@ public:
     // renderer's GPU buffers); several steps between two frames add up, each entry listed once.
     /// True when a rebuild happened: everything may have changed, ids included.
     bool rebuilt() const { return rebuilt_; }
-    /// Grains that changed cells (Scene::movedGrains of every update).
+    /// Grains that changed cells (Scene::movedGrains of every update), each once (tracking().grainFlags only).
     std::span<const std::uint32_t> movedGrains() const { return changedPlace_; }
+    /// Cells whose bits changed, in update order (a cell may be listed by several updates).
+    std::span<const CellRef> changedCells() const { return changedCellsListed_; }
     /// The places of the moved grains, in update order: a grain moved by several updates is
     /// listed once per update, the last entry its place now.
     std::span<const MovedPlace> movedPlaces() const { return movedPlaces_; }
@@ -101,7 +134,6 @@ private:
     void syncCell(const Scene& scene, GridLevel level, std::uint32_t cell);
     void syncFilledCell(GridLevel level, std::uint32_t cell);
     void syncWorldCell(const Scene& scene, Int3 world);
-    void syncCellsOf(const Scene& scene, std::uint32_t grain);
     bool innerAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
     std::uint16_t gradientKeyAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
     void refreshFlag(const Scene& scene, GridLevel level, std::uint32_t cell, std::uint32_t grain);
@@ -110,8 +142,19 @@ private:
     void refreshGradientAround(const Scene& scene, GridLevel level, std::uint32_t cell);
     void updateHeights(const Scene& scene);
     void list(std::uint32_t grain, std::uint8_t bit, std::vector<std::uint32_t>& into);
+    void syncMovedGrains(const Scene& scene);
+    void changeCell(GridLevel level, std::uint32_t cell, bool filled);
+    std::int64_t innerAround(GridLevel level, Int3 c) const;
+    std::int64_t innerChangeInside(GridLevel level, std::uint32_t cell) const;
+    bool innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) const;
+    bool hidesFromBits(GridLevel level, int x, int y, int z) const;
 
-    bool trackGradient_ = false;
+    SurfaceTracking tracking_;
+    bool trackGradient_ = false;                        // as of the last rebuild: tracking_'s
+    bool trackFlags_ = true;
+    bool trackColumns_ = true;
+    bool built_ = false;                                // rebuild ran
+    std::uint32_t grainCount_ = 0;
     std::array<Int3, 2> origins_{};   // Scene::gridOrigin of both grids, this update
     std::array<GridShape, 2> shapes_; // both grids' sizes, with cheap coordinates
     // Per grid, one bit per cell as of the last update: holds a grain; is not EMPTY (a grain or
@@ -133,7 +176,8 @@ private:
     std::vector<ColumnRef> normalCandidates_;             // scratch: columns around changed heights
     std::vector<ColumnRef> touchedColumns_;               // scratch: columns whose height may have changed
     std::vector<int> heightsBefore_;                      // scratch: their heights before the step
-    std::vector<std::pair<GridLevel, std::uint32_t>> changedCells_; // scratch: cells the step filled or emptied, net
+    std::vector<CellRef> changedCells_;                   // scratch: cells the step filled or emptied, net
+    std::vector<CellRef> changedCellsListed_;             // changedCells_ of every update since clearChanges
 };
 
 } // namespace sandcore

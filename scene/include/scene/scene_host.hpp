@@ -118,6 +118,9 @@ public:
     /// with the changes since the drawer's last clearChanges(). gradientNormals: keep the
     /// occupancy-gradient normals too (switching rebuilds).
     sandcore::SurfaceUpkeep& surfaceUpkeep(bool gradientNormals);
+    /// As above, keeping what `tracking` asks for (the renderer's GrainGpuStore::trackingFor:
+    /// without per-grain flags where the GPU works them out from the bits); switching rebuilds.
+    sandcore::SurfaceUpkeep& surfaceUpkeep(sandcore::SurfaceTracking tracking);
     /// What the steps since the last call did: how many, the grains they moved, and the wall
     /// time of the surface upkeep after them (ms; steps before the surface was first asked for
     /// or after an edit have none).

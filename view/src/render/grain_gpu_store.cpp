@@ -5,6 +5,7 @@
 #include "sandcore/display_positions.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <cstddef>
 #include <limits>
@@ -65,6 +66,17 @@ bool needsGradient(const RenderSettings& settings) {
     return settings.lighting && settings.normals == sandcore::NormalMethod::OccupancyGradient;
 }
 
+bool needsColumns(const RenderSettings& settings) {
+    return settings.lighting && settings.normals == sandcore::NormalMethod::ColumnHeights;
+}
+
+// Words of a grid's bits, as sandcore::CellBits keeps them.
+std::int64_t cellBitWordsOf(const sandcore::CellGrid& grid) {
+    return std::int64_t(((std::size_t(grid.cellCount()) / 8 + 2 + 3) & ~std::size_t(3)) / 4);
+}
+
+constexpr sandcore::GridLevel kLevels[2] = {sandcore::GridLevel::Lower, sandcore::GridLevel::Upper};
+
 GrainPlace placeOf(const sandcore::GrainStore& grains, std::uint32_t id) {
     return {grains.cell[id], grains.level[id] == sandcore::GridLevel::Upper ? 1u : 0u, grains.cameFrom[id],
             std::uint32_t(grains.movedAtStep[id])};
@@ -79,16 +91,20 @@ GrainGpuStore::GrainGpuStore()
       places_gpu_{MappedBuffer(persistent_), GlTexture(newTexture()), GL_RGBA32UI},
       looks_gpu_{MappedBuffer(false), GlTexture(newTexture()), GL_RG32UI},
       jitters_gpu_{MappedBuffer(false), GlTexture(newTexture()), GL_RGBA32F},
-      normals_gpu_{MappedBuffer(persistent_), GlTexture(newTexture()), GL_R32UI}, visibleBuffer_(persistent_),
-      visibleArray_(newVertexArray()), columnNormals_(newTexture()) {
+      normals_gpu_{MappedBuffer(persistent_), GlTexture(newTexture()), GL_R32UI},
+      cellBits_gpu_{MappedBuffer(persistent_), GlTexture(newTexture()), GL_R32UI},
+      gradientTable_gpu_{MappedBuffer(false), GlTexture(newTexture()), GL_R32UI}, visibleBuffer_(persistent_),
+      visibleArray_(newVertexArray()), everyGrainArray_(newVertexArray()), columnNormals_(newTexture()) {
     GLint maxTexels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
     maxTexels_ = maxTexels;
-    for (BufferTexture* texture : {&places_gpu_, &looks_gpu_, &jitters_gpu_, &normals_gpu_})
+    for (BufferTexture* texture : {&places_gpu_, &looks_gpu_, &jitters_gpu_, &normals_gpu_, &cellBits_gpu_})
         allocate(*texture, 16, nullptr); // never empty: a texture needs storage
     packedByKey_.resize(sandcore::SurfaceUpkeep::kGradientKeys);
     for (std::size_t key = 0; key < packedByKey_.size(); ++key)
         packedByKey_[key] = packNormal(sandcore::SurfaceUpkeep::normalOfGradientKey(std::uint16_t(key)));
+    // The shader looks the normal of its gradient up here: the same packed word as the CPU's.
+    allocate(gradientTable_gpu_, packedByKey_.size() * 4, packedByKey_.data());
     // The one per-instance attribute: the id of the grain to draw (when inner grains are hidden).
     visibleBuffer_.allocate(GL_ARRAY_BUFFER, 4, nullptr);
     glBindVertexArray(visibleArray_.get());
@@ -112,22 +128,82 @@ void GrainGpuStore::allocate(BufferTexture& texture, std::size_t bytes, const vo
     glBindTexture(GL_TEXTURE_BUFFER, 0);
 }
 
-bool GrainGpuStore::canUpdate(const sandcore::Scene& scene, const RenderSettings& settings) const {
+bool GrainGpuStore::holdsCellBits(const sandcore::Scene& scene) const {
+    const char* setting = std::getenv("SANDGLASS_GPU_CELL_BITS");
+    if (setting != nullptr && std::strcmp(setting, "0") == 0) return false; // per-grain flags, to compare
+    std::int64_t words = 0;
+    for (sandcore::GridLevel level : kLevels) words += 2 * cellBitWordsOf(scene.grid(level));
+    return holds(scene) && words <= maxTexels_;
+}
+
+sandcore::SurfaceTracking GrainGpuStore::trackingFor(const sandcore::Scene& scene, const RenderSettings& settings) const {
+    if (holdsCellBits(scene)) return {false, false, needsColumns(settings)};
+    return {true, needsGradient(settings), true};
+}
+
+bool GrainGpuStore::drawsFrom(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface,
+                              const RenderSettings& settings) const {
+    const sandcore::SurfaceTracking kept = surface.kept();
+    if (needsColumns(settings) && !kept.columnNormals) return false;
+    if (!kept.grainFlags) return holdsCellBits(scene);
+    return !needsGradient(settings) || surface.tracksGradientNormals();
+}
+
+bool GrainGpuStore::canUpdate(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface,
+                              const RenderSettings& settings) const {
     const sandcore::Int3 size = scene.grid(sandcore::GridLevel::Lower).size();
-    return grainCount_ == std::int64_t(scene.grains().size()) && uploadedJitter_ == settings.jitter &&
-           (gradientUploaded_ || !needsGradient(settings)) && columnsX_ == size.x && columnsZ_ == size.z;
+    const bool bits = !surface.kept().grainFlags;
+    return grainCount_ == std::int64_t(scene.grains().size()) && uploadedJitter_ == settings.jitter && bitsMode_ == bits &&
+           (bits || gradientUploaded_ || !needsGradient(settings)) && (columnsUploaded_ || !needsColumns(settings)) &&
+           columnsX_ == size.x && columnsZ_ == size.z;
 }
 
 void GrainGpuStore::bind(int firstUnit, int columnUnit) const {
-    const BufferTexture* textures[] = {&places_gpu_, &looks_gpu_, &jitters_gpu_, &normals_gpu_};
-    for (int i = 0; i < 4; ++i) {
+    const BufferTexture* textures[] = {&places_gpu_, &looks_gpu_, &jitters_gpu_, &normals_gpu_, &cellBits_gpu_, &gradientTable_gpu_};
+    for (int i = 0; i < 6; ++i) {
         glActiveTexture(GLenum(GL_TEXTURE0 + firstUnit + i));
         glBindTexture(GL_TEXTURE_BUFFER, textures[i]->texture.get());
     }
     glActiveTexture(GLenum(GL_TEXTURE0 + columnUnit));
     glBindTexture(GL_TEXTURE_2D, columnNormals_.get());
     glActiveTexture(GL_TEXTURE0);
-    glBindVertexArray(visibleArray_.get());
+    glBindVertexArray(bitsMode_ ? everyGrainArray_.get() : visibleArray_.get());
+}
+
+// All four bit sets in one buffer: lower grains, upper grains, lower hides, upper hides.
+std::int64_t GrainGpuStore::uploadCellBits(const sandcore::SurfaceUpkeep& surface) {
+    const sandcore::CellBits* sets[4] = {&surface.grainBits(kLevels[0]), &surface.grainBits(kLevels[1]),
+                                         &surface.hideBits(kLevels[0]), &surface.hideBits(kLevels[1])};
+    std::vector<std::uint32_t> words;
+    for (int i = 0; i < 4; ++i) {
+        bitsOffsets_[std::size_t(i)] = std::int32_t(words.size());
+        for (std::uint32_t w = 0; w < sets[i]->wordCount(); ++w) words.push_back(sets[i]->word(w));
+    }
+    allocate(cellBits_gpu_, words.size() * 4, words.data());
+    const auto bytes = std::int64_t(words.size()) * 4;
+    cellBitWords_ = std::move(words);
+    return bytes;
+}
+
+// The words holding the cells the upkeep lists as changed, from its bits: into the mapped buffer,
+// or into the copy here and marked for the runs.
+std::int64_t GrainGpuStore::writeCellBitChanges(const sandcore::SurfaceUpkeep& surface) {
+    if (!bitsMode_) return 0;
+    auto* mapped = persistent_ ? static_cast<std::uint32_t*>(cellBits_gpu_.buffer.mapped()) : nullptr;
+    std::uint32_t* words = mapped != nullptr ? mapped : cellBitWords_.data();
+    for (const sandcore::CellRef& ref : surface.changedCells()) {
+        const std::size_t grid = ref.level == sandcore::GridLevel::Upper ? 1 : 0;
+        const std::uint32_t word = ref.cell >> 5;
+        const auto grains = std::uint32_t(bitsOffsets_[grid]) + word, hides = std::uint32_t(bitsOffsets_[2 + grid]) + word;
+        words[grains] = surface.grainBits(ref.level).word(word);
+        words[hides] = surface.hideBits(ref.level).word(word);
+        if (mapped != nullptr) continue;
+        changedWords_.mark(grains);
+        changedWords_.mark(hides);
+    }
+    if (mapped != nullptr) return std::int64_t(surface.changedCells().size()) * 8;
+    return uploadRuns(GL_TEXTURE_BUFFER, cellBits_gpu_.buffer.get(), std::span<const std::uint32_t>(cellBitWords_),
+                      changedWords_, 4, runs_, [](std::uint32_t, std::uint32_t) {});
 }
 
 // The visible list in id order (the order the earlier path drew in).
@@ -191,22 +267,38 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
     allocate(looks_gpu_, looks.size() * 4, looks.data());
     allocate(jitters_gpu_, jitters.size() * 4, jitters.data());
     std::int64_t bytes = std::int64_t(places_.size() * sizeof(GrainPlace) + looks.size() * 4 + jitters.size() * 4);
-    gradientUploaded_ = needsGradient(settings) && surface.tracksGradientNormals();
+    bitsMode_ = !surface.kept().grainFlags;
+    gradientUploaded_ = !bitsMode_ && needsGradient(settings) && surface.tracksGradientNormals();
     packedNormals_.assign(gradientUploaded_ ? count : 0, 0u);
     for (std::uint32_t id = 0; id < packedNormals_.size(); ++id) packedNormals_[id] = packedByKey_[surface.gradientKeyOf(id)];
     allocate(normals_gpu_, packedNormals_.size() * 4, packedNormals_.data());
     bytes += std::int64_t(packedNormals_.size()) * 4;
+    if (bitsMode_) {
+        bytes += uploadCellBits(surface);
+    } else {
+        cellBitWords_.clear();
+        allocate(cellBits_gpu_, 16, nullptr);
+    }
     // A driver that would not map a buffer gets the runs for all of them (MappedBuffer fell back).
-    persistent_ = persistent_ && places_gpu_.buffer.persistent() && normals_gpu_.buffer.persistent();
+    persistent_ = persistent_ && places_gpu_.buffer.persistent() && normals_gpu_.buffer.persistent() &&
+                  cellBits_gpu_.buffer.persistent();
     if (persistent_) { // the mapped buffers are the copies now
         places_ = {};
         packedNormals_ = {};
+        cellBitWords_ = {};
     }
 
     for (IndexRuns* runs : {&changedIds_, &changedSlots_, &changedNormals_}) runs->resize(persistent_ ? 0 : count);
+    changedWords_.resize(persistent_ ? 0 : std::uint32_t(cellBitWords_.size()));
     // The visible list's buffer holds every grain, so the list can grow without reallocating.
-    makeVisibleList(surface);
-    std::vector<std::uint32_t> visibleStore(std::max<std::size_t>(count, 1), 0u);
+    // From the bits the shader drops inner grains itself: no list.
+    if (bitsMode_) {
+        visible_.clear();
+        slotOf_ = {};
+    } else {
+        makeVisibleList(surface);
+    }
+    std::vector<std::uint32_t> visibleStore(bitsMode_ ? 1 : std::max<std::size_t>(count, 1), 0u);
     std::copy(visible_.begin(), visible_.end(), visibleStore.begin());
     visibleBuffer_.allocate(GL_ARRAY_BUFFER, visibleStore.size() * 4, visibleStore.data());
     persistent_ = persistent_ && visibleBuffer_.persistent();
@@ -221,6 +313,12 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
     const sandcore::Int3 size = scene.grid(sandcore::GridLevel::Lower).size();
     columnsX_ = size.x;
     columnsZ_ = size.z;
+    uploadedJitter_ = settings.jitter;
+    columnsUploaded_ = surface.kept().columnNormals;
+    if (!columnsUploaded_) { // lighting without column normals: the texture is not read
+        packedColumns_.clear();
+        return bytes;
+    }
     const std::size_t layer = std::size_t(size.x) * std::size_t(size.z);
     packedColumns_.resize(2 * layer);
     for (sandcore::GridLevel level : {sandcore::GridLevel::Lower, sandcore::GridLevel::Upper}) {
@@ -234,13 +332,12 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
                  packedColumns_.data());
     glBindTexture(GL_TEXTURE_2D, 0);
     bytes += std::int64_t(packedColumns_.size()) * 4;
-    uploadedJitter_ = settings.jitter;
     return bytes;
 }
 
 std::int64_t GrainGpuStore::uploadColumns(const sandcore::SurfaceUpkeep& surface) {
     const std::size_t layer = std::size_t(columnsX_) * std::size_t(columnsZ_);
-    if (surface.changedColumns().empty()) return 0;
+    if (!columnsUploaded_ || surface.changedColumns().empty()) return 0;
     if (changedTexels_.capacity() < 2 * layer) changedTexels_.resize(std::uint32_t(2 * layer));
     for (const sandcore::ColumnRef& ref : surface.changedColumns()) {
         const std::size_t texel = (ref.level == sandcore::GridLevel::Upper ? layer : 0) + ref.column;
@@ -277,7 +374,7 @@ std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface)
     const std::span<const std::uint32_t> flags = surface.changedInnerFlags();
     const std::span<const std::uint32_t> normals = gradientUploaded_ ? surface.changedGradientNormals()
                                                                      : std::span<const std::uint32_t>();
-    if (moved.empty() && flags.empty() && normals.empty()) return 0;
+    if (moved.empty() && flags.empty() && normals.empty() && surface.changedCells().empty()) return 0;
     fence_.waitForDraws();
     auto* places = static_cast<GrainPlace*>(places_gpu_.buffer.mapped());
     for (const sandcore::MovedPlace& grain : moved) places[grain.grain] = placeOf(grain);
@@ -285,7 +382,8 @@ std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface)
     for (std::uint32_t id : flags) setVisible(id, !surface.isInner(id));
     auto* packed = static_cast<std::uint32_t*>(normals_gpu_.buffer.mapped());
     for (std::uint32_t id : normals) packed[id] = packedByKey_[surface.gradientKeyOf(id)];
-    return std::int64_t(moved.size() * sizeof(GrainPlace)) + visibleBytes_ + std::int64_t(normals.size()) * 4;
+    return std::int64_t(moved.size() * sizeof(GrainPlace)) + visibleBytes_ + std::int64_t(normals.size()) * 4 +
+           writeCellBitChanges(surface);
 }
 
 // Without it: the copies here are brought up to date and the changed entries go up in id order,
@@ -309,7 +407,7 @@ std::int64_t GrainGpuStore::sendChangesInRuns(const sandcore::SurfaceUpkeep& sur
         bytes += uploadRuns(GL_TEXTURE_BUFFER, normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_),
                             changedNormals_, 4, runs_, [](std::uint32_t, std::uint32_t) {});
     }
-    return bytes;
+    return bytes + writeCellBitChanges(surface);
 }
 
 } // namespace sandglass

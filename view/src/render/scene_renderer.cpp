@@ -33,7 +33,7 @@ void hullAttributes(GLuint vertexArray, GLuint buffer) {
 
 // Texture units of the GPU path (0 and 1 hold the patterns).
 constexpr int kColumnNormalsUnit = 2;
-constexpr int kGrainTexturesUnit = 3; // places, looks, jitters, gradient normals
+constexpr int kGrainTexturesUnit = 3; // places, looks, jitters, gradient normals, cell bits, normal table
 
 // Display settings whose change invalidates the uploaded grains even when nothing moved.
 bool sameGrainInputs(const RenderSettings& a, const RenderSettings& b) {
@@ -99,8 +99,8 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
         glUniform1i(uniform(*program, "patternCount"), GLint(patterns.size()));
     }
     glUniform1i(uniform(grainGpuProgram_, "columnNormals"), kColumnNormalsUnit);
-    const char* grainTextures[] = {"grainPlaces", "grainLooks", "grainJitters", "grainNormals"};
-    for (int i = 0; i < 4; ++i) glUniform1i(uniform(grainGpuProgram_, grainTextures[i]), kGrainTexturesUnit + i);
+    const char* grainTextures[] = {"grainPlaces", "grainLooks", "grainJitters", "grainNormals", "cellBits", "gradientNormalTable"};
+    for (int i = 0; i < 6; ++i) glUniform1i(uniform(grainGpuProgram_, grainTextures[i]), kGrainTexturesUnit + i);
     glUseProgram(0);
 }
 
@@ -165,8 +165,8 @@ void SceneRenderer::uploadGrains(const sandcore::Scene& scene, float stepFractio
         return;
     }
     // The reference path: the owner's surface lists every change of the grains.
-    if (surface_ != nullptr && (surface_->rebuilt() || !surface_->movedGrains().empty() ||
-                                !surface_->changedInnerFlags().empty())) {
+    if (surface_ != nullptr && (surface_->rebuilt() || !surface_->movedPlaces().empty() ||
+                                !surface_->changedInnerFlags().empty() || !surface_->changedCells().empty())) {
         builder_.sceneChanged();
         grainsStale_ = true;
         surface_->clearChanges();
@@ -194,17 +194,19 @@ void SceneRenderer::uploadGrains(const sandcore::Scene& scene, float stepFractio
 // V8: everything after a change the surface cannot describe, else only what it lists.
 void SceneRenderer::uploadGpuGrains(const sandcore::Scene& scene, const RenderSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
-    const bool gradient = settings.lighting && settings.normals == sandcore::NormalMethod::OccupancyGradient;
     sandcore::SurfaceUpkeep* surface = surface_;
-    if (surface == nullptr) {
+    if (surface == nullptr || !gpuStore_.drawsFrom(scene, *surface, settings)) {
+        // Without an owner keeping it up to date step by step, any move makes it stale; an
+        // owner's that lacks what these settings need leaves it stale every frame.
+        const bool stale = surface != nullptr || grainsStale_ || scene.counters().movesLastStep > 0;
         surface = &ownSurface_;
-        // Without an owner keeping it up to date step by step, any move makes it stale.
-        if (grainsStale_ || scene.counters().movesLastStep > 0 || ownSurface_.tracksGradientNormals() != gradient) {
-            ownSurface_.setTrackGradientNormals(gradient);
+        const sandcore::SurfaceTracking needed = gpuStore_.trackingFor(scene, settings);
+        if (stale || ownSurface_.kept() != needed) {
+            ownSurface_.setTracking(needed);
             ownSurface_.rebuild(scene);
         }
     }
-    const bool full = grainsStale_ || surface->rebuilt() || !gpuStore_.canUpdate(scene, settings);
+    const bool full = grainsStale_ || surface->rebuilt() || !gpuStore_.canUpdate(scene, *surface, settings);
     stats_.uploadBytes = full ? gpuStore_.uploadAll(scene, *surface, settings) : gpuStore_.uploadChanges(scene, *surface);
     surface->clearChanges();
     grainsStale_ = false;
@@ -227,11 +229,15 @@ std::int64_t SceneRenderer::setGpuUniforms(const sandcore::Scene& scene, float s
     // The same expression as grainDisplayPosition's, so both get the same float.
     glUniform1f(uniform(program, "stepRemaining"), stepFraction < 1.0f ? 1.0f - stepFraction : 0.0f);
     glUniform1i(uniform(program, "showInner"), settings.innerGrains ? 1 : 0);
+    const bool fromBits = gpuStore_.flagsFromBits();
     const bool gradient = settings.normals == sandcore::NormalMethod::OccupancyGradient;
-    glUniform1i(uniform(program, "normalSource"), gradient ? 1 : 0);
+    glUniform1i(uniform(program, "normalSource"), gradient ? (fromBits ? 2 : 1) : 0);
+    glUniform1i(uniform(program, "flagsFromBits"), fromBits ? 1 : 0);
+    const std::array<std::int32_t, 4>& offsets = gpuStore_.cellBitsOffsets();
+    glUniform4i(uniform(program, "cellBitsOffsets"), offsets[0], offsets[1], offsets[2], offsets[3]);
     gpuStore_.bind(kGrainTexturesUnit, kColumnNormalsUnit);
-    // Every grain an instance, or only the visible list's.
-    return settings.innerGrains ? gpuStore_.grainCount() : gpuStore_.visibleCount();
+    // Every grain an instance (from the bits the shader drops inner ones), or the visible list's.
+    return settings.innerGrains || fromBits ? gpuStore_.grainCount() : gpuStore_.visibleCount();
 }
 
 void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
@@ -279,8 +285,10 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
 void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera& camera,
                                const float* viewProjection, float pixelScale) {
     const int perCell = std::clamp(settings.grainsPerCell, 1, kMaxGrainsPerCell);
-    stats_.grainsDrawn = instanceCount_;
-    stats_.subGrainsDrawn = instanceCount_ * perCell;
+    // From the bits every grain is an instance and the shader drops the inner ones.
+    const bool dropsInner = path_ == GrainPath::GpuInterpolated && gpuStore_.flagsFromBits() && !settings.innerGrains;
+    stats_.grainsDrawn = dropsInner ? instanceCount_ - stats_.innerGrains : instanceCount_;
+    stats_.subGrainsDrawn = stats_.grainsDrawn * perCell;
     if (instanceCount_ == 0) return;
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);

@@ -11,6 +11,14 @@
 // runs through one mapped range. The vertex
 // shader (grain_gpu.vert) works out the display position from the place and the step fraction,
 // as sandcore::grainDisplayPosition does on the CPU.
+//
+// From a surface that keeps no per-grain flags (SurfaceTracking::grainFlags off) the store holds
+// the cells' occupancy instead, one bit per cell (the upkeep's grain and hide bits of both grids,
+// in one buffer texture of 32-bit words): after a step only the words of the cells that changed
+// go up, a few thousand where tens of thousands of grains moved, and the vertex shader works out
+// each grain's inner flag and gradient normal from them (dropping inner grains itself, so every
+// grain is an instance and no visible list is kept). SANDGLASS_GPU_CELL_BITS=0 in the environment
+// keeps the per-grain flags instead (to compare the two).
 
 #include "view/render/gl_objects.hpp"
 #include "view/render/index_runs.hpp"
@@ -20,6 +28,7 @@
 #include "sandcore/scene.hpp"
 #include "sandcore/surface_upkeep.hpp"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -52,17 +61,30 @@ public:
                            const RenderSettings& settings);
     /// Uploads only what the upkeep lists as changed since its last clearChanges(). Returns the bytes sent.
     std::int64_t uploadChanges(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface);
-    /// True when uploadChanges can follow the last upload under these settings (same grains, same
-    /// jitter, the normals the lighting needs already there).
-    bool canUpdate(const sandcore::Scene& scene, const RenderSettings& settings) const;
+    /// True when uploadChanges can follow the last upload of this surface under these settings
+    /// (same grains, same jitter, same kind of surface, the normals the lighting needs already there).
+    bool canUpdate(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface, const RenderSettings& settings) const;
     /// False when the scene has more grains than this GL's buffer textures hold (draw another way).
     bool holds(const sandcore::Scene& scene) const { return std::int64_t(scene.grains().size()) <= maxTexels_; }
+    /// True when the occupancy bits of the scene's grids fit in one buffer texture of this GL
+    /// (then a surface without per-grain flags will do).
+    bool holdsCellBits(const sandcore::Scene& scene) const;
+    /// What a surface must keep for this store to draw under these settings: the bits alone where
+    /// they fit (column normals too when lit by that method), else per-grain flags and normals.
+    sandcore::SurfaceTracking trackingFor(const sandcore::Scene& scene, const RenderSettings& settings) const;
+    /// True when this surface (as kept now) has what drawing under these settings needs.
+    bool drawsFrom(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface, const RenderSettings& settings) const;
 
-    /// Binds the buffer textures to units firstUnit.. (places, looks, jitters, gradient normals)
-    /// and the column normals to columnUnit, and the vertex array of the visible list.
+    /// Binds the buffer textures to units firstUnit.. (places, looks, jitters, gradient normals,
+    /// cell bits, the normal of each gradient) and the column normals to columnUnit, and the
+    /// vertex array of the visible list (none when the flags come from the bits).
     void bind(int firstUnit, int columnUnit) const;
     std::int64_t grainCount() const { return grainCount_; }                    ///< all grains
     std::int64_t visibleCount() const { return std::int64_t(visible_.size()); } ///< grains not inner
+    /// True when the last upload holds the cell bits (the shader works out flags and gradient normals).
+    bool flagsFromBits() const { return bitsMode_; }
+    /// Word offsets in the cell-bits texture: lower grains, upper grains, lower hides, upper hides.
+    const std::array<std::int32_t, 4>& cellBitsOffsets() const { return bitsOffsets_; }
 
 private:
     struct BufferTexture {
@@ -76,12 +98,17 @@ private:
     std::int64_t writeChanges(const sandcore::SurfaceUpkeep& surface);
     std::int64_t sendChangesInRuns(const sandcore::SurfaceUpkeep& surface);
     void allocate(BufferTexture& texture, std::size_t bytes, const void* data);
+    std::int64_t uploadCellBits(const sandcore::SurfaceUpkeep& surface);
+    std::int64_t writeCellBitChanges(const sandcore::SurfaceUpkeep& surface);
 
     bool persistent_ = false;
     DrawFence fence_;
     BufferTexture places_gpu_, looks_gpu_, jitters_gpu_, normals_gpu_;
+    BufferTexture cellBits_gpu_;     // lower grains, upper grains, lower hides, upper hides
+    BufferTexture gradientTable_gpu_; // packNormal of each gradient key (fixed)
     MappedBuffer visibleBuffer_;
     GlVertexArray visibleArray_;
+    GlVertexArray everyGrainArray_;   // no attributes: instances are grain ids
     GlTexture columnNormals_;
     std::int64_t maxTexels_ = 0;
     std::int64_t grainCount_ = 0;
@@ -98,6 +125,11 @@ private:
     IndexRuns changedNormals_;                  // gradient normals to send
     IndexRuns changedTexels_;                   // column normals to send, texel order
     std::vector<std::pair<std::uint32_t, std::uint32_t>> runs_; // scratch: runs of one upload
+    bool bitsMode_ = false;                     // the last upload holds cell bits, not flags
+    std::array<std::int32_t, 4> bitsOffsets_{};  // word offsets of the four bit sets
+    std::vector<std::uint32_t> cellBitWords_;   // without persistent mapping: the words as sent
+    IndexRuns changedWords_;                    // cell-bit words to send
+    bool columnsUploaded_ = false;              // the column normals are there
     int columnsX_ = 0, columnsZ_ = 0;
     float uploadedJitter_ = -1.0f;
     bool gradientUploaded_ = false;

@@ -1,0 +1,152 @@
+// SPEC V8 with R12, R13: the GPU path that works out inner flags and gradient normals from the
+// cells' occupancy bits draws exactly what the CPU path draws from sandcore's flags and normals:
+// on the hourglass after frames that upload only changes, and on a canvas whose grains lie on
+// every face of both grids and on the seam between them (where "outside the grid hides" makes
+// edge grains inner, visible from outside), lit and unlit, inner grains hidden and shown.
+#include "support/app_test_support.hpp"
+
+#include "app/application.hpp"
+#include "scene/scene_host.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <vector>
+
+using namespace sandglass;
+
+namespace {
+
+enum class Path { Cpu, GpuCellBits, GpuGrainFlags };
+
+const char* pathName(Path path) {
+    return path == Path::Cpu ? "cpu" : path == Path::GpuCellBits ? "gpu, cell bits" : "gpu, per-grain flags";
+}
+
+// The environment switch is read when the store decides, so it is set around the whole run.
+struct GrainFlagsSwitch {
+    explicit GrainFlagsSwitch(bool perGrain) {
+        if (perGrain) setenv("SANDGLASS_GPU_CELL_BITS", "0", 1);
+    }
+    ~GrainFlagsSwitch() { unsetenv("SANDGLASS_GPU_CELL_BITS"); }
+};
+
+RenderSettings renderSettings(Path path, bool light, bool inner) {
+    RenderSettings render;
+    render.lighting = light; // by the occupancy gradient (the default method)
+    render.innerGrains = inner;
+    render.grainPath = path == Path::Cpu ? GrainPath::CpuFullUpload : GrainPath::GpuInterpolated;
+    return render;
+}
+
+std::size_t differentPixels(const RgbImage& a, const RgbImage& b) {
+    REQUIRE(a.pixels.size() == b.pixels.size());
+    std::size_t different = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) different += a.pixels[i] != b.pixels[i] ? 1 : 0;
+    return different;
+}
+
+// Grains on every face of a grid and at its corners, blocks whose middle grains are inner, and
+// layers with holes on both sides of the seam (the lower grid's top two rows, the upper grid's
+// bottom two), each with its own pattern of holes: a grain there is inner or not by what the
+// other grid holds.
+void fillEdgesAndSeam(sandcore::Scene& scene) {
+    for (sandcore::GridLevel level : {sandcore::GridLevel::Lower, sandcore::GridLevel::Upper}) {
+        const sandcore::CellGrid& grid = scene.grid(level);
+        const sandcore::Int3 s = grid.size();
+        auto add = [&](int x, int y, int z) {
+            if (!grid.contains(x, y, z)) return;
+            const std::uint32_t cell = grid.index(x, y, z);
+            if (grid[cell] == sandcore::kEmpty) scene.addGrain(level, cell, (x * 7 + z * 13) % 3 == 0 ? 0xff3050c0u : 0u);
+        };
+        const bool lower = level == sandcore::GridLevel::Lower;
+        for (int z = 0; z < s.z; ++z)
+            for (int x = 0; x < s.x; ++x) {
+                const bool holes[2] = {lower ? (x + 2 * z) % 5 == 0 : (x + 3 * z) % 4 == 0,  // lower top-1, upper 0
+                                       lower ? (2 * x + z) % 7 == 0 : (x + z) % 3 == 0}; // lower top, upper 1
+                if (!holes[0]) add(x, lower ? s.y - 2 : 0, z);
+                if (!holes[1]) add(x, lower ? s.y - 1 : 1, z);
+            }
+        // 3x3x3 blocks in the corners (their middle grain and the corner's own are inner).
+        for (int cx : {0, s.x - 3})
+            for (int cz : {0, s.z - 3})
+                for (int y = 0; y < 3; ++y)
+                    for (int z = cz; z < cz + 3; ++z)
+                        for (int x = cx; x < cx + 3; ++x) add(x, lower ? y : s.y - 3 + y, z);
+    }
+}
+
+// Frames as opened, steeply from above and from below (where the grains under the seam and the
+// bottom corners show; the canvas keeps its own top view): first with everything uploaded, then after `steps` stepped frames, each of which
+// uploads only changes on the GPU path.
+std::vector<RgbImage> picturesOf(Path path, bool light, bool inner, bool canvas, int steps, std::int64_t* innerGrains) {
+    const GrainFlagsSwitch perGrain(path == Path::GpuGrainFlags);
+    ApplicationOptions options = canvas ? testing::canvasOptions(200, 160, 16, "cell bits on the GPU")
+                                        : testing::proceduralHourglassOptions(160, 160, 24, "cell bits on the GPU");
+    options.initial.render = renderSettings(path, light, inner);
+    options.initial.simulationRunning = false;
+    options.stepsBeforeStart = canvas ? 0 : 40;
+    std::optional<Application> app = testing::openApplication(std::move(options), "cell bits on the GPU");
+    REQUIRE(app);
+    if (canvas) fillEdgesAndSeam(app->host().editScene());
+    std::vector<RgbImage> pictures;
+    auto bothViews = [&] {
+        const float pitch = app->camera().pitch();
+        for (float to : {pitch, 1.3f, -1.3f}) { // as opened, steeply from above (into holes), from below
+            app->camera().rotate(0.0f, to - app->camera().pitch());
+            app->renderFrame(0.0);
+            pictures.push_back(app->captureFrame());
+        }
+        app->camera().rotate(0.0f, pitch - app->camera().pitch());
+    };
+    bothViews();
+    for (int step = 0; step < steps; ++step) {
+        app->runSteps(1);
+        app->renderFrame(0.0);
+        if (path != Path::Cpu) REQUIRE(!app->renderer().stats().fullUpload);
+    }
+    bothViews();
+    if (path != Path::Cpu) CHECK(app->renderer().gpuStore().flagsFromBits() == (path == Path::GpuCellBits));
+    *innerGrains = app->renderer().stats().innerGrains;
+    return pictures;
+}
+
+} // namespace
+
+TEST_CASE("V8: grains at the grid edges and the seam: the GPU's flags and normals from the cell bits draw the CPU's picture") {
+    if (!testing::requireDisplay("cell bits on the GPU")) return;
+    for (bool canvas : {true, false})
+        for (bool light : {true, false})
+            for (bool inner : {false, true}) {
+                CAPTURE(canvas);
+                CAPTURE(light);
+                CAPTURE(inner);
+                std::int64_t innerCpu = 0;
+                const std::vector<RgbImage> reference = picturesOf(Path::Cpu, light, inner, canvas, 6, &innerCpu);
+                CHECK(innerCpu > 0); // there are inner grains to hide
+                for (Path path : {Path::GpuCellBits, Path::GpuGrainFlags}) {
+                    CAPTURE(pathName(path));
+                    std::int64_t innerGpu = 0;
+                    const std::vector<RgbImage> gpu = picturesOf(path, light, inner, canvas, 6, &innerGpu);
+                    CHECK(innerGpu == innerCpu);
+                    REQUIRE(gpu.size() == reference.size());
+                    for (std::size_t picture = 0; picture < gpu.size(); ++picture) {
+                        CAPTURE(picture); // 0-2: the three views before the steps; 3-5: after them
+                        CHECK(differentPixels(gpu[picture], reference[picture]) == 0);
+                    }
+                }
+            }
+}
+
+TEST_CASE("V8: inner grains hidden and shown draw different pictures at the grid edges (the check above can fail)") {
+    if (!testing::requireDisplay("cell bits on the GPU")) return;
+    std::int64_t inner = 0;
+    const std::vector<RgbImage> hidden = picturesOf(Path::GpuCellBits, true, false, true, 0, &inner);
+    const std::vector<RgbImage> shown = picturesOf(Path::GpuCellBits, true, true, true, 0, &inner);
+    // A corner grain is inner (the grid's outside hides it) yet faces the camera: showing it shows.
+    CHECK(differentPixels(hidden[0], shown[0]) > 0);
+    CHECK(differentPixels(hidden[1], shown[1]) > 0);
+    CHECK(differentPixels(hidden[2], shown[2]) > 0);
+}
