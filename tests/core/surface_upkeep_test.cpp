@@ -192,6 +192,19 @@ Scene canvasWithColumn(GridLevel level, int x, int z, int yFrom, int yTo) {
     return scene;
 }
 
+// A column that reaches from the upper grid's layer 2 down into the lower grid's top rows, so
+// grains leave the upper grid's bottom row (the shared row) as others enter it, in one step; and a
+// second column one cell over, resting on nothing, in the upper grid only.
+Scene canvasWithSeamColumns() {
+    Scene scene = makeCanvasScene({{12, 4, 12}, {12, 10, 12}});
+    const CellGrid& upper = scene.grid(GridLevel::Upper);
+    const CellGrid& lower = scene.grid(GridLevel::Lower);
+    for (int y = 0; y <= 2; ++y) scene.addGrain(GridLevel::Upper, upper.index(5, y, 6));
+    for (int y = 6; y <= 8; ++y) scene.addGrain(GridLevel::Lower, lower.index(5, y, 6));
+    for (int y = 0; y <= 3; ++y) scene.addGrain(GridLevel::Upper, upper.index(6, y, 6));
+    return scene;
+}
+
 } // namespace
 
 TEST_CASE("surface upkeep: a falling column moves every grain but changes two cells, and stays exact") {
@@ -219,15 +232,7 @@ TEST_CASE("surface upkeep: a falling column moves every grain but changes two ce
 }
 
 TEST_CASE("surface upkeep: columns falling through the seam from the upper grid into the lower stay exact") {
-    // A column that reaches from the upper grid's layer 2 down into the lower grid's top rows:
-    // grains leave the upper grid's bottom row (the shared row) as others enter it, in one step.
-    Scene scene = makeCanvasScene({{12, 4, 12}, {12, 10, 12}});
-    const CellGrid& upper = scene.grid(GridLevel::Upper);
-    const CellGrid& lower = scene.grid(GridLevel::Lower);
-    for (int y = 0; y <= 2; ++y) scene.addGrain(GridLevel::Upper, upper.index(5, y, 6));
-    for (int y = 6; y <= 8; ++y) scene.addGrain(GridLevel::Lower, lower.index(5, y, 6));
-    // A second column one cell over, resting on nothing in the upper grid only.
-    for (int y = 0; y <= 3; ++y) scene.addGrain(GridLevel::Upper, upper.index(6, y, 6));
+    Scene scene = canvasWithSeamColumns();
     CHECK(runAndCheck(scene, 25) > 0);
     CHECK(scene.counters().grainsUpper == 0); // every grain crossed the seam
 }
@@ -313,12 +318,8 @@ TEST_CASE("surface upkeep without per-grain flags: bits, changed cells and inner
 }
 
 TEST_CASE("surface upkeep without per-grain flags: columns through the seam and a sculpture stay exact") {
-    Scene scene = makeCanvasScene({{12, 4, 12}, {12, 10, 12}});
+    Scene scene = canvasWithSeamColumns();
     const CellGrid& upper = scene.grid(GridLevel::Upper);
-    const CellGrid& lower = scene.grid(GridLevel::Lower);
-    for (int y = 0; y <= 2; ++y) scene.addGrain(GridLevel::Upper, upper.index(5, y, 6));
-    for (int y = 6; y <= 8; ++y) scene.addGrain(GridLevel::Lower, lower.index(5, y, 6));
-    for (int y = 0; y <= 3; ++y) scene.addGrain(GridLevel::Upper, upper.index(6, y, 6));
     for (int y = 0; y <= 3; ++y) scene.addGrain(GridLevel::Upper, upper.index(0, y, 0)); // at the grid's corner
     CHECK(runBitsOnlyAndCheck(scene, 25, true) > 0);
     CHECK(scene.counters().grainsUpper == 0);
