@@ -387,17 +387,6 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
         ++totals.visited;
         totals.moves += visitGranular(context, log, x, y, z) ? 1 : 0;
     };
-    // A visit reads the fall states of its grain and of the one below, by id: random accesses.
-    // Asking for the next awake cell's while this one is visited overlaps the two misses.
-    const FallState* falls = context.grains.fall[std::size_t(context.level)].data();
-    const CellValue* cells = context.grid.cells().data();
-    const std::uint32_t layer = context.grid.layerSize();
-    auto prefetchFalls = [&](int x, int z) {
-        const std::uint32_t cell = context.grid.index(x, y, z);
-        const CellValue here = cells[cell], below = cells[cell - layer];
-        if (here >= 0) __builtin_prefetch(falls + here);
-        if (below >= 0) __builtin_prefetch(falls + below);
-    };
     for (int i = zBegin; i < zEnd; ++i) {
         const int z = zDown ? zBegin + zEnd - 1 - i : i;
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
@@ -423,8 +412,6 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
                     ahead = (std::uint64_t{1} << bit) - 1;
                 else
                     ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
-                if (const std::uint64_t next = words[w].awake & ahead)
-                    prefetchFalls(w * 64 + (xDown ? 63 - __builtin_clzll(next) : __builtin_ctzll(next)), z);
                 visit(w * 64 + bit, z);
             }
         }
