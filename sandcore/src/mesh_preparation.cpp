@@ -102,7 +102,10 @@ BigVector<std::uint32_t> firstAtSamePosition(const std::vector<Vec3>& vertices, 
     return first;
 }
 
-// weldVertices: positions in the order of their first use, triangles renumbered.
+// weldVertices: positions in the order of their first use, triangles renumbered. Where no two
+// vertices share a position the result is the mesh itself, and nothing is copied: fresh memory
+// is what costs most here (the kernel clears every page), and meshes that were welded on
+// loading are the common case.
 void weld(const TriangleMesh& mesh, WalkedMesh& out, WorkerPool& pool) {
     const std::size_t count = mesh.vertices.size();
     if (count > kNone) throw std::invalid_argument("the mesh has too many vertices");
@@ -114,13 +117,26 @@ void weld(const TriangleMesh& mesh, WalkedMesh& out, WorkerPool& pool) {
         firstsBefore[std::size_t(r) + 1] = n;
     });
     for (std::size_t r = 0; r < kRanges; ++r) firstsBefore[r + 1] += firstsBefore[r];
-    out.vertices.resize(firstsBefore[kRanges]);
+    const std::size_t triangles = mesh.triangles.size();
+    const auto checkIndices = [&](const Triangle& t) {
+        if (t[0] >= count || t[1] >= count || t[2] >= count) throw std::invalid_argument("a triangle refers to a missing vertex");
+    };
+    if (firstsBefore[kRanges] == count) {
+        pool.parallelFor(int(kRanges), [&](int r) {
+            for (std::size_t n = rangeBegin(triangles, kRanges, r); n < rangeBegin(triangles, kRanges, r + 1); ++n)
+                checkIndices(mesh.triangles[n]);
+        });
+        out.vertices = mesh.vertices;
+        out.triangles = mesh.triangles;
+        return;
+    }
+    out.weldedVertices.resize(firstsBefore[kRanges]);
     BigVector<std::uint32_t> remap(count);
     pool.parallelFor(int(kRanges), [&](int r) {
         std::uint32_t n = firstsBefore[std::size_t(r)];
         for (std::size_t i = rangeBegin(count, kRanges, r); i < rangeBegin(count, kRanges, r + 1); ++i)
             if (first[i] == i) {
-                out.vertices[n] = mesh.vertices[i];
+                out.weldedVertices[n] = mesh.vertices[i];
                 remap[i] = n++;
             }
     });
@@ -128,16 +144,16 @@ void weld(const TriangleMesh& mesh, WalkedMesh& out, WorkerPool& pool) {
         for (std::size_t i = rangeBegin(count, kRanges, r); i < rangeBegin(count, kRanges, r + 1); ++i)
             if (first[i] != i) remap[i] = remap[first[i]];
     });
-    const std::size_t triangles = mesh.triangles.size();
-    out.triangles.resize(triangles);
+    out.ownTriangles.resize(triangles);
     pool.parallelFor(int(kRanges), [&](int r) {
         for (std::size_t n = rangeBegin(triangles, kRanges, r); n < rangeBegin(triangles, kRanges, r + 1); ++n) {
             const Triangle& t = mesh.triangles[n];
-            if (t[0] >= count || t[1] >= count || t[2] >= count)
-                throw std::invalid_argument("a triangle refers to a missing vertex");
-            out.triangles[n] = {remap[t[0]], remap[t[1]], remap[t[2]]};
+            checkIndices(t);
+            out.ownTriangles[n] = {remap[t[0]], remap[t[1]], remap[t[2]]};
         }
     });
+    out.vertices = out.weldedVertices;
+    out.triangles = out.ownTriangles;
 }
 
 bool isDegenerate(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
@@ -161,7 +177,7 @@ struct WalkCounts {
 // The edge walk of orientedOutwardWelded, in parallel: the uses are filed under their smaller
 // vertex by a stable counting sort (the chunks of triangles in order), then each vertex range
 // groups its uses by edge. Fills `neighbours`; the counts are sums, so the order of ranges does not matter.
-WalkCounts walkEdges(const BigVector<Triangle>& meshTriangles, std::size_t vertices, BigVector<std::uint32_t>& neighbours, WorkerPool& pool) {
+WalkCounts walkEdges(std::span<const Triangle> meshTriangles, std::size_t vertices, BigVector<std::uint32_t>& neighbours, WorkerPool& pool) {
     const std::size_t triangles = meshTriangles.size();
     if (triangles >= (std::size_t{1} << 29)) throw std::invalid_argument("the mesh has too many triangles");
     const std::size_t chunks = countingChunks(pool);
@@ -271,7 +287,7 @@ WalkCounts walkEdges(const BigVector<Triangle>& meshTriangles, std::size_t verti
 
 // trianglesToKeep, looking only at the triangles that can repeat another: a repeated face and
 // its first copy are both suspects (or degenerate), so every group of equal faces lies among them.
-std::vector<char> trianglesToKeepAmong(const BigVector<Triangle>& triangles, std::vector<std::uint32_t> candidates) {
+std::vector<char> trianglesToKeepAmong(std::span<const Triangle> triangles, std::vector<std::uint32_t> candidates) {
     for (std::size_t n = 0; n < triangles.size(); ++n)
         if (isDegenerate(triangles[n])) candidates.push_back(std::uint32_t(n));
     using Keyed = std::pair<Triangle, std::uint32_t>;
@@ -294,6 +310,20 @@ std::vector<char> trianglesToKeepAmong(const BigVector<Triangle>& triangles, std
 }
 
 } // namespace
+
+std::span<MeshTriangle> WalkedMesh::changeableTriangles() {
+    if (ownTriangles.data() != triangles.data() || ownTriangles.size() != triangles.size()) {
+        ownTriangles.assign(triangles.begin(), triangles.end());
+        triangles = ownTriangles;
+    }
+    return ownTriangles;
+}
+
+void WalkedMesh::keepFirstTriangles(std::size_t count) {
+    changeableTriangles();
+    ownTriangles.resize(count);
+    triangles = ownTriangles;
+}
 
 MeshBounds boundsInParallel(const TriangleMesh& mesh, WorkerPool& pool) {
     if (mesh.triangles.empty()) throw std::invalid_argument("the mesh has no triangles");
@@ -347,10 +377,11 @@ WalkedMesh weldAndWalk(const TriangleMesh& mesh, WorkerPool& pool) {
     const std::vector<char> keep = trianglesToKeepAmong(walked.triangles, std::move(asLoaded.suspects));
     if (keep.empty()) return walked;
     // Faces written twice go; the walk over what is left links the faces anew.
+    const std::span<Triangle> triangles = walked.changeableTriangles();
     std::size_t kept = 0;
-    for (std::size_t n = 0; n < walked.triangles.size(); ++n)
-        if (keep[n]) walked.triangles[kept++] = walked.triangles[n];
-    walked.triangles.resize(kept);
+    for (std::size_t n = 0; n < triangles.size(); ++n)
+        if (keep[n]) triangles[kept++] = triangles[n];
+    walked.keepFirstTriangles(kept);
     walkEdges(walked.triangles, walked.vertices.size(), walked.neighbours, pool);
     return walked;
 }
@@ -536,10 +567,11 @@ double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8
 }
 
 void applyOrientation(WalkedMesh& walked, const Orientation& orientation, WorkerPool& pool) {
-    const std::size_t count = walked.triangles.size();
+    const std::span<Triangle> triangles = walked.changeableTriangles();
+    const std::size_t count = triangles.size();
     pool.parallelFor(int(kRanges), [&](int r) {
         for (std::size_t t = rangeBegin(count, kRanges, r); t < rangeBegin(count, kRanges, r + 1); ++t)
-            if (orientation.flipped[t]) std::swap(walked.triangles[t][1], walked.triangles[t][2]);
+            if (orientation.flipped[t]) std::swap(triangles[t][1], triangles[t][2]);
     });
 }
 

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <new>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -32,13 +33,27 @@ using MeshTriangle = std::array<std::uint32_t, 3>;
 
 /// A welded mesh, its repeated faces dropped, with the links between faces that one walk over
 /// its edges found. Kept in huge pages: fresh memory costs a page fault per 4 KiB otherwise.
+/// A mesh loaded through a library that welds (assimp) has nothing to weld: then the spans are
+/// the given mesh's own arrays, and nothing is copied until a step must change the triangles.
 struct WalkedMesh {
-    LargePageVector<Vec3> vertices;           ///< welded positions, in the order of first use
-    LargePageVector<MeshTriangle> triangles;  ///< kept triangles, as given
+    std::span<const Vec3> vertices;           ///< welded positions, in the order of first use
+    std::span<const MeshTriangle> triangles;  ///< kept triangles, as given
+    LargePageVector<Vec3> weldedVertices;     ///< the vertices' storage where welding changed them
+    LargePageVector<MeshTriangle> ownTriangles; ///< the triangles' storage once they are changed
     MeshClosedness closedness;                ///< closednessOf the mesh as given (before dropping repeated faces)
     /// Per triangle edge slot 3t + e (edge from corner e to e + 1): the neighbour across an edge
     /// used by exactly two triangles, other << 1 | (1 when the two run along it the same way).
     LargePageVector<std::uint32_t> neighbours;
+
+    WalkedMesh() = default;
+    WalkedMesh(const WalkedMesh&) = delete; // the spans may point into its own storage
+    WalkedMesh& operator=(const WalkedMesh&) = delete;
+    WalkedMesh(WalkedMesh&&) = default;     // a moved vector keeps its buffer, so the spans stay valid
+
+    /// The triangles, in storage of its own (copied from the given mesh the first time).
+    std::span<MeshTriangle> changeableTriangles();
+    /// Keeps the first `count` triangles.
+    void keepFirstTriangles(std::size_t count);
 };
 
 /// boundsOf, in parallel: the same bounds, and the same error for the first bad triangle.

@@ -263,7 +263,7 @@ std::int64_t countInside(const InsideMask& mask, WorkerPool& pool) {
 
 // The prepared mesh's vertices in grid coordinates, quantized (as quantize of the double grid
 // coordinates), in parallel.
-LargePageVector<Point> quantizedGridPoints(const LargePageVector<Vec3>& vertices, const VoxelPlacement& p, WorkerPool& pool) {
+LargePageVector<Point> quantizedGridPoints(std::span<const Vec3> vertices, const VoxelPlacement& p, WorkerPool& pool) {
     constexpr int kChunks = 64;
     LargePageVector<Point> points(vertices.size());
     pool.parallelFor(kChunks, [&](int c) {
@@ -359,6 +359,9 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
         signedVolume = signedVolumeOf(walked, orientation.flipped, bounds);
         if (settings.robust) applyOrientation(walked, orientation, pool);
     };
+    // Robust mode flips triangles in place before the rays read them: they must be its own copy
+    // by the time the rays are given their span.
+    if (settings.robust) walked.changeableTriangles();
     const LargePageVector<Point> points = quantizedGridPoints(walked.vertices, p, pool);
     result.mask = insideFromPoints(points, walked.triangles, p.size, settings, pool, &orient);
     result.cellsInside = countInside(result.mask, pool);
