@@ -448,7 +448,7 @@ Orientation orientationBySearch(const WalkedMesh& out) {
 // can be satisfied. Each part's volume is summed in triangle order; where that sum could have
 // a different sign in the search's order (within rounding of zero), or a link cannot be
 // satisfied, the search decides. Returns false then, with nothing changed.
-bool orientationByParts(const WalkedMesh& out, Orientation& result) {
+bool orientationByParts(const WalkedMesh& out, const MeshBounds& bounds, Orientation& result) {
     const std::size_t count = out.triangles.size();
     const auto& neighbours = out.neighbours;
     BigVector<std::uint32_t> parent(count);
@@ -496,7 +496,13 @@ bool orientationByParts(const WalkedMesh& out, Orientation& result) {
         std::size_t terms = 0;
     };
     std::vector<PartSums> sums(parts);
-    for (std::size_t t = 0; t < count; ++t) {
+    // One part uses every vertex the mesh as loaded uses (welding and dropping repeated faces
+    // keep each position a kept face uses; only the sign of a zero may differ, and the centre,
+    // half the sum of the bounds, does not): its bounds are the mesh's, with no pass over its
+    // corners, and its volume is the mesh's (signedVolumeOf, the same terms in the same order).
+    const bool onePart = parts == 1;
+    if (onePart) sums[0].low = bounds.min, sums[0].high = bounds.max;
+    for (std::size_t t = 0; t < count && !onePart; ++t) {
         PartSums& part = sums[partOf[t]];
         for (std::uint32_t i : out.triangles[t]) {
             const Vec3 v = out.vertices[i];
@@ -537,14 +543,16 @@ bool orientationByParts(const WalkedMesh& out, Orientation& result) {
     result.flipped.resize(count);
     for (std::size_t t = 0; t < count; ++t) result.flipped[t] = parity[t] ^ flipPart[partOf[t]];
     result.inconsistentAfter = 0; // every link satisfied
+    // Turning every face over negates each term exactly, and so the sum.
+    if (onePart) result.signedVolume = (flipPart[0] ? -sums[0].sixTimesVolume : sums[0].sixTimesVolume) / 6.0;
     return true;
 }
 
 } // namespace
 
-Orientation orientationOf(const WalkedMesh& walked) {
+Orientation orientationOf(const WalkedMesh& walked, const MeshBounds& bounds) {
     Orientation orientation;
-    if (orientationByParts(walked, orientation)) return orientation;
+    if (orientationByParts(walked, bounds, orientation)) return orientation;
     return orientationBySearch(walked);
 }
 

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <new>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -68,8 +69,12 @@ WalkedMesh weldAndWalk(const TriangleMesh& mesh, WorkerPool& pool);
 struct Orientation {
     LargePageVector<std::uint8_t> flipped;
     std::int64_t inconsistentAfter = 0;
+    /// signedVolumeOf(walked, flipped, bounds), where the orientation summed it on the way (a mesh
+    /// of one part, whose centre is the bounds' centre); otherwise empty.
+    std::optional<double> signedVolume;
 };
-Orientation orientationOf(const WalkedMesh& walked);
+/// `bounds`: boundsInParallel of the mesh as loaded.
+Orientation orientationOf(const WalkedMesh& walked, const MeshBounds& bounds);
 
 /// signedVolume of the mesh with the flipped triangles turned over, bit for bit, given the
 /// bounds of the mesh as loaded (boundsInParallel). Its triangles' corners are the welded mesh's

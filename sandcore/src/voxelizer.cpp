@@ -355,8 +355,8 @@ VoxelizeResult voxelize(const TriangleMesh& mesh, const VoxelizeSettings& settin
     Orientation orientation;
     double signedVolume = 0.0;
     const std::function<void()> orient = [&] {
-        orientation = orientationOf(walked);
-        signedVolume = signedVolumeOf(walked, orientation.flipped, bounds);
+        orientation = orientationOf(walked, bounds);
+        signedVolume = orientation.signedVolume ? *orientation.signedVolume : signedVolumeOf(walked, orientation.flipped, bounds);
         if (settings.robust) applyOrientation(walked, orientation, pool);
     };
     // Robust mode flips triangles in place before the rays read them: they must be its own copy

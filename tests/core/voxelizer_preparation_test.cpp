@@ -193,6 +193,31 @@ TEST_CASE("voxelize agrees with the step-by-step functions on welded models, dam
         }
 }
 
+// A closed mesh of one part (the common case) takes its volume from the orientation's own sum,
+// with no pass of its own: it must be signedVolume's bit for bit, faces flipped or not.
+TEST_CASE("the volume of a mesh of one part is signedVolume's, with and without flipped faces") {
+    for (const TriangleMesh& shape : {makeIcosphereMesh(4, 1.0f), makeTorusMesh(1.0f, 0.4f, 40, 20)}) {
+        for (double flipShare : {0.0, 0.3, 1.0}) {
+            CAPTURE(flipShare);
+            TriangleMesh mesh = moved(shape, 9.5f, {13.1f, 15.3f, 16.7f});
+            Random random{7};
+            for (auto& t : mesh.triangles)
+                if (random.chance(flipShare)) std::swap(t[1], t[2]);
+            const TriangleMesh prepared = orientedOutward(withoutRepeatedTriangles(mesh));
+            for (int threads : {1, 2}) {
+                VoxelizeSettings settings;
+                settings.resolution = 48;
+                settings.threads = threads;
+                const VoxelizeResult result = voxelize(mesh, settings);
+                const auto& scale = result.placement.scale;
+                CHECK(result.volumeMeaningful);
+                CHECK(result.meshVolume == std::abs(signedVolume(prepared)) * scale[0] * scale[1] * scale[2]);
+                CHECK(result.meshVolume > 0.0);
+            }
+        }
+    }
+}
+
 TEST_CASE("a Moebius strip beside a closed model: open, no meaningful volume, the same cells as step by step") {
     TriangleMesh mesh = cleanModel();
     checkAgainstSteps(mesh, false);
