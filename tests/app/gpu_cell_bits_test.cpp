@@ -25,11 +25,10 @@ const char* pathName(Path path) {
     return path == Path::Cpu ? "cpu" : path == Path::GpuCellBits ? "gpu, cell bits" : "gpu, per-grain flags";
 }
 
-// The environment switch is read when the store decides, so it is set around the whole run.
+// The environment switch is read when the store decides, so it is set around the whole run. It
+// forces the cell bits too: on a software GL the store would draw hidden inner grains per grain.
 struct GrainFlagsSwitch {
-    explicit GrainFlagsSwitch(bool perGrain) {
-        if (perGrain) setenv("SANDGLASS_GPU_CELL_BITS", "0", 1);
-    }
+    explicit GrainFlagsSwitch(bool perGrain) { setenv("SANDGLASS_GPU_CELL_BITS", perGrain ? "0" : "1", 1); }
     ~GrainFlagsSwitch() { unsetenv("SANDGLASS_GPU_CELL_BITS"); }
 };
 
@@ -149,4 +148,28 @@ TEST_CASE("V8: inner grains hidden and shown draw different pictures at the grid
     CHECK(differentPixels(hidden[0], shown[0]) > 0);
     CHECK(differentPixels(hidden[1], shown[1]) > 0);
     CHECK(differentPixels(hidden[2], shown[2]) > 0);
+}
+
+TEST_CASE("V8: a software GL draws hidden inner grains from the per-grain flags, shown ones from the cell bits") {
+    CHECK(isSoftwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    CHECK(isSoftwareRenderer("SwiftShader Device (Subzero)"));
+    CHECK_FALSE(isSoftwareRenderer("NVIDIA H100 80GB HBM3/PCIe/SSE2"));
+    CHECK_FALSE(isSoftwareRenderer("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.7, DRM 3.54)"));
+    if (!testing::requireDisplay("cell bits on the GPU")) return;
+    unsetenv("SANDGLASS_GPU_CELL_BITS");
+    for (bool inner : {false, true}) {
+        CAPTURE(inner);
+        ApplicationOptions options = testing::proceduralHourglassOptions(160, 160, 24, "cell bits on the GPU");
+        options.initial.render = renderSettings(Path::GpuCellBits, true, inner);
+        options.initial.simulationRunning = false;
+        std::optional<Application> app = testing::openApplication(std::move(options), "cell bits on the GPU");
+        REQUIRE(app);
+        app->renderFrame(0.0);
+        const GrainGpuStore& store = app->renderer().gpuStore();
+        // The tests draw with Mesa's llvmpipe; on a GPU the cell bits serve both.
+        CHECK(store.flagsFromBits() == (inner || !store.softwareRenderer()));
+        app->runSteps(3);
+        app->renderFrame(0.0);
+        CHECK(!app->renderer().stats().fullUpload);
+    }
 }

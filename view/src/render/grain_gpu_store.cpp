@@ -98,6 +98,8 @@ GrainGpuStore::GrainGpuStore()
     GLint maxTexels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
     maxTexels_ = maxTexels;
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    softwareRenderer_ = renderer != nullptr && isSoftwareRenderer(renderer);
     for (BufferTexture* texture : {&places_gpu_, &looks_gpu_, &jitters_gpu_, &normals_gpu_, &cellBits_gpu_})
         allocate(*texture, 16, nullptr); // never empty: a texture needs storage
     packedByKey_.resize(sandcore::SurfaceUpkeep::kGradientKeys);
@@ -128,16 +130,24 @@ void GrainGpuStore::allocate(BufferTexture& texture, std::size_t bytes, const vo
     glBindTexture(GL_TEXTURE_BUFFER, 0);
 }
 
-bool GrainGpuStore::holdsCellBits(const sandcore::Scene& scene) const {
+bool isSoftwareRenderer(std::string_view glRenderer) {
+    for (std::string_view name : {"llvmpipe", "softpipe", "swrast", "SwiftShader", "Software Rasterizer", "GDI Generic"})
+        if (glRenderer.find(name) != std::string_view::npos) return true;
+    return false;
+}
+
+bool GrainGpuStore::holdsCellBits(const sandcore::Scene& scene, const RenderSettings& settings) const {
     const char* setting = std::getenv("SANDGLASS_GPU_CELL_BITS");
+    const bool forced = setting != nullptr && std::strcmp(setting, "1") == 0;
     if (setting != nullptr && std::strcmp(setting, "0") == 0) return false; // per-grain flags, to compare
+    if (softwareRenderer_ && !settings.innerGrains && !forced) return false;
     std::int64_t words = 0;
     for (sandcore::GridLevel level : kLevels) words += 2 * cellBitWordsOf(scene.grid(level));
     return holds(scene) && words <= maxTexels_;
 }
 
 sandcore::SurfaceTracking GrainGpuStore::trackingFor(const sandcore::Scene& scene, const RenderSettings& settings) const {
-    if (holdsCellBits(scene)) return {false, false, needsColumns(settings)};
+    if (holdsCellBits(scene, settings)) return {false, false, needsColumns(settings)};
     return {true, needsGradient(settings), true};
 }
 
@@ -145,7 +155,7 @@ bool GrainGpuStore::drawsFrom(const sandcore::Scene& scene, const sandcore::Surf
                               const RenderSettings& settings) const {
     const sandcore::SurfaceTracking kept = surface.kept();
     if (needsColumns(settings) && !kept.columnNormals) return false;
-    if (!kept.grainFlags) return holdsCellBits(scene);
+    if (!kept.grainFlags) return holdsCellBits(scene, settings);
     return !needsGradient(settings) || surface.tracksGradientNormals();
 }
 

@@ -31,9 +31,14 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace sandglass {
+
+/// True for the GL_RENDERER strings of renderers that run on the CPU: Mesa's llvmpipe, softpipe
+/// and swrast, SwiftShader, and the "Software Rasterizer" / "GDI Generic" fallbacks.
+bool isSoftwareRenderer(std::string_view glRenderer);
 
 /// A grain's place as the vertex shader reads it (RGBA32UI).
 struct GrainPlace {
@@ -66,9 +71,16 @@ public:
     bool canUpdate(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface, const RenderSettings& settings) const;
     /// False when the scene has more grains than this GL's buffer textures hold (draw another way).
     bool holds(const sandcore::Scene& scene) const { return std::int64_t(scene.grains().size()) <= maxTexels_; }
-    /// True when the occupancy bits of the scene's grids fit in one buffer texture of this GL
-    /// (then a surface without per-grain flags will do).
-    bool holdsCellBits(const sandcore::Scene& scene) const;
+    /// True when the grains are drawn from the occupancy bits under these settings (then a
+    /// surface without per-grain flags will do): the bits of the scene's grids fit in one buffer
+    /// texture of this GL, and the GL's vertex work runs on a GPU or inner grains are drawn. A
+    /// software GL (llvmpipe and its kind) runs the vertex shader on the CPU: with inner grains
+    /// hidden, the visible list of the per-grain path draws a tenth of the instances at a million
+    /// grains, and that outweighs its dearer upkeep. SANDGLASS_GPU_CELL_BITS=0 or 1 in the
+    /// environment forces either path (to compare them).
+    bool holdsCellBits(const sandcore::Scene& scene, const RenderSettings& settings) const;
+    /// True when GL_RENDERER names a renderer that rasterizes on the CPU.
+    bool softwareRenderer() const { return softwareRenderer_; }
     /// What a surface must keep for this store to draw under these settings: the bits alone where
     /// they fit (column normals too when lit by that method), else per-grain flags and normals.
     sandcore::SurfaceTracking trackingFor(const sandcore::Scene& scene, const RenderSettings& settings) const;
@@ -111,6 +123,7 @@ private:
     GlVertexArray everyGrainArray_;   // no attributes: instances are grain ids
     GlTexture columnNormals_;
     std::int64_t maxTexels_ = 0;
+    bool softwareRenderer_ = false;             // GL_RENDERER is a CPU rasterizer (isSoftwareRenderer)
     std::int64_t grainCount_ = 0;
     std::vector<std::uint32_t> packedByKey_;    // packNormal of each gradient key
     std::vector<std::uint32_t> packedColumns_;  // column normals as uploaded, texel order
