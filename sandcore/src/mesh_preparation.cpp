@@ -102,10 +102,18 @@ BigVector<std::uint32_t> firstAtSamePosition(const std::vector<Vec3>& vertices, 
     return first;
 }
 
+bool isDegenerate(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
+
+void checkIndices(const Triangle& t, std::size_t vertices) {
+    if (t[0] >= vertices || t[1] >= vertices || t[2] >= vertices)
+        throw std::invalid_argument("a triangle refers to a missing vertex");
+}
+
 // weldVertices: positions in the order of their first use, triangles renumbered. Where no two
 // vertices share a position the result is the mesh itself, and nothing is copied: fresh memory
 // is what costs most here (the kernel clears every page), and meshes that were welded on
-// loading are the common case.
+// loading are the common case. Their indices are checked by the edge walk that follows (it reads
+// every triangle anyway); renumbered triangles are checked here, before their indices are used.
 void weld(const TriangleMesh& mesh, WalkedMesh& out, WorkerPool& pool) {
     const std::size_t count = mesh.vertices.size();
     if (count > kNone) throw std::invalid_argument("the mesh has too many vertices");
@@ -118,14 +126,7 @@ void weld(const TriangleMesh& mesh, WalkedMesh& out, WorkerPool& pool) {
     });
     for (std::size_t r = 0; r < kRanges; ++r) firstsBefore[r + 1] += firstsBefore[r];
     const std::size_t triangles = mesh.triangles.size();
-    const auto checkIndices = [&](const Triangle& t) {
-        if (t[0] >= count || t[1] >= count || t[2] >= count) throw std::invalid_argument("a triangle refers to a missing vertex");
-    };
     if (firstsBefore[kRanges] == count) {
-        pool.parallelFor(int(kRanges), [&](int r) {
-            for (std::size_t n = rangeBegin(triangles, kRanges, r); n < rangeBegin(triangles, kRanges, r + 1); ++n)
-                checkIndices(mesh.triangles[n]);
-        });
         out.vertices = mesh.vertices;
         out.triangles = mesh.triangles;
         return;
@@ -148,7 +149,7 @@ void weld(const TriangleMesh& mesh, WalkedMesh& out, WorkerPool& pool) {
     pool.parallelFor(int(kRanges), [&](int r) {
         for (std::size_t n = rangeBegin(triangles, kRanges, r); n < rangeBegin(triangles, kRanges, r + 1); ++n) {
             const Triangle& t = mesh.triangles[n];
-            checkIndices(t);
+            checkIndices(t, count);
             out.ownTriangles[n] = {remap[t[0]], remap[t[1]], remap[t[2]]};
         }
     });
@@ -156,7 +157,7 @@ void weld(const TriangleMesh& mesh, WalkedMesh& out, WorkerPool& pool) {
     out.triangles = out.ownTriangles;
 }
 
-bool isDegenerate(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
+
 
 // One use of an edge by a triangle, filed under the edge's smaller vertex: the larger vertex,
 // and the triangle, which of its edges this is and whether it runs from the smaller vertex to
@@ -187,6 +188,7 @@ WalkCounts walkEdges(std::span<const Triangle> meshTriangles, std::size_t vertic
         std::uint32_t* counts = place.data() + std::size_t(c) * vertices;
         for (std::size_t n = rangeBegin(triangles, chunks, c); n < rangeBegin(triangles, chunks, c + 1); ++n) {
             const Triangle& t = meshTriangles[n];
+            checkIndices(t, vertices);
             if (isDegenerate(t)) continue;
             for (std::size_t e = 0; e < 3; ++e) ++counts[std::min(t[e], t[(e + 1) % 3])];
         }
@@ -501,15 +503,19 @@ bool orientationByParts(const WalkedMesh& out, const MeshBounds& bounds, Orienta
     // half the sum of the bounds, does not): its bounds are the mesh's, with no pass over its
     // corners, and its volume is the mesh's (signedVolumeOf, the same terms in the same order).
     const bool onePart = parts == 1;
-    if (onePart) sums[0].low = bounds.min, sums[0].high = bounds.max;
-    for (std::size_t t = 0; t < count && !onePart; ++t) {
-        PartSums& part = sums[partOf[t]];
-        for (std::uint32_t i : out.triangles[t]) {
-            const Vec3 v = out.vertices[i];
-            const double c[3] = {v.x, v.y, v.z};
-            for (std::size_t a = 0; a < 3; ++a) {
-                part.low[a] = std::min(part.low[a], c[a]);
-                part.high[a] = std::max(part.high[a], c[a]);
+    if (onePart) {
+        sums[0].low = bounds.min;
+        sums[0].high = bounds.max;
+    } else {
+        for (std::size_t t = 0; t < count; ++t) {
+            PartSums& part = sums[partOf[t]];
+            for (std::uint32_t i : out.triangles[t]) {
+                const Vec3 v = out.vertices[i];
+                const double c[3] = {v.x, v.y, v.z};
+                for (std::size_t a = 0; a < 3; ++a) {
+                    part.low[a] = std::min(part.low[a], c[a]);
+                    part.high[a] = std::max(part.high[a], c[a]);
+                }
             }
         }
     }

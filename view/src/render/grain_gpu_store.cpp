@@ -100,6 +100,10 @@ GrainGpuStore::GrainGpuStore()
     maxTexels_ = maxTexels;
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     softwareRenderer_ = renderer != nullptr && isSoftwareRenderer(renderer);
+    if (const char* setting = std::getenv("SANDGLASS_GPU_CELL_BITS")) { // either path, to compare
+        if (std::strcmp(setting, "0") == 0) cellBitsChoice_ = CellBitsChoice::Never;
+        if (std::strcmp(setting, "1") == 0) cellBitsChoice_ = CellBitsChoice::WhereTheyFit;
+    }
     for (BufferTexture* texture : {&places_gpu_, &looks_gpu_, &jitters_gpu_, &normals_gpu_, &cellBits_gpu_})
         allocate(*texture, 16, nullptr); // never empty: a texture needs storage
     packedByKey_.resize(sandcore::SurfaceUpkeep::kGradientKeys);
@@ -136,18 +140,16 @@ bool isSoftwareRenderer(std::string_view glRenderer) {
     return false;
 }
 
-bool GrainGpuStore::holdsCellBits(const sandcore::Scene& scene, const RenderSettings& settings) const {
-    const char* setting = std::getenv("SANDGLASS_GPU_CELL_BITS");
-    const bool forced = setting != nullptr && std::strcmp(setting, "1") == 0;
-    if (setting != nullptr && std::strcmp(setting, "0") == 0) return false; // per-grain flags, to compare
-    if (softwareRenderer_ && !settings.innerGrains && !forced) return false;
+bool GrainGpuStore::usesCellBits(const sandcore::Scene& scene, const RenderSettings& settings) const {
+    if (cellBitsChoice_ == CellBitsChoice::Never) return false;
+    if (cellBitsChoice_ == CellBitsChoice::ByRenderer && softwareRenderer_ && !settings.innerGrains) return false;
     std::int64_t words = 0;
     for (sandcore::GridLevel level : kLevels) words += 2 * cellBitWordsOf(scene.grid(level));
     return holds(scene) && words <= maxTexels_;
 }
 
 sandcore::SurfaceTracking GrainGpuStore::trackingFor(const sandcore::Scene& scene, const RenderSettings& settings) const {
-    if (holdsCellBits(scene, settings)) return {false, false, needsColumns(settings)};
+    if (usesCellBits(scene, settings)) return {false, false, needsColumns(settings)};
     return {true, needsGradient(settings), true};
 }
 
@@ -155,7 +157,7 @@ bool GrainGpuStore::drawsFrom(const sandcore::Scene& scene, const sandcore::Surf
                               const RenderSettings& settings) const {
     const sandcore::SurfaceTracking kept = surface.kept();
     if (needsColumns(settings) && !kept.columnNormals) return false;
-    if (!kept.grainFlags) return holdsCellBits(scene, settings);
+    if (!kept.grainFlags) return usesCellBits(scene, settings);
     return !needsGradient(settings) || surface.tracksGradientNormals();
 }
 

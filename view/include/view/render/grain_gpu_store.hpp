@@ -77,8 +77,8 @@ public:
     /// software GL (llvmpipe and its kind) runs the vertex shader on the CPU: with inner grains
     /// hidden, the visible list of the per-grain path draws a tenth of the instances at a million
     /// grains, and that outweighs its dearer upkeep. SANDGLASS_GPU_CELL_BITS=0 or 1 in the
-    /// environment forces either path (to compare them).
-    bool holdsCellBits(const sandcore::Scene& scene, const RenderSettings& settings) const;
+    /// environment when the store is made forces either path (to compare them).
+    bool usesCellBits(const sandcore::Scene& scene, const RenderSettings& settings) const;
     /// True when GL_RENDERER names a renderer that rasterizes on the CPU.
     bool softwareRenderer() const { return softwareRenderer_; }
     /// What a surface must keep for this store to draw under these settings: the bits alone where
@@ -124,6 +124,8 @@ private:
     GlTexture columnNormals_;
     std::int64_t maxTexels_ = 0;
     bool softwareRenderer_ = false;             // GL_RENDERER is a CPU rasterizer (isSoftwareRenderer)
+    enum class CellBitsChoice { ByRenderer, WhereTheyFit, Never };
+    CellBitsChoice cellBitsChoice_ = CellBitsChoice::ByRenderer; // SANDGLASS_GPU_CELL_BITS unset, 1, 0
     std::int64_t grainCount_ = 0;
     std::vector<std::uint32_t> packedByKey_;    // packNormal of each gradient key
     std::vector<std::uint32_t> packedColumns_;  // column normals as uploaded, texel order
