@@ -230,7 +230,7 @@ void GridSweep::applyDeferredWakes() {
     deferredWakesAbove_.clear();
 }
 
-void GridSweep::takeLoggedMoves(std::vector<std::uint32_t>& moved) {
+void GridSweep::takeLoggedMoves(std::vector<GrainMove>& moved) {
     for (StripLog& log : logs_) {
         moved.insert(moved.end(), log.moved.begin(), log.moved.end());
         log.moved.clear();
@@ -326,17 +326,21 @@ inline bool GridSweep::visitCell(const SweepContext& context, StripLog& log, int
     cells[to] = grain;
     cells[from] = kEmpty;
     words_[word].occupied &= ~bit;
-    const MoveCode back = packMove(-dx, 1, -dz);
-    if (context.feed) {
-        context.feed->push({std::uint32_t(grain), to, back}); // its record is written by another thread
-    } else {
-        context.grains.recordMove(std::uint32_t(grain), to, back, context.step);
-        (context.movedList ? *context.movedList : log.moved).push_back(std::uint32_t(grain));
-    }
+    record(context, log, {std::uint32_t(grain), to, packMove(-dx, 1, -dz), context.level});
 
     if (y - 1 > 0 || bottomIsOutlet_) wakeAt(x + dx, y - 1, z + dz); // it may move on next step
     wakeAroundEmptiedBy<false>(context.grid, x, y, z);             // the cell it left is free
     return true;
+}
+
+// A move's grain record: written and listed here, or fed to the thread that writes the records.
+inline void GridSweep::record(const SweepContext& context, StripLog& log, const GrainMove& move) {
+    if (context.feed) {
+        context.feed->push(move);
+        return;
+    }
+    context.grains.recordMove(move.grain, move.cell, move.cameFrom, context.step);
+    (context.movedList ? *context.movedList : log.moved).push_back(move);
 }
 
 bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z) {
@@ -361,13 +365,7 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
     words_[word].occupied &= ~bit; // every move goes down at least a layer: the cell it left is EMPTY
     const Int3 to = outcome.to;
     const std::uint32_t toCell = context.grid.index(to.x, to.y, to.z);
-    const auto grain = std::uint32_t(context.grid[toCell]);
-    if (context.feed) {
-        context.feed->push({grain, toCell, outcome.cameFrom}); // its record is written by another thread
-    } else {
-        context.grains.recordMove(grain, toCell, outcome.cameFrom, context.step);
-        (context.movedList ? *context.movedList : log.moved).push_back(grain);
-    }
+    record(context, log, {std::uint32_t(context.grid[toCell]), toCell, outcome.cameFrom, context.level});
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
     wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
     return true;

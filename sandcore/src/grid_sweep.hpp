@@ -23,9 +23,9 @@ class GranularRules;
 inline constexpr int kStripRows = 8;
 
 /// What one strip of a sweep keeps of its moves when its grain records are written at once: the
-/// ids of the grains it moved (threads that share a layer's strips each append to their own).
+/// grains it moved and where to (threads that share a layer's strips each append to their own).
 struct StripLog {
-    std::vector<std::uint32_t> moved;
+    std::vector<GrainMove> moved;
 };
 
 struct SweepResult {
@@ -47,9 +47,9 @@ struct SweepContext {
     /// When set (the two grids swept side by side), a classic move writes no grain record and
     /// lists no id: it is fed here for the thread that writes the records (move_feed.hpp).
     MoveFeed* feed;
-    /// When set (a sweep on one thread that writes records at once), the ids of moved grains are
-    /// appended here directly instead of to the strips' logs.
-    std::vector<std::uint32_t>* movedList;
+    /// When set (a sweep on one thread that writes records at once), the moves are appended here
+    /// directly instead of to the strips' logs.
+    std::vector<GrainMove>* movedList;
 };
 
 class GridSweep {
@@ -81,9 +81,9 @@ public:
     void applyDeferredWakes();
     /// The feed a side-by-side sweep of this grid fills (SweepContext::feed).
     MoveFeed& feed() { return feed_; }
-    /// Appends the ids of the grains the last sweep logged to `moved` and empties the logs. A
-    /// granular grain may be listed twice (it may move again in its own layer).
-    void takeLoggedMoves(std::vector<std::uint32_t>& moved);
+    /// Appends the moves the last sweep logged to `moved` and empties the logs. A granular grain
+    /// may be listed twice (it may move again in its own layer).
+    void takeLoggedMoves(std::vector<GrainMove>& moved);
     /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
     std::int64_t awakeRowCount() const;
 
@@ -123,6 +123,7 @@ private:
     // classic rules; true when a grain moved
     bool visitCell(const SweepContext& context, StripLog& log, int x, int y, int z);
     bool visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z);
+    void record(const SweepContext& context, StripLog& log, const GrainMove& move);
     SweepResult sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd);
     void clearRow(std::uint32_t row);
     void prefetchFirstAwake(const CellGrid& grid, int y, int z) const;

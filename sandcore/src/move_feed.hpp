@@ -20,13 +20,6 @@
 
 namespace sandcore {
 
-/// One move: what its grain's record gets.
-struct FedMove {
-    std::uint32_t grain; ///< its id
-    std::uint32_t to;    ///< the cell it entered
-    MoveCode cameFrom;   ///< offset back to the cell it left
-};
-
 class MoveFeed {
 public:
     /// Before a sweep, by the thread that starts it: room for `moves` moves, nothing fed. A sweep
@@ -35,7 +28,7 @@ public:
     /// wait in an overflow until the sweep ends. Fresh room is not written until used.
     void start(std::size_t moves) {
         if (moves > capacity_) {
-            moves_ = std::make_unique_for_overwrite<FedMove[]>(moves);
+            moves_ = std::make_unique_for_overwrite<GrainMove[]>(moves);
             capacity_ = moves;
         }
         size_ = 0;
@@ -46,7 +39,7 @@ public:
     }
 
     /// Producer: appends a move, not yet visible to the consumer.
-    void push(const FedMove& move) {
+    void push(const GrainMove& move) {
         if (size_ < capacity_)
             moves_[size_++] = move;
         else
@@ -73,7 +66,7 @@ public:
             if (next < end) idle = 0;
             for (; next < end; ++next) write(moves_[next]);
             if (done) {
-                for (const FedMove& move : overflow_) write(move);
+                for (const GrainMove& move : overflow_) write(move);
                 return;
             }
             // The producer is another thread that is running; yield only when it seems not to be.
@@ -93,11 +86,11 @@ private:
     }
 
     // The producer's own fields, then (on a line of their own) the two the consumer polls.
-    std::unique_ptr<FedMove[]> moves_;
+    std::unique_ptr<GrainMove[]> moves_;
     std::size_t capacity_ = 0;
     std::size_t size_ = 0;       // moves appended
     std::size_t sharedSize_ = 0; // moves published, as the producer last stored it
-    std::vector<FedMove> overflow_; // moves beyond capacity_, read by the consumer once done_
+    std::vector<GrainMove> overflow_; // moves beyond capacity_, read by the consumer once done_
     alignas(64) std::atomic<std::size_t> published_{0};
     std::atomic<bool> done_{false};
 };

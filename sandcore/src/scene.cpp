@@ -17,21 +17,22 @@ namespace {
 // Indices of GrainStore::fall.
 constexpr std::size_t kLowerGrid = std::size_t(GridLevel::Lower), kUpperGrid = std::size_t(GridLevel::Upper);
 
-// Drops repeated ids, keeping each one's first place: one bit per grain, set as an id is kept and
-// cleared again afterwards, so the cost follows the list, not the grain count (a sort of the list
-// took about 7% of a granular step).
-void keepFirstOfEach(std::vector<std::uint32_t>& ids, std::vector<std::uint64_t>& seen, std::uint32_t grainCount) {
+// Drops a grain's earlier moves, keeping its last (where it is now), in place: one bit per grain,
+// set as a grain is kept and cleared again afterwards, so the cost follows the list, not the grain
+// count (a sort of the list took about 7% of a granular step). The moves are scanned from the end.
+void keepLastOfEach(std::vector<GrainMove>& moves, std::vector<std::uint64_t>& seen, std::uint32_t grainCount) {
     if (seen.size() * 64 < grainCount) seen.resize((std::size_t(grainCount) + 63) / 64, 0); // all clear between calls
-    std::size_t kept = 0;
-    for (const std::uint32_t id : ids) {
+    std::size_t kept = moves.size();
+    for (std::size_t i = moves.size(); i-- > 0;) {
+        const std::uint32_t id = moves[i].grain;
         std::uint64_t& word = seen[id >> 6];
         const std::uint64_t bit = std::uint64_t{1} << (id & 63);
         if (word & bit) continue;
         word |= bit;
-        ids[kept++] = id;
+        moves[--kept] = moves[i];
     }
-    ids.resize(kept);
-    for (const std::uint32_t id : ids) seen[id >> 6] = 0;
+    moves.erase(moves.begin(), moves.begin() + std::ptrdiff_t(kept));
+    for (const GrainMove& move : moves) seen[move.grain >> 6] = 0;
 }
 
 bool layoutOnly(const CellGrid& grid) {
@@ -158,7 +159,7 @@ void Scene::step() {
     // logs, and one thread lists them in movedGrains_ directly.
     movedGrains_.clear();
     const bool feeding = sideBySide;
-    std::vector<std::uint32_t>* movedList = pool ? nullptr : &movedGrains_;
+    std::vector<GrainMove>* movedList = pool ? nullptr : &movedGrains_;
     MoveFeed* lowerFeed = feeding ? &lowerSweep_->feed() : nullptr;
     MoveFeed* upperFeed = feeding ? &upperSweep_->feed() : nullptr;
     const SweepContext lowerContext{lower_,   grains_,           settings_.seed,      stepNumber, GridLevel::Lower,
@@ -186,9 +187,9 @@ void Scene::step() {
             (grid == 0 ? lower : upper) = sweep.sweep(grid == 0 ? lowerContext : upperContext, nullptr);
             if (!feeding) return;
             sweep.feed().finish();
-            auto write = [&](const FedMove& move) {
-                grains_.recordMove(move.grain, move.to, move.cameFrom, stepNumber);
-                movedGrains_.push_back(move.grain);
+            auto write = [&](const GrainMove& move) {
+                grains_.recordMove(move.grain, move.cell, move.cameFrom, stepNumber);
+                movedGrains_.push_back(move);
             };
             if (writesItsOwn) return sweep.feed().drain(write);
             if (sweepsDone.fetch_add(1, std::memory_order_acq_rel) != 0) return; // the other one writes
@@ -207,7 +208,7 @@ void Scene::step() {
     upperSweep_->takeLoggedMoves(movedGrains_);
     if (granular_) {
         // A granular grain may move again in its own layer within one sweep: list it once.
-        keepFirstOfEach(movedGrains_, movedSeen_, grains_.size());
+        keepLastOfEach(movedGrains_, movedSeen_, grains_.size());
     }
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;
@@ -236,15 +237,12 @@ void Scene::transition() {
         grains_.cell[std::size_t(grain)] = below;
         // Same world position: a grain that fell into the shared row in this very step keeps
         // gliding from where it came from; one that was resting there does not move on screen.
-        if (grains_.movedAtStep[std::size_t(grain)] != counters_.stepsDone) {
-            grains_.cameFrom[std::size_t(grain)] = kNoMove;
-            grains_.movedAtStep[std::size_t(grain)] = counters_.stepsDone;
-            movedGrains_.push_back(std::uint32_t(grain)); // not yet listed by its sweep
-        }
+        listTransition(std::uint32_t(grain), below);
         lowerSweep_->wakeAt(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
         ++moved;
     });
+    moveListedIntoLowerGrid();
     counters_.grainsUpper -= moved;
     counters_.grainsLower += moved;
     counters_.movesLastStep += moved;
@@ -304,14 +302,11 @@ void Scene::transitionGranular() {
         grains_.level[grain] = GridLevel::Lower;
         grains_.cell[grain] = below;
         grains_.fall[kLowerGrid][grain] = fall; // its state goes with it into the lower grid's array
-        if (grains_.movedAtStep[grain] != step) {
-            grains_.cameFrom[grain] = kNoMove;
-            grains_.movedAtStep[grain] = step;
-            movedGrains_.push_back(std::uint32_t(grain)); // not yet listed by its sweep
-        }
+        listTransition(std::uint32_t(grain), below);
         lowerSweep_->wakeAt(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
     }
+    moveListedIntoLowerGrid();
     const auto moved = std::int64_t(passing);
     counters_.grainsUpper -= moved;
     counters_.grainsLower += moved;
@@ -319,7 +314,36 @@ void Scene::transitionGranular() {
     counters_.visitedLastStep += visited;
 }
 
-std::span<const std::uint32_t> Scene::movedGrains() const { return movedGrains_; }
+// A grain the transition passed into the lower grid's top row (its record says so already).
+// Same world position: one that fell into the shared row in this very step keeps gliding from
+// where it came from, and its sweep listed it already (moveListedIntoLowerGrid corrects that
+// entry); one that was resting there does not move on screen.
+void Scene::listTransition(std::uint32_t grain, std::uint32_t lowerCell) {
+    if (grains_.movedAtStep[grain] == counters_.stepsDone) {
+        listedTransitions_ = true;
+        return;
+    }
+    grains_.cameFrom[grain] = kNoMove;
+    grains_.movedAtStep[grain] = counters_.stepsDone;
+    movedGrains_.push_back({grain, lowerCell, kNoMove, GridLevel::Lower});
+}
+
+// The entries of grains that moved into the upper grid's bottom row in this step's sweep and
+// then passed into the lower grid: where they are now. Only such entries lie in that row of the
+// upper grid and name a grain the lower grid holds, so one pass over the list finds them without
+// reading the records of the others.
+void Scene::moveListedIntoLowerGrid() {
+    if (!listedTransitions_) return;
+    listedTransitions_ = false;
+    const std::uint32_t bottomRow = upper_.layerSize();
+    for (GrainMove& move : movedGrains_) {
+        if (move.level != GridLevel::Upper || move.cell >= bottomRow || grains_.level[move.grain] != GridLevel::Lower) continue;
+        move.level = GridLevel::Lower;
+        move.cell = grains_.cell[move.grain];
+    }
+}
+
+std::span<const GrainMove> Scene::movedGrains() const { return movedGrains_; }
 
 std::uint64_t Scene::stateHash() const {
     // Fixed constants and explicit widths keep the value the same on every platform.
@@ -373,7 +397,8 @@ void Scene::restore(const SceneSnapshot& saved) {
     grains_ = saved.grains;
     movedGrains_.clear(); // the grains the saved state's last step moved
     for (std::uint32_t id = 0; id < grains_.size(); ++id)
-        if (saved.counters.stepsDone > 0 && grains_.movedAtStep[id] == saved.counters.stepsDone) movedGrains_.push_back(id);
+        if (saved.counters.stepsDone > 0 && grains_.movedAtStep[id] == saved.counters.stepsDone)
+            movedGrains_.push_back({id, grains_.cell[id], grains_.cameFrom[id], grains_.level[id]});
     nextIdentity_ = saved.nextIdentity;
     counters_ = saved.counters;
     upperObstacles_ = saved.upperObstacles;
@@ -402,8 +427,10 @@ bool Scene::removeGrain(GridLevel level, std::uint32_t cell) {
     const std::uint32_t moved = grains_.removeBySwap(id);
     if (moved != id) gridRef(grains_.level[id])[grains_.cell[id]] = CellValue(id);
     // The last step's list follows the renumbering: the removed grain leaves it, the last takes its id.
-    std::erase(movedGrains_, id);
-    if (moved != id) std::replace(movedGrains_.begin(), movedGrains_.end(), moved, id);
+    std::erase_if(movedGrains_, [&](const GrainMove& move) { return move.grain == id; });
+    if (moved != id)
+        for (GrainMove& move : movedGrains_)
+            if (move.grain == moved) move.grain = id;
     const Int3 c = grid.coordinate(cell);
     sweepOf(level).wakeAroundEmptied(grid, c.x, c.y, c.z);
     (level == GridLevel::Upper ? counters_.grainsUpper : counters_.grainsLower) -= 1;

@@ -6,7 +6,6 @@
 #include "grid_sweep.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <utility>
 
 namespace sandcore {
@@ -61,8 +60,8 @@ bool Scene::flip() {
     for (std::vector<FallState>& grid : grains_.fall) std::fill(grid.begin(), grid.end(), FallState{});
     // Every grain changed its cell, so the scene is no longer settled.
     counters_.movesLastStep = grains_.size();
-    movedGrains_.resize(grains_.size());
-    std::iota(movedGrains_.begin(), movedGrains_.end(), 0u);
+    movedGrains_.clear();
+    for (std::uint32_t id = 0; id < grains_.size(); ++id) movedGrains_.push_back({id, grains_.cell[id], kNoMove, grains_.level[id]});
     markEverythingAwake();
     return true;
 }

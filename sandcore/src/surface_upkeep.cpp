@@ -372,15 +372,14 @@ void SurfaceUpkeep::update(const Scene& scene) {
 }
 
 // The moved grains' cells into the bits, and their places into movedPlaces_. Two passes: the
-// first reads each grain (its fields fetched a few grains ahead) into movedPlaces_; the second
-// syncs the cell each fills and the cell it left from that compact list, their bits and the left
-// cell's grid entry fetched a few ahead (no chain of one miss waiting for another). Every move
-// goes down within one grid, except that a grain enters the lower grid's top row (the shared
-// row) from the upper grid, resting there (no move) or after a move in the same step: such
-// places go through world coordinates, both grids, in the first pass.
+// first copies the step's list of moves (each with the grain's place, so no grain record is read)
+// into movedPlaces_; the second syncs the cell each fills and the cell it left, their bits and the
+// left cell's grid entry fetched a few ahead (no chain of one miss waiting for another). Every
+// move goes down within one grid, except that a grain enters the lower grid's top row (the shared
+// row) from the upper grid, resting there (no move) or after a move in the same step: such places
+// go through world coordinates, both grids, in the first pass.
 void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
-    const GrainStore& grains = scene.grains();
-    const std::span<const std::uint32_t> moved = scene.movedGrains();
+    const std::span<const GrainMove> moved = scene.movedGrains();
     // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
     const auto step = std::uint32_t(scene.counters().stepsDone);
     const std::size_t first = movedPlaces_.size();
@@ -395,20 +394,15 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
                              std::int64_t(shape.layer) * moveDy(from));
     };
     for (std::size_t i = 0; i < moved.size(); ++i) {
-        if (i + kPrefetchAhead < moved.size()) {
-            const std::uint32_t ahead = moved[i + kPrefetchAhead];
-            prefetch(&grains.level[ahead]);
-            prefetch(&grains.cell[ahead]);
-            prefetch(&grains.cameFrom[ahead]);
-            if (trackFlags_) prefetch(&grains_[ahead]);
+        const GrainMove& move = moved[i];
+        if (trackFlags_) {
+            if (i + kPrefetchAhead < moved.size()) prefetch(&grains_[moved[i + kPrefetchAhead].grain]);
+            list(move.grain, kPlaceListed, changedPlace_);
         }
-        const std::uint32_t id = moved[i];
-        if (trackFlags_) list(id, kPlaceListed, changedPlace_);
-        const MovedPlace& place =
-            movedPlaces_.emplace_back(MovedPlace{id, grains.cell[id], grains.level[id] == GridLevel::Upper ? 1u : 0u, grains.cameFrom[id], step});
+        const MovedPlace& place = movedPlaces_.emplace_back(
+            MovedPlace{move.grain, move.cell, move.level == GridLevel::Upper ? 1u : 0u, move.cameFrom, step});
         if (withinGrid(place)) continue;
-        const GridLevel level = place.level != 0 ? GridLevel::Upper : GridLevel::Lower;
-        syncFilledCell(level, place.cell);
+        syncFilledCell(move.level, place.cell);
         const Int3 c = shapes_[place.level].coordinate(place.cell);
         const Int3 o = origins_[place.level];
         const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};

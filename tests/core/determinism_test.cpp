@@ -1,6 +1,7 @@
 // R4 conservation, R5 sleeping == full sweep, R6 threads, R7 recorded hash.
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
+#include "support/scene_fixtures.hpp"
 #include "support/thread_agreement.hpp"
 
 #include <doctest/doctest.h>
@@ -120,8 +121,8 @@ TEST_CASE("grain records agree on 1 and 2 threads while both grids are swept sid
         REQUIRE(a.level == b.level);
         REQUIRE(a.cameFrom == b.cameFrom);
         REQUIRE(a.movedAtStep == b.movedAtStep);
-        std::vector<std::uint32_t> movedOne(one.movedGrains().begin(), one.movedGrains().end());
-        std::vector<std::uint32_t> movedTwo(two.movedGrains().begin(), two.movedGrains().end());
+        std::vector<std::uint32_t> movedOne = fixtures::movedIds(one);
+        std::vector<std::uint32_t> movedTwo = fixtures::movedIds(two);
         std::sort(movedOne.begin(), movedOne.end());
         std::sort(movedTwo.begin(), movedTwo.end());
         REQUIRE(movedOne == movedTwo);

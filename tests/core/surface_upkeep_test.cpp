@@ -7,6 +7,7 @@
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
 #include "sandcore/surface_upkeep.hpp"
+#include "support/scene_fixtures.hpp"
 
 #include <doctest/doctest.h>
 
@@ -44,7 +45,7 @@ std::vector<Place> placesOf(const Scene& scene) {
 
 // Moved = changed cell or grid, or (a transition with no glide) moved in this very step.
 void checkMovedGrains(const Scene& scene, const std::vector<Place>& before) {
-    const std::span<const std::uint32_t> moved = scene.movedGrains();
+    const std::vector<std::uint32_t> moved = fixtures::movedIds(scene);
     const std::set<std::uint32_t> listed(moved.begin(), moved.end());
     REQUIRE(listed.size() == moved.size()); // each once
     // movesLastStep counts a grain that fell into the neck row and passed on in the same step twice.
@@ -115,7 +116,7 @@ int runAndCheck(Scene& scene, int steps) {
         const GrainStore& grains = scene.grains();
         for (std::size_t m = 0; m < upkeep.movedPlaces().size(); ++m) {
             const MovedPlace& place = upkeep.movedPlaces()[m];
-            const std::uint32_t id = scene.movedGrains()[m];
+            const std::uint32_t id = scene.movedGrains()[m].grain;
             REQUIRE(place.grain == id);
             REQUIRE(place.cell == grains.cell[id]);
             REQUIRE(place.level == (grains.level[id] == GridLevel::Upper ? 1u : 0u));
@@ -155,8 +156,8 @@ TEST_CASE("moved grains: the same list for 1 and 2 threads, empty once settled a
     for (int i = 0; i < 40; ++i) {
         one.step();
         two.step();
-        std::vector<std::uint32_t> a(one.movedGrains().begin(), one.movedGrains().end());
-        std::vector<std::uint32_t> b(two.movedGrains().begin(), two.movedGrains().end());
+        std::vector<std::uint32_t> a = fixtures::movedIds(one);
+        std::vector<std::uint32_t> b = fixtures::movedIds(two);
         std::sort(a.begin(), a.end());
         std::sort(b.begin(), b.end());
         REQUIRE(a == b);

@@ -19,6 +19,13 @@ inline sandcore::Scene boxScene(sandcore::Int3 lower, int upperHeight = 1,
                            std::move(lowerLayout), {}, step);
 }
 
+/// The ids of the grains the last step moved, in the scene's order.
+inline std::vector<std::uint32_t> movedIds(const sandcore::Scene& scene) {
+    std::vector<std::uint32_t> ids;
+    for (const sandcore::GrainMove& move : scene.movedGrains()) ids.push_back(move.grain);
+    return ids;
+}
+
 /// Places a grain at (x, y, z) of the lower grid; returns its id.
 inline std::int64_t putLower(sandcore::Scene& scene, int x, int y, int z) {
     const auto& grid = scene.grid(sandcore::GridLevel::Lower);

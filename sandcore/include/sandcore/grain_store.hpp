@@ -32,6 +32,16 @@ constexpr int moveDy(MoveCode m) { return int(m >> 16) - 32768; }         ///< y
 constexpr int moveDz(MoveCode m) { return int((m >> 8) & 0xffu) - 128; }  ///< z component of a packed offset
 inline constexpr MoveCode kNoMove = packMove(0, 0, 0); ///< dx = dy = dz = 0
 
+/// Where a step moved a grain: what its record holds after the move. A step lists these as it
+/// moves grains (Scene::movedGrains), so whoever follows the moves reads them in one sequential
+/// list instead of three per-grain arrays at random ids.
+struct GrainMove {
+    std::uint32_t grain = 0;            ///< its id
+    std::uint32_t cell = 0;             ///< the cell it is in, in grid `level`
+    MoveCode cameFrom = kNoMove;        ///< world offset back to the cell it left (as GrainStore::cameFrom)
+    GridLevel level = GridLevel::Lower; ///< the grid holding it
+};
+
 /// A granular grain's fall, kept in one record: the rules read both fields of every grain they
 /// visit, and one cache line a grain costs half as much as two.
 struct FallState {

@@ -83,8 +83,9 @@ public:
     const CellGrid& grid(GridLevel level) const { return level == GridLevel::Upper ? upper_ : lower_; } ///< a grid
     const GrainStore& grains() const { return grains_; } ///< per-grain records for drawing
     const SceneCounters& counters() const { return counters_; } ///< R14
-    /// Ids of the grains the last step moved (transitions included), each once, in no particular order.
-    std::span<const std::uint32_t> movedGrains() const;
+    /// The grains the last step moved (transitions included), each once with where it is now (its
+    /// record's cell, level and cameFrom), in no particular order.
+    std::span<const GrainMove> movedGrains() const;
     std::int64_t grainCount() const { return std::int64_t(grains_.size()); } ///< grains in both grids
     /// True once a step has moved nothing: no later step will move anything until the scene is edited.
     bool settled() const { return counters_.stepsDone > 0 && counters_.movesLastStep == 0; }
@@ -153,6 +154,8 @@ private:
     void markEverythingAwake();
     void configurePhysics();
     void transitionGranular();
+    void listTransition(std::uint32_t grain, std::uint32_t lowerCell);
+    void moveListedIntoLowerGrid();
     void flipLayouts();
     void makeSweeps();
 
@@ -171,7 +174,8 @@ private:
     std::unique_ptr<GranularRules> granular_; // null: classic
     std::unique_ptr<NeckFlow> neckFlow_;      // granular hourglass only
     std::vector<std::uint32_t> transitionReady_; // scratch of transitionGranular
-    std::vector<std::uint32_t> movedGrains_;     // movedGrains(); a flip moves every grain
+    std::vector<GrainMove> movedGrains_;         // movedGrains(); a flip moves every grain
+    bool listedTransitions_ = false;             // a transition passed a grain its sweep listed (scratch of step)
     std::vector<std::uint64_t> movedSeen_;       // scratch of step: one bit per grain, all clear between steps
 };
 
