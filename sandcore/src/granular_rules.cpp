@@ -132,31 +132,37 @@ GranularOutcome moveGrain(CellGrid& grid, CellValue grain, std::uint32_t from, s
 } // namespace
 
 GranularOutcome GranularRules::visit(CellGrid& grid, std::span<FallState> falls, std::uint64_t seed, std::uint64_t step,
-                                     std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z) const {
+                                     std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z, MotionHints hints) const {
     const std::uint32_t from = grid.index(x, y, z);
     const CellValue grain = grid[from];
     if (grain < 0) return {};
     const CellValue below = grid[from - grid.layerSize()];
-    if (below == kEmpty) return fall(grid, falls, bottomIsOutlet, x, y, z, from, grain);
+    if (below == kEmpty) return fall(grid, falls, bottomIsOutlet, x, y, z, from, grain, hints.grain);
 
+    // Most visited grains rest on grains at rest: the hints spare them both states (a cache miss
+    // each, by id).
     const auto id = std::size_t(grain);
-    if (below >= 0 && falls[std::size_t(below)].speed > 0) {
+    if (below >= 0 && hints.below && falls[std::size_t(below)].speed > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
         // so the grain follows at once when the one below moves on (a column flows as one).
         const std::uint32_t speed = falls[std::size_t(below)].speed;
-        const auto fraction = std::uint16_t(std::min<std::uint32_t>(falls[id].fraction + speed + gravity_ / 2, kOne - 1));
+        const FallState own = hints.grain ? falls[id] : FallState{};
+        const auto fraction = std::uint16_t(std::min<std::uint32_t>(own.fraction + speed + gravity_ / 2, kOne - 1));
         // Nothing changed (it waits, a cell of progress gathered, on a grain held at the same
         // speed): it may sleep, since the one below wakes it when it changes speed or moves. Not
         // on the outlet row of the upper grid, whose speeds the transition sets without a visit.
-        if (speed == falls[id].speed && fraction == falls[id].fraction && (y > 1 || !bottomIsOutlet))
-            return {GranularOutcome::Riding, {}};
-        falls[id].speed = speed;
-        falls[id].fraction = fraction;
-        return {GranularOutcome::Waiting, {}};
+        GranularOutcome outcome;
+        outcome.inMotion = true; // speed > 0
+        if (speed == own.speed && fraction == own.fraction && (y > 1 || !bottomIsOutlet)) {
+            outcome.kind = GranularOutcome::Riding;
+            return outcome;
+        }
+        falls[id] = {speed, fraction};
+        outcome.kind = GranularOutcome::Waiting;
+        return outcome;
     }
-    if (falls[id].speed | falls[id].fraction) { // most visited grains rest already: no write
-        falls[id].speed = 0;
-        falls[id].fraction = 0;
+    if (hints.grain && (falls[id].speed | falls[id].fraction)) { // it was in motion and stops here
+        falls[id] = FallState{};
         GranularOutcome outcome = slide(grid, seed, step, stream, x, y, z, from, grain, below == kInvalid);
         outcome.stopped = outcome.kind == GranularOutcome::Resting;
         return outcome;
@@ -165,34 +171,37 @@ GranularOutcome GranularRules::visit(CellGrid& grid, std::span<FallState> falls,
 }
 
 GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
-                                    std::uint32_t from, CellValue grain) const {
+                                    std::uint32_t from, CellValue grain, bool mayBeMoving) const {
     const auto id = std::size_t(grain);
+    const FallState before = mayBeMoving ? falls[id] : FallState{};
     // x(n) = g n^2 / 2 exactly at whole steps: each step advances by the mean speed v + g/2.
-    const std::uint64_t travel = std::uint64_t(falls[id].fraction) + falls[id].speed + gravity_ / 2;
-    const std::uint32_t speed = std::min(falls[id].speed + gravity_, kMaxFallSpeed);
+    const std::uint64_t travel = std::uint64_t(before.fraction) + before.speed + gravity_ / 2;
+    const std::uint32_t speed = std::min(before.speed + gravity_, kMaxFallSpeed);
     const int wanted = int(std::min<std::uint64_t>(travel >> 16, std::uint64_t(y)));
     if (wanted == 0) {
-        falls[id].speed = speed;
-        falls[id].fraction = std::uint16_t(travel);
-        return {GranularOutcome::Waiting, {}};
+        falls[id] = {speed, std::uint16_t(travel)};
+        GranularOutcome outcome{GranularOutcome::Waiting, {}};
+        outcome.inMotion = (speed | std::uint16_t(travel)) != 0;
+        return outcome;
     }
     // Check every cell of the path: the first non-EMPTY one stops the grain above it.
     const std::uint32_t layer = grid.layerSize();
     int fallen = 1; // the cell below is EMPTY
     while (fallen < wanted && grid[from - std::uint32_t(fallen + 1) * layer] == kEmpty) ++fallen;
     const int landedY = y - fallen;
+    FallState after;
     if (landedY == 0) { // the grid's bottom layer: an outlet keeps the speed, a floor stops it
-        falls[id].speed = bottomIsOutlet ? speed : 0;
-        falls[id].fraction = 0;
+        after = {bottomIsOutlet ? speed : 0, 0};
     } else if (fallen == int(travel >> 16)) { // free flight: nothing touched
-        falls[id].speed = speed;
-        falls[id].fraction = std::uint16_t(travel);
+        after = {speed, std::uint16_t(travel)};
     } else { // contact: the speed of a grain it lands on (0 when resting), or 0 on a wall
         const CellValue under = grid[from - std::uint32_t(fallen + 1) * layer];
-        falls[id].speed = under >= 0 ? std::min(speed, falls[std::size_t(under)].speed) : 0;
-        falls[id].fraction = 0;
+        after = {under >= 0 ? std::min(speed, falls[std::size_t(under)].speed) : 0, 0};
     }
-    return moveGrain(grid, grain, from, from - std::uint32_t(fallen) * layer, {0, fallen, 0}, {x, landedY, z});
+    falls[id] = after;
+    GranularOutcome outcome = moveGrain(grid, grain, from, from - std::uint32_t(fallen) * layer, {0, fallen, 0}, {x, landedY, z});
+    outcome.inMotion = (after.speed | after.fraction) != 0;
+    return outcome;
 }
 
 GranularOutcome GranularRules::slide(CellGrid& grid, std::uint64_t seed, std::uint64_t step, std::uint64_t stream, int x,

@@ -51,6 +51,14 @@ struct GranularOutcome {
     Int3 to{};   ///< the cell it moved to (Moved only)
     MoveCode cameFrom = kNoMove; ///< offset from `to` back to the cell it left (Moved only): its record's
     bool stopped = false; ///< Resting only: it was in motion and stopped, so whoever rides it must look again
+    bool inMotion = false; ///< its fall state (speed or fraction) is not zero after the visit
+};
+
+/// What the sweep knows of the fall states around a visit without reading them: a grain whose
+/// cell's bit is clear is at rest (speed and fraction 0), so its state need not be read.
+struct MotionHints {
+    bool grain = true; ///< the visited grain may be in motion
+    bool below = true; ///< the grain below it, if any, may be in motion
 };
 
 /// The tables the granular rules need, computed once from PhysicsSettings.
@@ -62,9 +70,10 @@ public:
     /// tells the grids apart in the random draws. bottomIsOutlet: the grid's layer 0 is open
     /// below (the upper grid), so a grain falling onto it keeps its speed. `falls`: the fall
     /// states of this grid's grains (GrainStore::fall of its level). A move changes the grid's
-    /// cells only: the caller writes the grain's record from the outcome.
+    /// cells only: the caller writes the grain's record from the outcome. hints: which fall states
+    /// are known to be zero (the result is the same; only fewer states are read).
     GranularOutcome visit(CellGrid& grid, std::span<FallState> falls, std::uint64_t seed, std::uint64_t step,
-                          std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z) const;
+                          std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z, MotionHints hints = {}) const;
 
     /// Deepest column a slide ever looks into, cells below the grain's layer.
     int maxDrop() const { return maxDrop_; }
@@ -99,7 +108,7 @@ public:
 
 private:
     GranularOutcome fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
-                         std::uint32_t from, CellValue grain) const;
+                         std::uint32_t from, CellValue grain, bool mayBeMoving) const;
     GranularOutcome slide(CellGrid& grid, std::uint64_t seed, std::uint64_t step, std::uint64_t stream, int x, int y,
                           int z, std::uint32_t from, CellValue grain, bool onVessel) const;
 

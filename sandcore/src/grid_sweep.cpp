@@ -49,6 +49,16 @@ GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
     logs_.resize(std::size_t((gridSize.z + kStripRows - 1) / kStripRows));
 }
 
+void GridSweep::setGranular(const GranularRules* granular) {
+    granular_ = granular;
+    inMotion_.assign(granular ? words_.size() : 0, 0);
+}
+
+void GridSweep::markInMotion(int x, int y, int z) {
+    const std::size_t row = std::size_t(y) * std::size_t(size_.z) + std::size_t(z);
+    inMotion_[row * std::size_t(rowWords_) + std::size_t(x >> 6)] |= std::uint64_t{1} << (x & 63);
+}
+
 void GridSweep::wakeAt(int x, int y, int z) {
     const std::size_t row = std::size_t(y) * std::size_t(size_.z) + std::size_t(z);
     const std::size_t word = row * std::size_t(rowWords_) + std::size_t(x >> 6);
@@ -258,6 +268,7 @@ void GridSweep::wakeEveryGrain(const CellGrid& grid) {
 
 void GridSweep::clear() {
     std::fill(words_.begin(), words_.end(), RowWord{});
+    std::fill(inMotion_.begin(), inMotion_.end(), 0);
     for (StripLog& log : logs_) log.moved.clear();
     std::fill(rowAwake_.begin(), rowAwake_.end(), 0);
 }
@@ -352,9 +363,19 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
         words_[word].occupied &= ~bit;
         return false;
     }
+    // The grain below is in the same column of the layer below: the same bit, one layer's words back.
+    const std::size_t wordBelow = word - std::size_t(size_.z) * std::size_t(rowWords_);
+    const MotionHints hints{(inMotion_[word] & bit) != 0, (inMotion_[wordBelow] & bit) != 0};
     const GranularOutcome outcome =
         granular_->visit(context.grid, context.grains.fall[std::size_t(context.level)], context.seed, context.step,
-                         std::uint64_t(context.level), bottomIsOutlet_, x, y, z);
+                         std::uint64_t(context.level), bottomIsOutlet_, x, y, z, hints);
+    // The bit follows the grain's state: cleared where it was, set where it is when in motion.
+    if (outcome.kind == GranularOutcome::Moved) {
+        inMotion_[word] &= ~bit;
+        if (outcome.inMotion) markInMotion(outcome.to.x, outcome.to.y, outcome.to.z);
+    } else if (outcome.inMotion != hints.grain) {
+        inMotion_[word] ^= bit;
+    }
     if (outcome.kind == GranularOutcome::Waiting || outcome.stopped) {
         if (outcome.kind == GranularOutcome::Waiting) wakeAt(x, y, z); // in motion: visited again next step
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its

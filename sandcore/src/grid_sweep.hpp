@@ -58,8 +58,13 @@ public:
     /// transition (the upper grid). The grid itself is passed to each sweep, so a Scene can move.
     GridSweep(Int3 gridSize, bool bottomIsOutlet);
 
-    /// The rules to apply: the granular ones (PH1), or the thesis's when null. Not owned.
-    void setGranular(const GranularRules* granular) { granular_ = granular; }
+    /// The rules to apply: the granular ones (PH1), or the thesis's when null. Not owned. Every
+    /// grain counts as at rest afterwards (the scene zeroes the fall states when the rules change).
+    void setGranular(const GranularRules* granular);
+    /// Granular: the grain now in cell (x, y, z) may be in motion (its fall state is not zero).
+    /// Whoever writes a fall state outside a sweep says so here; a cell whose bit is clear holds
+    /// no grain in motion, so a visit need not read its state.
+    void markInMotion(int x, int y, int z);
 
     void wake(std::uint32_t cell);              ///< the cell is visited in its layer's next turn
     void wakeAt(int x, int y, int z);           ///< as wake, by coordinate
@@ -150,6 +155,9 @@ private:
         std::uint64_t occupied = 0;
     };
     std::vector<RowWord> words_; // row = y * sizeZ + z, padded to whole words
+    // Granular only, indexed as words_: the cells whose grain may be in motion (markInMotion). A
+    // visit reads a grain's fall state by id, a cache miss, and most visited grains are at rest.
+    std::vector<std::uint64_t> inMotion_;
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
     MoveFeed feed_;
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits

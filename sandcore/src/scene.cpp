@@ -289,7 +289,10 @@ void Scene::transitionGranular() {
         // so the cell below the neck is free again by the next step and the column above refills
         // the neck row at once. The neck, not the supply around it, sets the rate.
         FallState& fall = grains_.fall[kUpperGrid][grain];
-        if (neckFlow_) fall.speed = NeckFlow::kFlowSpeed;
+        if (neckFlow_) {
+            fall.speed = NeckFlow::kFlowSpeed;
+            upperSweep_->markInMotion(c.x, 0, c.z);
+        }
         if (i >= passing) {
             upperSweep_->wakeAt(c.x, 0, c.z); // waits for a later step
             // Its speed may have changed without a move: the grain resting on it looks again.
@@ -302,6 +305,7 @@ void Scene::transitionGranular() {
         grains_.level[grain] = GridLevel::Lower;
         grains_.cell[grain] = below;
         grains_.fall[kLowerGrid][grain] = fall; // its state goes with it into the lower grid's array
+        if (fall.speed | fall.fraction) lowerSweep_->markInMotion(c.x, lowerTop, c.z);
         listTransition(std::uint32_t(grain), below);
         lowerSweep_->wakeAt(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
@@ -407,6 +411,18 @@ void Scene::restore(const SceneSnapshot& saved) {
     upperSweep_->clear();
     lowerSweep_->clear();
     markEverythingAwake();
+    if (granular_) markGrainsInMotion();
+}
+
+// Granular: tells the sweeps which grains are in motion after their fall states were set from
+// outside a step.
+void Scene::markGrainsInMotion() {
+    for (std::uint32_t id = 0; id < grains_.size(); ++id) {
+        const FallState& fall = grains_.fallOf(id);
+        if (!(fall.speed | fall.fraction)) continue;
+        const Int3 c = grid(grains_.level[id]).coordinate(grains_.cell[id]);
+        sweepOf(grains_.level[id]).markInMotion(c.x, c.y, c.z);
+    }
 }
 
 std::int64_t Scene::addGrain(GridLevel level, std::uint32_t cell, std::uint32_t rgba) {

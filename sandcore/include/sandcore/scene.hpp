@@ -156,6 +156,7 @@ private:
     void transitionGranular();
     void listTransition(std::uint32_t grain, std::uint32_t lowerCell);
     void moveListedIntoLowerGrid();
+    void markGrainsInMotion();
     void flipLayouts();
     void makeSweeps();
 
