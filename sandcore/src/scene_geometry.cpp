@@ -18,7 +18,7 @@ template <class Vector> constexpr std::uint64_t elementBytes() { return sizeof(t
 // application's memory check has always used, so a change there is a deliberate one.
 
 // Each grid cell: the live cell, a bit of the layout that reset returns to, and the sweep's
-// awake and occupied bits, rounded up to a whole byte.
+// awake, occupied and (granular) in-motion bits, rounded up to a whole byte.
 constexpr std::uint64_t kBytesPerGridCell = sizeof(CellValue) + 1;
 // One grain's record across GrainStore's arrays (41 bytes today: 25 of place and look, 8 of fall
 // state in each grid's array), rounded up to whole 8 bytes (the scenes reserve their grains).
