@@ -1,5 +1,6 @@
 #include "granular_rules.hpp"
 
+#include "empty_cells.hpp"
 #include "sandcore/counter_random.hpp"
 
 #include <algorithm>
@@ -219,11 +220,7 @@ GranularOutcome GranularRules::slide(CellGrid& grid, std::uint64_t seed, std::ui
     const int dzMin = std::max(-kGranularReach, -z), dzMax = std::min(kGranularReach, size.z - 1 - z);
     const int dxMin = std::max(-kGranularReach, -x), dxMax = std::min(kGranularReach, size.x - 1 - x);
     auto emptyRow = [&](const CellValue* centre) -> std::uint64_t {
-        if (inside) {
-            unsigned bits = 0;
-            for (int i = 0; i < 8; ++i) bits |= unsigned(centre[i - kGranularReach] == kEmpty) << i;
-            return bits & ((1u << kWindow) - 1);
-        }
+        if (inside) return emptyBitsOf8(centre - kGranularReach) & ((1u << kWindow) - 1);
         std::uint64_t bits = 0;
         for (int dx = dxMin; dx <= dxMax; ++dx) bits |= std::uint64_t(centre[dx] == kEmpty) << (dx + kGranularReach);
         return bits;

@@ -1,5 +1,6 @@
 #include "grid_sweep.hpp"
 
+#include "empty_cells.hpp"
 #include "granular_rules.hpp"
 #include "sand_rules.hpp"
 #include "sandcore/worker_pool.hpp"
@@ -123,9 +124,7 @@ std::uint64_t emptyInWindow(const CellGrid& grid, int x, int y, int z) {
         const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
         std::uint32_t bits = 0;
         if (inside) {
-            const CellValue* left = cells + (x - reach);
-            for (int i = 0; i < 8; ++i) bits |= std::uint32_t(left[i] == kEmpty) << i;
-            bits &= (1u << kGranularWindow) - 1;
+            bits = emptyBitsOf8(cells + (x - reach)) & ((1u << kGranularWindow) - 1);
         } else {
             for (int xx = x0; xx <= x1; ++xx) bits |= std::uint32_t(cells[xx] == kEmpty) << (xx - x + reach);
         }
