@@ -86,8 +86,8 @@ public:
     void applyDeferredWakes();
     /// The feed a side-by-side sweep of this grid fills (SweepContext::feed).
     MoveFeed& feed() { return feed_; }
-    /// Appends the moves the last sweep logged to `moved` and empties the logs. A granular grain
-    /// may be listed twice (it may move again in its own layer).
+    /// Appends the moves the last sweep logged to `moved` and empties the logs. Each grain is
+    /// listed at most once: every move goes down at least a layer, and each layer is visited once.
     void takeLoggedMoves(std::vector<GrainMove>& moved);
     /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
     std::int64_t awakeRowCount() const;

@@ -17,24 +17,6 @@ namespace {
 // Indices of GrainStore::fall.
 constexpr std::size_t kLowerGrid = std::size_t(GridLevel::Lower), kUpperGrid = std::size_t(GridLevel::Upper);
 
-// Drops a grain's earlier moves, keeping its last (where it is now), in place: one bit per grain,
-// set as a grain is kept and cleared again afterwards, so the cost follows the list, not the grain
-// count (a sort of the list took about 7% of a granular step). The moves are scanned from the end.
-void keepLastOfEach(std::vector<GrainMove>& moves, std::vector<std::uint64_t>& seen, std::uint32_t grainCount) {
-    if (seen.size() * 64 < grainCount) seen.resize((std::size_t(grainCount) + 63) / 64, 0); // all clear between calls
-    std::size_t kept = moves.size();
-    for (std::size_t i = moves.size(); i-- > 0;) {
-        const std::uint32_t id = moves[i].grain;
-        std::uint64_t& word = seen[id >> 6];
-        const std::uint64_t bit = std::uint64_t{1} << (id & 63);
-        if (word & bit) continue;
-        word |= bit;
-        moves[--kept] = moves[i];
-    }
-    moves.erase(moves.begin(), moves.begin() + std::ptrdiff_t(kept));
-    for (const GrainMove& move : moves) seen[move.grain >> 6] = 0;
-}
-
 bool layoutOnly(const CellGrid& grid) {
     const auto cells = grid.cells();
     return std::all_of(cells.begin(), cells.end(), [](CellValue v) { return v == kEmpty || v == kInvalid; });
@@ -206,10 +188,6 @@ void Scene::step() {
     }
     lowerSweep_->takeLoggedMoves(movedGrains_); // fed or listed directly: nothing left
     upperSweep_->takeLoggedMoves(movedGrains_);
-    if (granular_) {
-        // A granular grain may move again in its own layer within one sweep: list it once.
-        keepLastOfEach(movedGrains_, movedSeen_, grains_.size());
-    }
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;
     counters_.visitedLastStep = lower.visited + upper.visited;

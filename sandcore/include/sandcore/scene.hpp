@@ -177,7 +177,6 @@ private:
     std::vector<std::uint32_t> transitionReady_; // scratch of transitionGranular
     std::vector<GrainMove> movedGrains_;         // movedGrains(); a flip moves every grain
     bool listedTransitions_ = false;             // a transition passed a grain its sweep listed (scratch of step)
-    std::vector<std::uint64_t> movedSeen_;       // scratch of step: one bit per grain, all clear between steps
 };
 
 } // namespace sandcore
