@@ -183,13 +183,21 @@ WalkCounts walkEdges(std::span<const Triangle> meshTriangles, std::size_t vertic
     if (triangles >= (std::size_t{1} << 29)) throw std::invalid_argument("the mesh has too many triangles");
     const std::size_t chunks = countingChunks(pool);
     // place[c * vertices + v]: the uses of chunk c filed under v, then where the next one goes.
-    BigVector<std::uint32_t> place(chunks * vertices, 0);
+    // Every array here is written once, each part by the thread that uses it: a serial fill of
+    // fresh memory would leave the other threads idle while the kernel clears its pages.
+    BigVector<std::uint32_t> place(chunks * vertices);
+    neighbours.clear();
+    neighbours.resize(3 * triangles); // every slot is written below: by the walk, or here for a degenerate face
     pool.parallelFor(int(chunks), [&](int c) {
         std::uint32_t* counts = place.data() + std::size_t(c) * vertices;
+        std::fill(counts, counts + vertices, 0u);
         for (std::size_t n = rangeBegin(triangles, chunks, c); n < rangeBegin(triangles, chunks, c + 1); ++n) {
             const Triangle& t = meshTriangles[n];
             checkIndices(t, vertices);
-            if (isDegenerate(t)) continue;
+            if (isDegenerate(t)) {
+                std::fill_n(neighbours.begin() + std::ptrdiff_t(3 * n), 3, kNone);
+                continue;
+            }
             for (std::size_t e = 0; e < 3; ++e) ++counts[std::min(t[e], t[(e + 1) % 3])];
         }
     });
@@ -223,7 +231,6 @@ WalkCounts walkEdges(std::span<const Triangle> meshTriangles, std::size_t vertic
     for (std::size_t b = 0; b < batches; ++b)
         largestBatch = std::max<std::size_t>(largestBatch, start[batchStart[b + 1]] - start[batchStart[b]]);
     BigVector<EdgeUse> uses(largestBatch);
-    neighbours.assign(3 * triangles, kNone);
     std::vector<WalkCounts> perRange(kRanges * batches);
     for (std::size_t b = 0; b < batches; ++b) {
         const std::uint32_t low = std::uint32_t(batchStart[b]), high = std::uint32_t(batchStart[b + 1]);
@@ -259,6 +266,8 @@ WalkCounts walkEdges(std::span<const Triangle> meshTriangles, std::size_t vertic
                     const std::size_t n = std::size_t(first - group);
                     if (n % 2 == 1) ++counts.closedness.boundaryEdges;
                     if (n > 2) ++counts.closedness.nonManifoldEdges;
+                    if (n != 2)
+                        for (const EdgeUse* u = group; u < first; ++u) neighbours[u->slot()] = kNone;
                     if (n == 2) {
                         const bool flip = group[0].forward() == group[1].forward();
                         neighbours[group[0].slot()] = group[1].triangle() << 1 | std::uint32_t(flip);
@@ -336,26 +345,33 @@ MeshBounds boundsInParallel(const TriangleMesh& mesh, WorkerPool& pool) {
     std::vector<Part> parts(kRanges);
     const std::size_t count = mesh.triangles.size();
     pool.parallelFor(int(kRanges), [&](int r) {
-        Part& part = parts[std::size_t(r)];
-        part.bounds.min.fill(std::numeric_limits<double>::infinity());
-        part.bounds.max.fill(-std::numeric_limits<double>::infinity());
-        for (std::size_t n = rangeBegin(count, kRanges, r); n < rangeBegin(count, kRanges, r + 1); ++n)
+        // The bounds so far in locals, not in the part: stores through the reference would be
+        // kept in memory at every corner, since they might alias the vertices.
+        double low[3], high[3];
+        std::fill_n(low, 3, std::numeric_limits<double>::infinity());
+        std::fill_n(high, 3, -std::numeric_limits<double>::infinity());
+        const std::size_t end = rangeBegin(count, kRanges, r + 1);
+        for (std::size_t n = rangeBegin(count, kRanges, r); n < end; ++n) {
             for (std::uint32_t i : mesh.triangles[n]) {
                 if (i >= mesh.vertices.size()) {
-                    part.error = "a triangle refers to a missing vertex";
+                    parts[std::size_t(r)].error = "a triangle refers to a missing vertex";
                     return;
                 }
                 const Vec3 v = mesh.vertices[i];
                 const double c[3] = {v.x, v.y, v.z};
                 if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
-                    part.error = "the model has a non-finite coordinate (NaN or infinity)";
+                    parts[std::size_t(r)].error = "the model has a non-finite coordinate (NaN or infinity)";
                     return;
                 }
                 for (std::size_t a = 0; a < 3; ++a) {
-                    part.bounds.min[a] = std::min(part.bounds.min[a], c[a]);
-                    part.bounds.max[a] = std::max(part.bounds.max[a], c[a]);
+                    low[a] = std::min(low[a], c[a]);
+                    high[a] = std::max(high[a], c[a]);
                 }
             }
+        }
+        Part& part = parts[std::size_t(r)];
+        std::copy_n(low, 3, part.bounds.min.begin());
+        std::copy_n(high, 3, part.bounds.max.begin());
     });
     MeshBounds bounds;
     bounds.min.fill(std::numeric_limits<double>::infinity());
@@ -481,12 +497,15 @@ bool orientationByParts(const WalkedMesh& out, const MeshBounds& bounds, Orienta
             const std::uint32_t low = std::min(rootA, rootB), high = std::max(rootA, rootB);
             parent[high] = low, parity[high] = std::uint8_t(relative);
         }
-    // Parts numbered by their first triangle; flips relative to it.
-    BigVector<std::uint32_t> partOf(count);
+    // Parts numbered by their first triangle (a root is its part's smallest triangle); flips
+    // relative to it. A mesh of one part, the common case, needs no part numbers.
     std::uint32_t parts = 0;
-    for (std::size_t t = 0; t < count; ++t) {
-        const auto [root, toRoot] = find(std::uint32_t(t));
-        partOf[t] = root == t ? parts++ : partOf[root];
+    for (std::size_t t = 0; t < count; ++t) parts += parent[t] == t;
+    const bool onePart = parts == 1;
+    BigVector<std::uint32_t> partOf(onePart ? 0 : count);
+    for (std::uint32_t t = 0, next = 0; t < count; ++t) {
+        const auto [root, toRoot] = find(t);
+        if (!onePart) partOf[t] = root == t ? next++ : partOf[root];
         parity[t] = std::uint8_t(toRoot);
     }
     struct PartSums {
@@ -502,7 +521,6 @@ bool orientationByParts(const WalkedMesh& out, const MeshBounds& bounds, Orienta
     // keep each position a kept face uses; only the sign of a zero may differ, and the centre,
     // half the sum of the bounds, does not): its bounds are the mesh's, with no pass over its
     // corners, and its volume is the mesh's (signedVolumeOf, the same terms in the same order).
-    const bool onePart = parts == 1;
     if (onePart) {
         sums[0].low = bounds.min;
         sums[0].high = bounds.max;
@@ -519,23 +537,45 @@ bool orientationByParts(const WalkedMesh& out, const MeshBounds& bounds, Orienta
             }
         }
     }
-    for (std::size_t t = 0; t < count; ++t) {
-        PartSums& part = sums[partOf[t]];
+    // Six times the signed volume of face t about `centre`, flipped as its parity says.
+    const auto volumeTerm = [&](std::size_t t, const double* centre) {
         auto tri = out.triangles[t];
         if (parity[t]) std::swap(tri[1], tri[2]);
         double p[3][3];
         for (std::size_t k = 0; k < 3; ++k) {
             const Vec3 v = out.vertices[tri[k]];
-            p[k][0] = v.x - 0.5 * (part.low[0] + part.high[0]);
-            p[k][1] = v.y - 0.5 * (part.low[1] + part.high[1]);
-            p[k][2] = v.z - 0.5 * (part.low[2] + part.high[2]);
+            p[k][0] = v.x - centre[0];
+            p[k][1] = v.y - centre[1];
+            p[k][2] = v.z - centre[2];
         }
-        const double term = p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
-                            p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-                            p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
-        part.sixTimesVolume += term;
-        part.magnitude += std::abs(term);
-        ++part.terms;
+        return p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+               p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+    };
+    const auto centreOf = [](const PartSums& part, double* centre) {
+        for (std::size_t a = 0; a < 3; ++a) centre[a] = 0.5 * (part.low[a] + part.high[a]);
+    };
+    if (onePart) {
+        // The sums in locals: through a reference into `sums` they would be stored at every face.
+        double centre[3], sixTimesVolume = 0.0, magnitude = 0.0;
+        centreOf(sums[0], centre);
+        for (std::size_t t = 0; t < count; ++t) {
+            const double term = volumeTerm(t, centre);
+            sixTimesVolume += term;
+            magnitude += std::abs(term);
+        }
+        sums[0].sixTimesVolume = sixTimesVolume;
+        sums[0].magnitude = magnitude;
+        sums[0].terms = count;
+    } else {
+        for (std::size_t t = 0; t < count; ++t) {
+            PartSums& part = sums[partOf[t]];
+            double centre[3];
+            centreOf(part, centre);
+            const double term = volumeTerm(t, centre);
+            part.sixTimesVolume += term;
+            part.magnitude += std::abs(term);
+            ++part.terms;
+        }
     }
     // Summed in any order, n terms stay within n * 2^-53 * sum |term| of their exact sum: a sum
     // farther from zero than twice that (with a margin) has the sign of every order's sum.
@@ -547,7 +587,7 @@ bool orientationByParts(const WalkedMesh& out, const MeshBounds& bounds, Orienta
         flipPart[n] = part.sixTimesVolume < 0.0;
     }
     result.flipped.resize(count);
-    for (std::size_t t = 0; t < count; ++t) result.flipped[t] = parity[t] ^ flipPart[partOf[t]];
+    for (std::size_t t = 0; t < count; ++t) result.flipped[t] = parity[t] ^ flipPart[onePart ? 0 : partOf[t]];
     result.inconsistentAfter = 0; // every link satisfied
     // Turning every face over negates each term exactly, and so the sum.
     if (onePart) result.signedVolume = (flipPart[0] ? -sums[0].sixTimesVolume : sums[0].sixTimesVolume) / 6.0;

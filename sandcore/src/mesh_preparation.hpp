@@ -18,17 +18,6 @@
 
 namespace sandcore {
 
-/// LargePageAllocator whose resize leaves the new elements default-initialised (unwritten, for
-/// arrays a parallel pass fills): writing zeros first would touch every page twice.
-template <class T> struct FillLaterAllocator : LargePageAllocator<T> {
-    using value_type = T;
-    FillLaterAllocator() = default;
-    template <class U> FillLaterAllocator(const FillLaterAllocator<U>&) noexcept {}
-    template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
-    template <class U, class... Args> void construct(U* p, Args&&... args) {
-        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-    }
-};
 template <class T> using LargePageVector = std::vector<T, FillLaterAllocator<T>>;
 using MeshTriangle = std::array<std::uint32_t, 3>;
 

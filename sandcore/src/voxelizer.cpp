@@ -213,12 +213,29 @@ void castRays(std::span<const Point> points, std::span<const MeshTriangle> trian
     });
 }
 
+// An all-outside mask, each thread clearing one contiguous share: the mask is the largest fresh
+// array of a first voxelization, and the kernel clears a fresh page for whichever thread touches
+// it first, so one thread clearing all of it would leave the others waiting.
+InsideMask emptyMaskInParallel(Int3 size, WorkerPool& pool) {
+    validateGridSize(size);
+    InsideMask mask;
+    mask.size = size;
+    const std::size_t cells = std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z);
+    mask.inside.resize(cells); // unset until the shares below clear it
+    const int shares = pool.threadCount();
+    pool.parallelFor(shares, [&](int s) {
+        std::fill(mask.inside.begin() + std::ptrdiff_t(cells * std::size_t(s) / std::size_t(shares)),
+                  mask.inside.begin() + std::ptrdiff_t(cells * std::size_t(s + 1) / std::size_t(shares)), std::uint8_t{0});
+    });
+    return mask;
+}
+
 // The inside test on quantized grid points: plain parity along x, or S5's vote over three axes.
 // In plain mode `alongside` (if given) runs during the casting, in robust mode before it.
 InsideMask insideFromPoints(std::span<const Point> points, std::span<const MeshTriangle> triangles, Int3 size,
                             const VoxelizeSettings& settings, WorkerPool& pool,
                             const std::function<void()>* alongside = nullptr) {
-    InsideMask mask = InsideMask::empty(size);
+    InsideMask mask = emptyMaskInParallel(size, pool);
     if (!settings.robust) {
         castRays(points, triangles, {0, 1, 2}, size, settings, pool, mask.inside, false, alongside);
         return mask;

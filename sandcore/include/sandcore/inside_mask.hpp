@@ -11,7 +11,9 @@
 namespace sandcore {
 
 /// A mask's flags: a model at 256 cells is 16 MiB, so in huge pages, reused once freed.
-using MaskCells = std::vector<std::uint8_t, LargePageAllocator<std::uint8_t>>;
+/// Sized without a value (`MaskCells(n)`, `resize(n)`) the flags are unset until written, so a
+/// pass that writes every flag (in parallel) touches each page once; give a value to clear them.
+using MaskCells = std::vector<std::uint8_t, FillLaterAllocator<std::uint8_t>>;
 
 /// Inside flags for a box of cells, in CellGrid's index layout (x fastest, then z, then y).
 struct InsideMask {

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <new>
+#include <utility>
 
 namespace sandcore {
 
@@ -36,6 +37,19 @@ template <class T> struct LargePageAllocator {
     T* allocate(std::size_t n) { return static_cast<T*>(allocateLarge(n * sizeof(T))); }
     void deallocate(T* p, std::size_t n) noexcept { freeLarge(p, n * sizeof(T)); }
     template <class U> bool operator==(const LargePageAllocator<U>&) const noexcept { return true; }
+};
+
+/// LargePageAllocator whose resize leaves the new elements default-initialised (unwritten, for
+/// arrays a parallel pass fills): writing zeros first would touch every page twice, on one
+/// thread. A vector sized without a value holds indeterminate elements until they are written.
+template <class T> struct FillLaterAllocator : LargePageAllocator<T> {
+    using value_type = T;
+    FillLaterAllocator() = default;
+    template <class U> FillLaterAllocator(const FillLaterAllocator<U>&) noexcept {}
+    template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+    template <class U, class... Args> void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
 };
 
 } // namespace sandcore
