@@ -67,6 +67,10 @@ bool crossRay(const Point& a, const Point& b, const Point& c, RayFrame f, std::i
     return true;
 }
 
+// Row entries ahead of the one being tested whose corners are asked for early (their triangle
+// twice as far ahead).
+constexpr std::uint64_t kEntriesAhead = 8;
+
 // Triangle ids per row, in compressed rows: row r owns ids[first[r] .. first[r + 1]).
 struct RowBins {
     std::vector<std::uint64_t> first;
@@ -167,6 +171,15 @@ void castRays(std::span<const Point> points, std::span<const MeshTriangle> trian
         if (task < first) return (*alongside)();
         const int k = task - first;
         std::vector<std::pair<double, int>> crossings; // position along u, winding step
+        // The rows of a task list their triangles one after the other, at scattered ids whose
+        // corners lie scattered too: ask for the triangle a few entries ahead, and for the
+        // corners of a nearer one (its triangle asked for earlier).
+        const std::uint64_t taskEnd = settings.binning ? bins.first[std::size_t(rowsV) * std::size_t(k + 1)] : 0;
+        const auto prefetchEntry = [&](std::uint64_t n) {
+            if (n + 2 * kEntriesAhead < taskEnd) __builtin_prefetch(&triangles[bins.ids[n + 2 * kEntriesAhead]]);
+            if (n + kEntriesAhead < taskEnd)
+                for (const std::uint32_t i : triangles[bins.ids[n + kEntriesAhead]]) __builtin_prefetch(&points[i]);
+        };
         for (int j = 0; j < rowsV; ++j) {
             const std::int64_t pv = (2 * std::int64_t(j) + 1) * (kQuantum / 2);
             const std::int64_t pw = (2 * std::int64_t(k) + 1) * (kQuantum / 2);
@@ -180,7 +193,10 @@ void castRays(std::span<const Point> points, std::span<const MeshTriangle> trian
             };
             if (settings.binning) {
                 const std::size_t row = std::size_t(j) + std::size_t(rowsV) * std::size_t(k);
-                for (std::uint64_t n = bins.first[row]; n < bins.first[row + 1]; ++n) test(bins.ids[n]);
+                for (std::uint64_t n = bins.first[row]; n < bins.first[row + 1]; ++n) {
+                    prefetchEntry(n);
+                    test(bins.ids[n]);
+                }
             } else {
                 for (std::uint32_t id = 0; id < triangles.size(); ++id) test(id);
             }
@@ -195,7 +211,10 @@ void castRays(std::span<const Point> points, std::span<const MeshTriangle> trian
                 // An unpaired last crossing (open mesh) does not open a run to the grid's end.
                 for (std::size_t n = 0; n + 1 < crossings.size(); n += 2) {
                     const int from = firstCellFrom(crossings[n].first), to = firstCellFrom(crossings[n + 1].first);
-                    for (int i = from; i < to; ++i) out[base + std::size_t(i) * stride[f.u]] = 1;
+                    if (stride[f.u] == 1)
+                        std::fill(out.begin() + std::ptrdiff_t(base + std::size_t(from)), out.begin() + std::ptrdiff_t(base + std::size_t(to)), std::uint8_t{1});
+                    else
+                        for (int i = from; i < to; ++i) out[base + std::size_t(i) * stride[f.u]] = 1;
                 }
                 continue;
             }
