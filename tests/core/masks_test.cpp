@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace sandcore;
@@ -14,6 +15,17 @@ TEST_CASE("the procedural sphere and cube have the expected volumes") {
     const double exact = 4.0 / 3.0 * M_PI * 32.0 * 32.0 * 32.0;
     CHECK(std::abs(double(sphere.countInside()) - exact) / exact < 0.01);
     CHECK(makeCubeMask(10).countInside() == 8 * 8 * 8);
+}
+
+TEST_CASE("an empty mask is all outside, even in a reused block that held inside flags") {
+    // MaskCells leaves flags unset when sized without a value; empty() must clear them.
+    const Int3 size{128, 160, 128}; // 2.5 MiB: a large block, kept once freed
+    const std::size_t cells = std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z);
+    { const MaskCells dirty(cells, std::uint8_t{1}); }
+    const InsideMask mask = InsideMask::empty(size);
+    REQUIRE(mask.inside.size() == cells);
+    CHECK(std::count(mask.inside.begin(), mask.inside.end(), std::uint8_t{0}) == std::ptrdiff_t(cells));
+    CHECK(mask.countInside() == 0);
 }
 
 TEST_CASE("the procedural hourglass narrows to its neck in the middle layer") {
