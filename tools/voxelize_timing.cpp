@@ -5,6 +5,9 @@
 // Prints, per part, the median and the best wall time of ROUNDS runs and the median CPU time of
 // the process (all threads; on shared cores the wall time also holds time spent waiting for a
 // core), and the cells inside, which must not change with the code.
+//   voxelize_timing --write-ply DIR  writes the two meshes as binary PLY (DIR/icosphere.ply,
+// DIR/torus.ply), for timing the first voxelize of a fresh process through the command line:
+//   sandglass voxelize DIR/icosphere.ply --res 256 --threads 2 --scene sculpture --json
 #include "sandcore/cavity.hpp"
 #include "sandcore/mesh_shapes.hpp"
 #include "sandcore/voxelizer.hpp"
@@ -15,7 +18,11 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 using namespace sandcore;
@@ -70,17 +77,48 @@ void timeMesh(const char* name, const TriangleMesh& mesh, int resolution, int th
                 static_cast<long long>(search.outsideCells));
 }
 
+// Binary little-endian PLY: float x y z per vertex, a uchar count and three int indices per face.
+bool writeBinaryPly(const std::string& path, const TriangleMesh& mesh) {
+    std::ofstream out(path, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\nelement vertex " << mesh.vertices.size()
+        << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << mesh.triangles.size()
+        << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const Vec3& v : mesh.vertices) {
+        const float xyz[3] = {v.x, v.y, v.z};
+        out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    }
+    for (const auto& t : mesh.triangles) {
+        const unsigned char corners = 3;
+        const std::int32_t indices[3] = {std::int32_t(t[0]), std::int32_t(t[1]), std::int32_t(t[2])};
+        out.write(reinterpret_cast<const char*>(&corners), 1);
+        out.write(reinterpret_cast<const char*>(indices), sizeof indices);
+    }
+    return bool(out.flush());
+}
+
+TriangleMesh icosphere() { return makeIcosphereMesh(8, 1.0f); }          // 1,310,720 triangles
+TriangleMesh torus() { return makeTorusMesh(1.0f, 0.4f, 1024, 640); } // 1,310,720 triangles
+
 } // namespace
 
 int main(int argc, char** argv) {
+    if (argc == 3 && std::strcmp(argv[1], "--write-ply") == 0) {
+        const std::string dir = argv[2];
+        for (const auto& [name, mesh] : {std::pair{"icosphere", icosphere()}, std::pair{"torus", torus()}})
+            if (!writeBinaryPly(dir + "/" + name + ".ply", mesh)) {
+                std::fprintf(stderr, "voxelize_timing: cannot write %s/%s.ply\n", dir.c_str(), name);
+                return 1;
+            }
+        return 0;
+    }
     const int resolution = argc > 1 ? std::atoi(argv[1]) : 256;
     const int threads = argc > 2 ? std::atoi(argv[2]) : 2;
     const int rounds = argc > 3 ? std::atoi(argv[3]) : 5;
     if (resolution < 1 || threads < 1 || rounds < 1) {
-        std::fprintf(stderr, "usage: voxelize_timing [RES >= 1] [THREADS >= 1] [ROUNDS >= 1]\n");
+        std::fprintf(stderr, "usage: voxelize_timing [RES >= 1] [THREADS >= 1] [ROUNDS >= 1] | --write-ply DIR\n");
         return 2;
     }
-    timeMesh("icosphere", makeIcosphereMesh(8, 1.0f), resolution, threads, rounds);   // 1,310,720 triangles
-    timeMesh("torus", makeTorusMesh(1.0f, 0.4f, 1024, 640), resolution, threads, rounds); // 1,310,720 triangles
+    timeMesh("icosphere", icosphere(), resolution, threads, rounds);
+    timeMesh("torus", torus(), resolution, threads, rounds);
     return 0;
 }
