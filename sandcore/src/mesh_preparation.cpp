@@ -345,33 +345,10 @@ MeshBounds boundsInParallel(const TriangleMesh& mesh, WorkerPool& pool) {
     std::vector<Part> parts(kRanges);
     const std::size_t count = mesh.triangles.size();
     pool.parallelFor(int(kRanges), [&](int r) {
-        // The bounds so far in locals, not in the part: stores through the reference would be
-        // kept in memory at every corner, since they might alias the vertices.
-        double low[3], high[3];
-        std::fill_n(low, 3, std::numeric_limits<double>::infinity());
-        std::fill_n(high, 3, -std::numeric_limits<double>::infinity());
-        const std::size_t end = rangeBegin(count, kRanges, r + 1);
-        for (std::size_t n = rangeBegin(count, kRanges, r); n < end; ++n) {
-            for (std::uint32_t i : mesh.triangles[n]) {
-                if (i >= mesh.vertices.size()) {
-                    parts[std::size_t(r)].error = "a triangle refers to a missing vertex";
-                    return;
-                }
-                const Vec3 v = mesh.vertices[i];
-                const double c[3] = {v.x, v.y, v.z};
-                if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
-                    parts[std::size_t(r)].error = "the model has a non-finite coordinate (NaN or infinity)";
-                    return;
-                }
-                for (std::size_t a = 0; a < 3; ++a) {
-                    low[a] = std::min(low[a], c[a]);
-                    high[a] = std::max(high[a], c[a]);
-                }
-            }
-        }
         Part& part = parts[std::size_t(r)];
-        std::copy_n(low, 3, part.bounds.min.begin());
-        std::copy_n(high, 3, part.bounds.max.begin());
+        part.bounds.min.fill(std::numeric_limits<double>::infinity());
+        part.bounds.max.fill(-std::numeric_limits<double>::infinity());
+        part.error = widenBoundsByCorners(mesh, rangeBegin(count, kRanges, r), rangeBegin(count, kRanges, r + 1), part.bounds);
     });
     MeshBounds bounds;
     bounds.min.fill(std::numeric_limits<double>::infinity());

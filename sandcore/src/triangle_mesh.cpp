@@ -55,23 +55,39 @@ void TriangleMesh::append(const TriangleMesh& other) {
     for (const auto& t : other.triangles) triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
 }
 
+const char* widenBoundsByCorners(const TriangleMesh& mesh, std::size_t first, std::size_t end, MeshBounds& bounds) {
+    // The running bounds in locals: through the reference the compiler would store them at every
+    // corner (they might alias the vertices), three times slower on a big mesh.
+    std::array<double, 3> low = bounds.min, high = bounds.max;
+    const char* error = nullptr;
+    for (std::size_t n = first; n < end && !error; ++n)
+        for (std::uint32_t i : mesh.triangles[n]) {
+            if (i >= mesh.vertices.size()) {
+                error = "a triangle refers to a missing vertex";
+                break;
+            }
+            const Vec3 v = mesh.vertices[i];
+            const double c[3] = {v.x, v.y, v.z};
+            if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
+                error = "the model has a non-finite coordinate (NaN or infinity)";
+                break;
+            }
+            for (std::size_t a = 0; a < 3; ++a) {
+                low[a] = std::min(low[a], c[a]);
+                high[a] = std::max(high[a], c[a]);
+            }
+        }
+    bounds.min = low;
+    bounds.max = high;
+    return error;
+}
+
 MeshBounds boundsOf(const TriangleMesh& mesh) {
     if (mesh.triangles.empty()) throw std::invalid_argument("the mesh has no triangles");
     MeshBounds bounds;
     bounds.min.fill(std::numeric_limits<double>::infinity());
     bounds.max.fill(-std::numeric_limits<double>::infinity());
-    for (const auto& t : mesh.triangles)
-        for (std::uint32_t i : t) {
-            if (i >= mesh.vertices.size()) throw std::invalid_argument("a triangle refers to a missing vertex");
-            const Vec3 v = mesh.vertices[i];
-            const double c[3] = {v.x, v.y, v.z};
-            if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
-                throw std::invalid_argument("the model has a non-finite coordinate (NaN or infinity)");
-            for (std::size_t a = 0; a < 3; ++a) {
-                bounds.min[a] = std::min(bounds.min[a], c[a]);
-                bounds.max[a] = std::max(bounds.max[a], c[a]);
-            }
-        }
+    if (const char* error = widenBoundsByCorners(mesh, 0, mesh.triangles.size(), bounds)) throw std::invalid_argument(error);
     return bounds;
 }
 

@@ -6,11 +6,18 @@
 #include "sandcore/triangle_mesh.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 namespace sandcore {
+
+/// Widens `bounds` by the corners of triangles [first, end), in order (a tie of -0.0 and +0.0
+/// keeps the one met first). Returns the first error met (a missing vertex, a non-finite
+/// coordinate), with `bounds` then incomplete, or nullptr. boundsOf over one range; the
+/// voxelizer's over several in parallel.
+const char* widenBoundsByCorners(const TriangleMesh& mesh, std::size_t first, std::size_t end, MeshBounds& bounds);
 
 /// closednessOf, without the weld.
 MeshClosedness closednessOfWelded(const TriangleMesh& welded);
