@@ -27,9 +27,11 @@ std::vector<int> columnHeights(const CellGrid& grid) {
     return heights;
 }
 
+namespace {
+
 // thesis §3.8 (Abb. 33 and its table): a neighbour column that is higher tilts the face normal
 // away from it, one that is lower tilts it towards it, and an equal one gives (0, 1, 0).
-Vec3 columnNormal(const std::vector<int>& heights, Int3 gridSize, int x, int z) {
+Vec3 columnNormalFromNeighbours(const std::vector<int>& heights, Int3 gridSize, int x, int z) {
     const int here = heights[std::size_t(x) + std::size_t(gridSize.x) * std::size_t(z)];
     float sx = 0, sy = 0, sz = 0;
     int faces = 0;
@@ -45,6 +47,47 @@ Vec3 columnNormal(const std::vector<int>& heights, Int3 gridSize, int x, int z) 
     });
     if (faces == 0) return {0.0f, 1.0f, 0.0f};
     return normalised(sx, sy, sz);
+}
+
+// The 8 columns around an inner column; digit i of a table index is neighbour i's side.
+constexpr int kAroundX[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
+constexpr int kAroundZ[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+constexpr int kSideCombinations = 6561; // 3^8
+
+// Away from the grid's sides a column's normal depends only on whether each of its 8 neighbours
+// is lower, equal or higher: every one of the 3^8 answers, each computed by the function above on
+// a 3x3 patch of such heights, so a lookup gives the very same floats without 9 square roots
+// (the surface upkeep recomputes thousands of column normals a step).
+class ColumnNormalTable {
+public:
+    ColumnNormalTable() {
+        std::vector<int> patch(9);
+        for (int combination = 0; combination < kSideCombinations; ++combination) {
+            patch[4] = 1;
+            for (int i = 0, rest = combination; i < 8; ++i, rest /= 3)
+                patch[std::size_t(kAroundX[i] + 1 + 3 * (kAroundZ[i] + 1))] = rest % 3; // 0 lower, 1 equal, 2 higher
+            normals_[std::size_t(combination)] = columnNormalFromNeighbours(patch, {3, 1, 3}, 1, 1);
+        }
+    }
+    const Vec3& operator[](int combination) const { return normals_[std::size_t(combination)]; }
+
+private:
+    Vec3 normals_[kSideCombinations];
+};
+
+} // namespace
+
+Vec3 columnNormal(const std::vector<int>& heights, Int3 gridSize, int x, int z) {
+    if (x < 1 || z < 1 || x + 1 >= gridSize.x || z + 1 >= gridSize.z) return columnNormalFromNeighbours(heights, gridSize, x, z);
+    static const ColumnNormalTable table;
+    const std::size_t centre = std::size_t(x) + std::size_t(gridSize.x) * std::size_t(z);
+    const int here = heights[centre];
+    int combination = 0;
+    for (int i = 7; i >= 0; --i) {
+        const int there = heights[centre + std::size_t(std::ptrdiff_t(kAroundX[i]) + std::ptrdiff_t(gridSize.x) * kAroundZ[i])];
+        combination = 3 * combination + (there > here ? 2 : there < here ? 0 : 1);
+    }
+    return table[combination];
 }
 
 Int3 occupancyGradientSums(const CellGrid& grid, std::uint32_t cell) {

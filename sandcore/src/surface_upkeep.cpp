@@ -458,6 +458,8 @@ bool SurfaceUpkeep::innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) c
 
 // Heights: a filled cell can only raise its column; then each touched column scans down from
 // its (upper bound of the) height to its top grain. Column normals: around changed heights.
+// The grain bits, final by now, say which cells hold a grain: a bit is a far smaller read than
+// the grid's cell.
 void SurfaceUpkeep::updateHeights(const Scene& scene) {
     ++updateNumber_;
     touchedColumns_.clear();
@@ -473,7 +475,7 @@ void SurfaceUpkeep::updateHeights(const Scene& scene) {
             touchedColumns_.push_back({level, column});
             heightsBefore_.push_back(height);
         }
-        if (grid[cell] >= 0) height = std::max(height, y + 1);
+        if (grainBits_[index(level)].test(cell)) height = std::max(height, y + 1);
     }
     const std::uint32_t normalsPass = ++updateNumber_;
     normalCandidates_.clear();
@@ -482,8 +484,9 @@ void SurfaceUpkeep::updateHeights(const Scene& scene) {
         const CellGrid& grid = scene.grid(touched.level);
         const Int3 s = grid.size();
         int& height = heights_[index(touched.level)][touched.column];
+        const CellBits& holds = grainBits_[index(touched.level)];
         int y = height - 1;
-        while (y >= 0 && grid[touched.column + std::uint32_t(y) * grid.layerSize()] < 0) --y;
+        while (y >= 0 && !holds.test(touched.column + std::uint32_t(y) * grid.layerSize())) --y;
         height = y + 1;
         if (height == heightsBefore_[i]) continue;
         // Its normal and its 8 neighbours' read this height.

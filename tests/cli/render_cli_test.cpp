@@ -37,7 +37,8 @@ TEST_CASE("cli: bad render, gui and bench input gives one line and a non-zero ex
           std::string("render --mode points"), "render --out " + x + " --size 12", "render --out " + x + " --scene teapot",
           "gui --screenshot " + x, std::string("gui --res 3 --frames 1"), std::string("bench --out"),
           std::string("bench --render --res 2"), "render --out " + x + " --zoom 0",
-          "render --out " + x + " --grain-path both", "render --out " + x + " --frames -1"}) {
+          "render --out " + x + " --grain-path both", "render --out " + x + " --frames -1",
+          "render --out " + x + " --light --normals flat"}) {
         CAPTURE(arguments);
         const Result result = runWithStderr(arguments);
         CHECK(result.exitCode != 0);
@@ -59,6 +60,27 @@ TEST_CASE("cli: render writes a PNG and reports fps and frame_ms as JSON") {
     FILE* png = std::fopen(file.c_str(), "rb");
     REQUIRE(png != nullptr);
     std::fclose(png);
+}
+
+TEST_CASE("cli: render --normals picks how lit grains get their normals, and says which") {
+    if (!sandglass::testing::requireDisplay("sandglass render --normals")) return;
+    const sandglass::TemporaryFolder folder;
+    std::string images[2];
+    const char* methods[2] = {"gradient", "columns"};
+    for (int i = 0; i < 2; ++i) {
+        CAPTURE(methods[i]);
+        const std::string file = (folder / (std::string("lit-") + methods[i] + ".png")).string();
+        const cli::ProcessResult run =
+            cli::runSandglassArgs({"render", "--res", "24", "--steps", "30", "--size", "96x96", "--timed-frames", "0",
+                                   "--light", "--normals", methods[i], "--json", "--out", file});
+        INFO(run.err);
+        REQUIRE(run.exitCode == 0);
+        CHECK(run.out.find(std::string("\"normals\":\"") + methods[i] + "\"") != std::string::npos);
+        std::ifstream png(file, std::ios::binary);
+        images[i].assign(std::istreambuf_iterator<char>(png), std::istreambuf_iterator<char>());
+        CHECK(!images[i].empty());
+    }
+    CHECK(images[0] != images[1]); // the two estimates light the same sand differently
 }
 
 TEST_CASE("cli: render --frames reports upload bytes, moves, CPU and upkeep time per frame, on both paths") {

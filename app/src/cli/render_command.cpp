@@ -112,6 +112,7 @@ int runRender(const RenderOptions& options) {
         out["mode"] = renderModeName(render.mode);
         out["grains_per_cell"] = render.grainsPerCell;
         out["light"] = render.lighting;
+        out["normals"] = normalMethodName(render.normals);
         out["grains"] = application.scene().grainCount();
         out["steps"] = application.scene().counters().stepsDone;
         out["gl_renderer"] = application.state().glRenderer;

@@ -15,6 +15,9 @@ void addViewOptions(CLI::App& command, ViewOptions& options) {
     addNumberOption(command, "--grains-per-cell", options.grainsPerCell, 1, kMaxGrainsPerCell,
                     "grains drawn per cell (default 4)");
     command.add_flag("--light", options.light, "lighting from estimated normals");
+    command.add_option("--normals", options.normals,
+                       "how --light estimates normals: gradient (of the occupancy, default) or columns (the thesis's column heights)")
+        ->capture_default_str();
     command.add_flag("--no-inner", options.hideInner, "skip grains hidden by their neighbours");
     command.add_flag("--black", options.black, "black background (default white)");
     command.add_flag("--no-hull", options.noHull, "do not draw the glass vessel");
@@ -42,6 +45,9 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
     state.render.palette = *palette;
     state.render.grainsPerCell = options.grainsPerCell;
     state.render.lighting = options.light;
+    const std::optional<sandcore::NormalMethod> normals = parseNormalMethod(options.normals);
+    if (!normals) throw std::invalid_argument("--normals: unknown method '" + options.normals + "' (gradient or columns)");
+    state.render.normals = *normals;
     state.render.innerGrains = !options.hideInner;
     state.render.blackBackground = options.black;
     state.render.hull = !options.noHull;

@@ -28,4 +28,14 @@ std::optional<RenderMode> parseRenderMode(std::string_view name) {
     return std::nullopt;
 }
 
+const char* normalMethodName(sandcore::NormalMethod method) {
+    return method == sandcore::NormalMethod::ColumnHeights ? "columns" : "gradient";
+}
+
+std::optional<sandcore::NormalMethod> parseNormalMethod(std::string_view name) {
+    for (sandcore::NormalMethod method : {sandcore::NormalMethod::ColumnHeights, sandcore::NormalMethod::OccupancyGradient})
+        if (name == normalMethodName(method)) return method;
+    return std::nullopt;
+}
+
 } // namespace sandglass

@@ -18,6 +18,7 @@ struct ViewOptions {
     std::string palette = "desert";   ///< S12: desert, beach, white, volcanic or layers
     int grainsPerCell = 4;            ///< 1..32
     bool light = false;               ///< lighting from estimated normals
+    std::string normals = "gradient"; ///< R12: gradient (occupancy gradient) or columns (the thesis's column heights)
     bool hideInner = false;           ///< skip inner grains
     bool black = false;               ///< black background
     bool noHull = false;              ///< no glass
@@ -27,7 +28,7 @@ struct ViewOptions {
     float zoom = 1.0f;                ///< camera distance as a share of the distance that frames the scene
 };
 
-/// Adds the scene options and --mode --grains-per-cell --light --no-inner --black --no-hull
+/// Adds the scene options and --mode --grains-per-cell --light --normals --no-inner --black --no-hull
 /// --size --steps --zoom to a subcommand.
 void addViewOptions(CLI::App& command, ViewOptions& options);
 

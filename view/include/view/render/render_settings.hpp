@@ -33,6 +33,11 @@ const char* renderModeLabel(RenderMode mode);
 /// The mode named by renderModeName, or nothing.
 std::optional<RenderMode> parseRenderMode(std::string_view name);
 
+/// Command-line name of an R12 normal estimate: "columns" or "gradient".
+const char* normalMethodName(sandcore::NormalMethod method);
+/// The estimate named by normalMethodName, or nothing.
+std::optional<sandcore::NormalMethod> parseNormalMethod(std::string_view name);
+
 /// Grains per cell of SPEC V2 (the thesis's mInnerCountMax).
 inline constexpr int kMaxGrainsPerCell = 32;
 
