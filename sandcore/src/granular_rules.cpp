@@ -98,6 +98,12 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
         throughCentreSpans_[bit] = {throughCentre_.size(), list.size()};
         throughCentre_.insert(throughCentre_.end(), list.begin(), list.end());
     }
+    for (int bit = 0; bit < kWindow * kWindow; ++bit) {
+        throughCellSpans_[std::size_t(bit)].first = throughCell_.size();
+        for (int k = 0; k < kOffsets; ++k)
+            if (offsets_[std::size_t(k)].pathMask >> bit & 1) throughCell_.push_back(std::uint8_t(k));
+        throughCellSpans_[std::size_t(bit)].second = throughCell_.size() - throughCellSpans_[std::size_t(bit)].first;
+    }
     for (const Offset& o : offsets_) {
         std::uint64_t path = 0;
         for (int bit = 0; bit < kWindow * kWindow; ++bit)

@@ -91,6 +91,12 @@ public:
         const auto& [first, count] = throughCentreSpans_[std::size_t(bit)];
         return {throughCentre_.data() + first, count};
     }
+    /// The slides whose path at the grain's level crosses window cell `bit` (as in wakeMask, seen
+    /// from the grain): their indices into offset().
+    std::span<const std::uint8_t> offsetsThrough(int bit) const {
+        const auto& [first, count] = throughCellSpans_[std::size_t(bit)];
+        return {throughCell_.data() + first, count};
+    }
     /// g in cells per step squared, 16.16 fixed point.
     std::uint32_t gravity() const { return gravity_; }
     /// The slope T the thresholds use for the asked angle (after calibration).
@@ -105,6 +111,8 @@ public:
         std::uint64_t pathMask = 0;    ///< the path's cells in the 7x7 window, bit (dz + 3) * 7 + (dx + 3)
     };
     static constexpr int kOffsets = kWindow * kWindow - 1; ///< 48
+    /// One of the 48 slides.
+    const Offset& offset(int k) const { return offsets_[std::size_t(k)]; }
 
 private:
     GranularOutcome fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
@@ -120,6 +128,8 @@ private:
     std::array<std::uint64_t, kWindow * kWindow> pathsTowardsCentre_{};
     std::vector<std::uint64_t> throughCentre_;                           // pathsThroughCentre, all bits
     std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCentreSpans_{}; // first, count
+    std::vector<std::uint8_t> throughCell_;                                                   // offsetsThrough, all bits
+    std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCellSpans_{};   // first, count
 };
 
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the

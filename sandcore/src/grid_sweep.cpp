@@ -133,14 +133,50 @@ std::uint64_t emptyInWindow(const CellGrid& grid, int x, int y, int z) {
     return mask;
 }
 
+// The EMPTY cells of layer y within 4 columns of (x, z), row by row (9 rows, z - 4 first), bit i
+// of a row for x - 4 + i; cells outside the grid count as taken. Wide enough to hold the 7x7
+// window of each grain beside (x, z).
+using EmptyRows9 = std::array<std::uint16_t, 9>;
+EmptyRows9 emptyRowsAround(const CellGrid& grid, int x, int y, int z) {
+    constexpr int reach = kGranularReach + 1;
+    const Int3 size = grid.size();
+    const bool inside = x >= reach && x + reach < size.x;
+    EmptyRows9 rows{};
+    for (int r = 0; r < 2 * reach + 1; ++r) {
+        const int zz = z - reach + r;
+        if (zz < 0 || zz >= size.z) continue;
+        const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
+        unsigned bits = 0;
+        if (inside) {
+            bits = emptyBitsOf8(cells + (x - reach)) | unsigned(cells[x + reach] == kEmpty) << 8;
+        } else {
+            for (int xx = std::max(x - reach, 0); xx <= std::min(x + reach, size.x - 1); ++xx)
+                bits |= unsigned(cells[xx] == kEmpty) << (xx - x + reach);
+        }
+        rows[std::size_t(r)] = std::uint16_t(bits);
+    }
+    return rows;
+}
+
+// The 7x7 window (bit (dz + 3) * 7 + (dx + 3)) around the cell (dx, dz) away from the centre of
+// `rows`, |dx|, |dz| <= 1.
+std::uint64_t windowIn(const EmptyRows9& rows, int dx, int dz) {
+    std::uint64_t window = 0;
+    for (int k = 0; k < kGranularWindow; ++k)
+        window |= std::uint64_t((rows[std::size_t(dz + k + 1)] >> (dx + 1)) & 0x7f) << (k * kGranularWindow);
+    return window;
+}
+
 } // namespace
 
 // Wakes the grains of layer y at the cells of `mask` (GranularRules::wakeMask) around (x, z) that
-// may gain: in the emptied cell's own layer (layersAbove 0) those with an EMPTY cell beside them
-// (a grain without one cannot slide at all, and is woken when a cell beside it empties); in the
-// layers above, those whose sideways path towards (x, z)'s column is EMPTY at their level (the
-// only one of their options that (x, y, z) can widen). The grains beside the column are always
-// woken. Each row's 7 bits are shifted into place and ANDed with the occupied bits, as wakeSpan
+// may gain. In the emptied cell's own layer (layersAbove 0): a grain beside it when one of its
+// slides crosses (x, z) on a path EMPTY all along to an EMPTY cell of the layer below; one two or
+// three columns away when a path of its slides across (x, z) is EMPTY from it up to (x, z). Any
+// other grain gains nothing from (x, z) now, and whatever later opens such a slide (a cell of the
+// path or the target emptying, the column below deepening) wakes it then. In the layers above,
+// those whose sideways path towards (x, z)'s column is EMPTY at their level (the only one of their
+// options that (x, y, z) can widen); there the grains beside the column are always woken. Each row's 7 bits are shifted into place and ANDed with the occupied bits, as wakeSpan
 // does, so EMPTY and INVALID cells stay asleep. That is exact: when this runs, during the sweep
 // of layer y or below, no grain can enter those cells before they are visited in this step
 // (grains only move down, and layer y and those above have not been swept yet), and one that
@@ -165,6 +201,23 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         grains |= ((bits << dropped) & ((1u << window) - 1)) << ((zz - z + reach) * window);
     }
     std::uint64_t woken = granular_->wakeMask(layersAbove) & grains;
+    if (layersAbove == 0 && (woken & kWindowCentre)) {
+        // A grain beside (x, z) gains only through a slide whose path crosses (x, z), is EMPTY all
+        // along and ends over an EMPTY cell of the layer below (when the target or a cell of the
+        // path empties later, or the column there deepens, that wakes it).
+        const EmptyRows9 here = emptyRowsAround(grid, x, y, z), below = emptyRowsAround(grid, x, y - 1, z);
+        for (std::uint64_t near = woken & kWindowCentre; near; near &= near - 1) {
+            const int bit = __builtin_ctzll(near);
+            const int dx = bit % window - reach, dz = bit / window - reach;
+            const std::uint64_t clear = windowIn(here, dx, dz), targets = windowIn(below, dx, dz);
+            const auto slides = granular_->offsetsThrough((reach - dz) * window + (reach - dx)); // (x, z) seen from it
+            const bool gains = std::any_of(slides.begin(), slides.end(), [&](std::uint8_t k) {
+                const GranularRules::Offset& o = granular_->offset(k);
+                return !(o.pathMask & ~clear) && (targets >> ((o.dz + reach) * window + o.dx + reach) & 1);
+            });
+            if (!gains) woken &= ~(std::uint64_t{1} << bit);
+        }
+    }
     if (woken & ~kWindowCentre) {
         const std::uint64_t clear = emptyInWindow(grid, x, y, z);
         if (layersAbove == 0) {
