@@ -201,25 +201,29 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         grains |= ((bits << dropped) & ((1u << window) - 1)) << ((zz - z + reach) * window);
     }
     std::uint64_t woken = granular_->wakeMask(layersAbove) & grains;
+    std::uint64_t clear = 0; // the EMPTY cells of this layer's window around (x, z), once read
+    bool clearRead = false;
     if (layersAbove == 0 && (woken & kWindowCentre)) {
         // A grain beside (x, z) gains only through a slide whose path crosses (x, z), is EMPTY all
         // along and ends over an EMPTY cell of the layer below (when the target or a cell of the
         // path empties later, or the column there deepens, that wakes it).
         const EmptyRows9 here = emptyRowsAround(grid, x, y, z), below = emptyRowsAround(grid, x, y - 1, z);
+        clear = windowIn(here, 0, 0);
+        clearRead = true;
         for (std::uint64_t near = woken & kWindowCentre; near; near &= near - 1) {
             const int bit = __builtin_ctzll(near);
             const int dx = bit % window - reach, dz = bit / window - reach;
-            const std::uint64_t clear = windowIn(here, dx, dz), targets = windowIn(below, dx, dz);
+            const std::uint64_t pathCells = windowIn(here, dx, dz), targets = windowIn(below, dx, dz);
             const auto slides = granular_->offsetsThrough((reach - dz) * window + (reach - dx)); // (x, z) seen from it
             const bool gains = std::any_of(slides.begin(), slides.end(), [&](std::uint8_t k) {
                 const GranularRules::Offset& o = granular_->offset(k);
-                return !(o.pathMask & ~clear) && (targets >> ((o.dz + reach) * window + o.dx + reach) & 1);
+                return !(o.pathMask & ~pathCells) && (targets >> ((o.dz + reach) * window + o.dx + reach) & 1);
             });
             if (!gains) woken &= ~(std::uint64_t{1} << bit);
         }
     }
     if (woken & ~kWindowCentre) {
-        const std::uint64_t clear = emptyInWindow(grid, x, y, z);
+        if (!clearRead) clear = emptyInWindow(grid, x, y, z);
         if (layersAbove == 0) {
             // A grain two or three columns away gains only through a path across (x, z) that is
             // EMPTY from it up to (x, z) (the rest of the path is its own business: when a cell of
