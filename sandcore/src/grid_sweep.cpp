@@ -110,53 +110,43 @@ constexpr int kGranularWindow = 2 * kGranularReach + 1;
 // The 3x3 cells around the window's centre: a grain there has the emptied cell beside it.
 constexpr std::uint64_t kWindowCentre = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x1c} << 21) | (std::uint64_t{0x1c} << 28);
 
-// The EMPTY cells of layer y within 3 columns of (x, z), as a 7x7 window mask (bit (dz + 3) * 7 +
-// (dx + 3)); cells outside the grid count as taken.
-std::uint64_t emptyInWindow(const CellGrid& grid, int x, int y, int z) {
-    constexpr int reach = kGranularReach;
+// The EMPTY cells of layer y within Reach columns of (x, z), row by row (z - Reach first), bit i
+// of a row for x - Reach + i; cells outside the grid count as taken. Away from the grid's sides a
+// row is read 8 cells at a time, with no bounds tests.
+template <int Reach> std::array<std::uint16_t, 2 * Reach + 1> emptyRowsAround(const CellGrid& grid, int x, int y, int z) {
+    constexpr int width = 2 * Reach + 1;
+    static_assert(width <= 16);
     const Int3 size = grid.size();
-    const int x0 = std::max(x - reach, 0), x1 = std::min(x + reach, size.x - 1);
-    const bool inside = x0 == x - reach && x1 + 1 < size.x; // then each row is read as 8 cells, no bounds tests
-    std::uint64_t mask = 0;
-    for (int r = 0; r < kGranularWindow; ++r) {
-        const int zz = z - reach + r;
+    const bool inside = x >= Reach && x - Reach + std::max(width, 8) <= size.x;
+    std::array<std::uint16_t, width> rows{};
+    for (int r = 0; r < width; ++r) {
+        const int zz = z - Reach + r;
         if (zz < 0 || zz >= size.z) continue;
-        const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
-        std::uint32_t bits = 0;
-        if (inside) {
-            bits = emptyBitsOf8(cells + (x - reach)) & ((1u << kGranularWindow) - 1);
-        } else {
-            for (int xx = x0; xx <= x1; ++xx) bits |= std::uint32_t(cells[xx] == kEmpty) << (xx - x + reach);
-        }
-        mask |= std::uint64_t(bits) << (r * kGranularWindow);
-    }
-    return mask;
-}
-
-// The EMPTY cells of layer y within 4 columns of (x, z), row by row (9 rows, z - 4 first), bit i
-// of a row for x - 4 + i; cells outside the grid count as taken. Wide enough to hold the 7x7
-// window of each grain beside (x, z).
-using EmptyRows9 = std::array<std::uint16_t, 9>;
-EmptyRows9 emptyRowsAround(const CellGrid& grid, int x, int y, int z) {
-    constexpr int reach = kGranularReach + 1;
-    const Int3 size = grid.size();
-    const bool inside = x >= reach && x + reach < size.x;
-    EmptyRows9 rows{};
-    for (int r = 0; r < 2 * reach + 1; ++r) {
-        const int zz = z - reach + r;
-        if (zz < 0 || zz >= size.z) continue;
-        const CellValue* cells = grid.cells().data() + grid.index(0, y, zz);
+        const CellValue* row = grid.cells().data() + grid.index(0, y, zz);
         unsigned bits = 0;
         if (inside) {
-            bits = emptyBitsOf8(cells + (x - reach)) | unsigned(cells[x + reach] == kEmpty) << 8;
+            bits = emptyBitsOf8(row + (x - Reach));
+            for (int i = 8; i < width; ++i) bits |= unsigned(row[x - Reach + i] == kEmpty) << i;
         } else {
-            for (int xx = std::max(x - reach, 0); xx <= std::min(x + reach, size.x - 1); ++xx)
-                bits |= unsigned(cells[xx] == kEmpty) << (xx - x + reach);
+            for (int xx = std::max(x - Reach, 0); xx <= std::min(x + Reach, size.x - 1); ++xx)
+                bits |= unsigned(row[xx] == kEmpty) << (xx - x + Reach);
         }
-        rows[std::size_t(r)] = std::uint16_t(bits);
+        rows[std::size_t(r)] = std::uint16_t(bits & ((1u << width) - 1));
     }
     return rows;
 }
+
+// The EMPTY cells of layer y within 3 columns of (x, z), as a 7x7 window mask (bit (dz + 3) * 7 +
+// (dx + 3)).
+std::uint64_t emptyInWindow(const CellGrid& grid, int x, int y, int z) {
+    const auto rows = emptyRowsAround<kGranularReach>(grid, x, y, z);
+    std::uint64_t mask = 0;
+    for (int r = 0; r < kGranularWindow; ++r) mask |= std::uint64_t(rows[std::size_t(r)]) << (r * kGranularWindow);
+    return mask;
+}
+
+// 9 rows of 9: the 7x7 window of each grain beside (x, z) lies inside.
+using EmptyRows9 = std::array<std::uint16_t, 9>;
 
 // The 7x7 window (bit (dz + 3) * 7 + (dx + 3)) around the cell (dx, dz) away from the centre of
 // `rows`, |dx|, |dz| <= 1.
@@ -176,8 +166,9 @@ std::uint64_t windowIn(const EmptyRows9& rows, int dx, int dz) {
 // other grain gains nothing from (x, z) now, and whatever later opens such a slide (a cell of the
 // path or the target emptying, the column below deepening) wakes it then. In the layers above,
 // those whose sideways path towards (x, z)'s column is EMPTY at their level (the only one of their
-// options that (x, y, z) can widen); there the grains beside the column are always woken. Each row's 7 bits are shifted into place and ANDed with the occupied bits, as wakeSpan
-// does, so EMPTY and INVALID cells stay asleep. That is exact: when this runs, during the sweep
+// options that (x, y, z) can widen); there the grains beside the column are always woken. Each
+// row's 7 bits are shifted into place and ANDed with the occupied bits, as wakeSpan does, so EMPTY
+// and INVALID cells stay asleep. That is exact: when this runs, during the sweep
 // of layer y or below, no grain can enter those cells before they are visited in this step
 // (grains only move down, and layer y and those above have not been swept yet), and one that
 // enters later is woken by its move.
@@ -207,7 +198,8 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         // A grain beside (x, z) gains only through a slide whose path crosses (x, z), is EMPTY all
         // along and ends over an EMPTY cell of the layer below (when the target or a cell of the
         // path empties later, or the column there deepens, that wakes it).
-        const EmptyRows9 here = emptyRowsAround(grid, x, y, z), below = emptyRowsAround(grid, x, y - 1, z);
+        const EmptyRows9 here = emptyRowsAround<kGranularReach + 1>(grid, x, y, z),
+                          below = emptyRowsAround<kGranularReach + 1>(grid, x, y - 1, z);
         clear = windowIn(here, 0, 0);
         clearRead = true;
         for (std::uint64_t near = woken & kWindowCentre; near; near &= near - 1) {
