@@ -75,7 +75,7 @@ std::string fallPart(const ReportOptions& options, bool& passed) {
             const auto& grid = scene.grid(GridLevel::Lower);
             const auto id = std::size_t(scene.addGrain(GridLevel::Lower, grid.index(1, h, 1)));
             int steps = 0;
-            while (grid.coordinate(scene.grains().cell[id]).y > 0 && steps < 100000) {
+            while (grid.coordinate(scene.grains().place[id].cell).y > 0 && steps < 100000) {
                 scene.step();
                 ++steps;
             }

@@ -213,7 +213,7 @@ Section plausibilitySection(const ReportOptions& options, std::ostream& log) {
     double drift = 0.0;
     for (std::uint32_t id = 0; id < small.grains().size(); ++id) {
         const sandcore::Vec3 shown = sandcore::grainDisplayPosition(small, id, 0.5f, display);
-        const sandcore::Vec3 rest = sandcore::cellDisplayPoint(small, small.grains().level[id], small.grains().cell[id],
+        const sandcore::Vec3 rest = sandcore::cellDisplayPoint(small, small.grains().level[id], small.grains().place[id].cell,
                                                                small.grains().identity[id], display);
         drift = std::max({drift, double(std::abs(shown.x - rest.x)), double(std::abs(shown.y - rest.y)),
                           double(std::abs(shown.z - rest.z))});

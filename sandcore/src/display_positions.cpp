@@ -34,12 +34,12 @@ Vec3 cellDisplayPoint(const Scene& scene, GridLevel level, std::uint32_t cell, s
 
 Vec3 grainDisplayPosition(const Scene& scene, std::uint32_t id, float stepFraction, const DisplaySettings& display) {
     const GrainStore& grains = scene.grains();
-    const Int3 world = worldCell(scene, grains.level[id], grains.cell[id]);
+    const Int3 world = worldCell(scene, grains.level[id], grains.place[id].cell);
     const Vec3 jitter = jitterOffset(grains.identity[id], display.jitter);
-    const bool gliding = grains.movedAtStep[id] == scene.counters().stepsDone && stepFraction < 1.0f;
-    if (!gliding || grains.cameFrom[id] == kNoMove) return pointOf(world, 0.0f, 0.0f, 0.0f, jitter, display.cellSize);
+    const bool gliding = grains.place[id].movedAtStep == scene.counters().stepsDone && stepFraction < 1.0f;
+    if (!gliding || grains.place[id].cameFrom == kNoMove) return pointOf(world, 0.0f, 0.0f, 0.0f, jitter, display.cellSize);
     const float remaining = 1.0f - stepFraction; // share of the way still ahead
-    const MoveCode from = grains.cameFrom[id];
+    const MoveCode from = grains.place[id].cameFrom;
     return pointOf(world, remaining * float(moveDx(from)), remaining * float(moveDy(from)),
                    remaining * float(moveDz(from)), jitter, display.cellSize);
 }

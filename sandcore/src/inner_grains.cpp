@@ -34,7 +34,7 @@ std::int64_t flagInnerGrains(const Scene& scene, std::span<std::uint8_t> out) {
     const GrainStore& grains = scene.grains();
     std::int64_t inner = 0;
     for (std::uint32_t id = 0; id < grains.size(); ++id) {
-        const bool hidden = isInnerGrain(scene, grains.level[id], grains.cell[id]);
+        const bool hidden = isInnerGrain(scene, grains.level[id], grains.place[id].cell);
         out[id] = hidden ? 1 : 0;
         inner += hidden ? 1 : 0;
     }

@@ -118,7 +118,7 @@ void estimateGrainNormals(const Scene& scene, NormalMethod method, std::span<Vec
     const GrainStore& grains = scene.grains();
     if (method == NormalMethod::OccupancyGradient) {
         for (std::uint32_t id = 0; id < grains.size(); ++id)
-            out[id] = gradientNormal(scene.grid(grains.level[id]), grains.cell[id]);
+            out[id] = gradientNormal(scene.grid(grains.level[id]), grains.place[id].cell);
         return;
     }
     for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
@@ -131,7 +131,7 @@ void estimateGrainNormals(const Scene& scene, NormalMethod method, std::span<Vec
                 normals[std::size_t(x) + std::size_t(s.x) * std::size_t(z)] = columnNormal(heights, s, x, z);
         for (std::uint32_t id = 0; id < grains.size(); ++id) {
             if (grains.level[id] != level) continue;
-            out[id] = normals[grains.cell[id] % grid.layerSize()];
+            out[id] = normals[grains.place[id].cell % grid.layerSize()];
         }
     }
 }

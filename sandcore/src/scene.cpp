@@ -212,7 +212,7 @@ void Scene::transition() {
         lower_[below] = grain;
         upper_[cell] = kEmpty;
         grains_.level[std::size_t(grain)] = GridLevel::Lower;
-        grains_.cell[std::size_t(grain)] = below;
+        grains_.place[std::size_t(grain)].cell = below;
         // Same world position: a grain that fell into the shared row in this very step keeps
         // gliding from where it came from; one that was resting there does not move on screen.
         listTransition(std::uint32_t(grain), below);
@@ -281,7 +281,7 @@ void Scene::transitionGranular() {
         lower_[below] = CellValue(grain);
         upper_[cell] = kEmpty;
         grains_.level[grain] = GridLevel::Lower;
-        grains_.cell[grain] = below;
+        grains_.place[grain].cell = below;
         grains_.fall[kLowerGrid][grain] = fall; // its state goes with it into the lower grid's array
         if (fall.speed | fall.fraction) lowerSweep_->markInMotion(c.x, lowerTop, c.z);
         listTransition(std::uint32_t(grain), below);
@@ -301,12 +301,12 @@ void Scene::transitionGranular() {
 // where it came from, and its sweep listed it already (moveListedIntoLowerGrid corrects that
 // entry); one that was resting there does not move on screen.
 void Scene::listTransition(std::uint32_t grain, std::uint32_t lowerCell) {
-    if (grains_.movedAtStep[grain] == counters_.stepsDone) {
+    if (grains_.place[grain].movedAtStep == counters_.stepsDone) {
         listedTransitions_ = true;
         return;
     }
-    grains_.cameFrom[grain] = kNoMove;
-    grains_.movedAtStep[grain] = counters_.stepsDone;
+    grains_.place[grain].cameFrom = kNoMove;
+    grains_.place[grain].movedAtStep = counters_.stepsDone;
     movedGrains_.push_back({grain, lowerCell, kNoMove, GridLevel::Lower});
 }
 
@@ -321,7 +321,7 @@ void Scene::moveListedIntoLowerGrid() {
     for (GrainMove& move : movedGrains_) {
         if (move.level != GridLevel::Upper || move.cell >= bottomRow || grains_.level[move.grain] != GridLevel::Lower) continue;
         move.level = GridLevel::Lower;
-        move.cell = grains_.cell[move.grain];
+        move.cell = grains_.place[move.grain].cell;
     }
 }
 
@@ -379,8 +379,8 @@ void Scene::restore(const SceneSnapshot& saved) {
     grains_ = saved.grains;
     movedGrains_.clear(); // the grains the saved state's last step moved
     for (std::uint32_t id = 0; id < grains_.size(); ++id)
-        if (saved.counters.stepsDone > 0 && grains_.movedAtStep[id] == saved.counters.stepsDone)
-            movedGrains_.push_back({id, grains_.cell[id], grains_.cameFrom[id], grains_.level[id]});
+        if (saved.counters.stepsDone > 0 && grains_.place[id].movedAtStep == saved.counters.stepsDone)
+            movedGrains_.push_back({id, grains_.place[id].cell, grains_.place[id].cameFrom, grains_.level[id]});
     nextIdentity_ = saved.nextIdentity;
     counters_ = saved.counters;
     upperObstacles_ = saved.upperObstacles;
@@ -398,7 +398,7 @@ void Scene::markGrainsInMotion() {
     for (std::uint32_t id = 0; id < grains_.size(); ++id) {
         const FallState& fall = grains_.fallOf(id);
         if (!(fall.speed | fall.fraction)) continue;
-        const Int3 c = grid(grains_.level[id]).coordinate(grains_.cell[id]);
+        const Int3 c = grid(grains_.level[id]).coordinate(grains_.place[id].cell);
         sweepOf(grains_.level[id]).markInMotion(c.x, c.y, c.z);
     }
 }
@@ -419,7 +419,7 @@ bool Scene::removeGrain(GridLevel level, std::uint32_t cell) {
     const std::uint32_t id = std::uint32_t(grid[cell]);
     grid[cell] = kEmpty;
     const std::uint32_t moved = grains_.removeBySwap(id);
-    if (moved != id) gridRef(grains_.level[id])[grains_.cell[id]] = CellValue(id);
+    if (moved != id) gridRef(grains_.level[id])[grains_.place[id].cell] = CellValue(id);
     // The last step's list follows the renumbering: the removed grain leaves it, the last takes its id.
     std::erase_if(movedGrains_, [&](const GrainMove& move) { return move.grain == id; });
     if (moved != id)

@@ -45,12 +45,12 @@ bool Scene::flip() {
         const bool wasUpper = grains_.level[id] == GridLevel::Upper;
         const CellGrid& from = wasUpper ? oldUpper : oldLower;
         const CellGrid& to = wasUpper ? lower : upper;
-        const Int3 c = from.coordinate(grains_.cell[id]);
+        const Int3 c = from.coordinate(grains_.place[id].cell);
         grains_.level[id] = wasUpper ? GridLevel::Lower : GridLevel::Upper;
-        grains_.cell[id] = to.index(c.x, from.size().y - 1 - c.y, c.z);
+        grains_.place[id].cell = to.index(c.x, from.size().y - 1 - c.y, c.z);
         // No glide across the turn: the view's turning animation carries the eye.
-        grains_.cameFrom[id] = kNoMove;
-        grains_.movedAtStep[id] = counters_.stepsDone;
+        grains_.place[id].cameFrom = kNoMove;
+        grains_.place[id].movedAtStep = counters_.stepsDone;
     }
     flipLayouts();
     upper_ = std::move(upper);
@@ -61,7 +61,7 @@ bool Scene::flip() {
     // Every grain changed its cell, so the scene is no longer settled.
     counters_.movesLastStep = grains_.size();
     movedGrains_.clear();
-    for (std::uint32_t id = 0; id < grains_.size(); ++id) movedGrains_.push_back({id, grains_.cell[id], kNoMove, grains_.level[id]});
+    for (std::uint32_t id = 0; id < grains_.size(); ++id) movedGrains_.push_back({id, grains_.place[id].cell, kNoMove, grains_.level[id]});
     markEverythingAwake();
     return true;
 }

@@ -23,8 +23,7 @@ constexpr std::uint64_t kBytesPerGridCell = sizeof(CellValue) + 1;
 // One grain's record across GrainStore's arrays (41 bytes today: 25 of place and look, 8 of fall
 // state in each grid's array), rounded up to whole 8 bytes (the scenes reserve their grains).
 constexpr std::uint64_t kBytesPerGrain =
-    (elementBytes<decltype(GrainStore::level)>() + elementBytes<decltype(GrainStore::cell)>() +
-     elementBytes<decltype(GrainStore::cameFrom)>() + elementBytes<decltype(GrainStore::movedAtStep)>() +
+    (elementBytes<decltype(GrainStore::level)>() + elementBytes<decltype(GrainStore::place)>() +
      elementBytes<decltype(GrainStore::identity)>() + elementBytes<decltype(GrainStore::color)>() +
      2 * elementBytes<std::vector<FallState>>() + 7) / 8 * 8;
 // A grain's entry in the scene's fill list (the upper-grid cells that reset fills).

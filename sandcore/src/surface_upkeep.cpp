@@ -115,7 +115,7 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
     else grains_.assign(grains.size(), GrainSurface{});
     for (std::uint32_t id = 0; id < grains_.size(); ++id) {
         grains_[id].inner = inner[id];
-        if (trackGradient_) grains_[id].gradient = gradientKeyAt(scene, grains.level[id], grains.cell[id]);
+        if (trackGradient_) grains_[id].gradient = gradientKeyAt(scene, grains.level[id], grains.place[id].cell);
     }
     updateNumber_ = 0;
     changedCells_.clear();

@@ -64,8 +64,8 @@ sandcore::SceneSnapshot CompressedSnapshot::expand(const sandcore::Scene& scene)
     rebuildGrid(s.lower, s.lowerObstacles);
     for (std::uint32_t id = 0; id < s.grains.size(); ++id) {
         sandcore::CellGrid& grid = s.grains.level[id] == GridLevel::Upper ? s.upper : s.lower;
-        if (s.grains.cell[id] >= grid.cellCount()) throw FormatError("a grain lies outside its grid");
-        grid[s.grains.cell[id]] = sandcore::CellValue(id);
+        if (s.grains.place[id].cell >= grid.cellCount()) throw FormatError("a grain lies outside its grid");
+        grid[s.grains.place[id].cell] = sandcore::CellValue(id);
     }
     return s;
 }

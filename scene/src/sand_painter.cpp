@@ -64,7 +64,7 @@ std::size_t snapshotBytes(const sandcore::SceneSnapshot& snapshot) {
     const auto bytesOf = [](const auto& vector) { return vector.size() * sizeof(vector[0]); };
     const sandcore::GrainStore& grains = snapshot.grains;
     return snapshot.upper.cells().size_bytes() + snapshot.lower.cells().size_bytes() + bytesOf(grains.level) +
-           bytesOf(grains.cell) + bytesOf(grains.cameFrom) + bytesOf(grains.movedAtStep) + bytesOf(grains.identity) +
+           bytesOf(grains.place) + bytesOf(grains.identity) +
            bytesOf(grains.color) + bytesOf(snapshot.upperObstacles) + bytesOf(snapshot.lowerObstacles);
 }
 

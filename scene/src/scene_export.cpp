@@ -75,7 +75,7 @@ VoxelVolume sceneVoxels(const sandcore::Scene& scene) {
     const sandcore::GrainStore& grains = scene.grains();
     for (std::uint32_t id = 0; id < grains.size(); ++id) {
         const sandcore::CellGrid& grid = grains.level[id] == GridLevel::Upper ? upper : lower;
-        const Int3 c = grid.coordinate(grains.cell[id]);
+        const Int3 c = grid.coordinate(grains.place[id].cell);
         const Int3 origin = scene.gridOrigin(grains.level[id]);
         const std::size_t at = std::size_t(c.x) + std::size_t(volume.size.x) * (std::size_t(c.z) + std::size_t(volume.size.z) * std::size_t(c.y + origin.y));
         if (grainAt[at] < 0 || grains.level[id] == GridLevel::Lower) grainAt[at] = id;

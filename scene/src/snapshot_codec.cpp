@@ -91,12 +91,20 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
 
 void writeGrains(ByteWriter& out, const sandcore::GrainStore& g) {
     out.putArray(g.level);
-    out.putArray(g.cell);
-    out.putArray(g.cameFrom);
-    out.putArray(g.movedAtStep);
+    // The file keeps one array per field (the format before places and falls shared records).
+    std::vector<std::uint32_t> cells(g.size());
+    std::vector<sandcore::MoveCode> moves(g.size());
+    std::vector<std::uint64_t> moveSteps(g.size());
+    for (std::uint32_t id = 0; id < g.size(); ++id) {
+        cells[id] = g.place[id].cell;
+        moves[id] = g.place[id].cameFrom;
+        moveSteps[id] = g.place[id].movedAtStep;
+    }
+    out.putArray(cells);
+    out.putArray(moves);
+    out.putArray(moveSteps);
     out.putArray(g.identity);
     out.putArray(g.color);
-    // The file keeps speeds and fractions as two arrays (the format before they shared a record).
     std::vector<std::uint32_t> speeds(g.size());
     std::vector<std::uint16_t> fractions(g.size());
     for (std::uint32_t id = 0; id < g.size(); ++id) {
@@ -111,9 +119,11 @@ sandcore::GrainStore readGrains(ByteReader& in) {
     sandcore::GrainStore g;
     g.level = in.getArray<GridLevel>("grain grids");
     const std::uint64_t grains = g.level.size();
-    g.cell = in.getArray<std::uint32_t>("grain cells", grains);
-    g.cameFrom = in.getArray<sandcore::MoveCode>("grain moves", grains);
-    g.movedAtStep = in.getArray<std::uint64_t>("grain move steps", grains);
+    const std::vector<std::uint32_t> cells = in.getArray<std::uint32_t>("grain cells", grains);
+    const std::vector<sandcore::MoveCode> moves = in.getArray<sandcore::MoveCode>("grain moves", grains);
+    const std::vector<std::uint64_t> moveSteps = in.getArray<std::uint64_t>("grain move steps", grains);
+    g.place.resize(cells.size());
+    for (std::size_t id = 0; id < cells.size(); ++id) g.place[id] = {cells[id], moves[id], moveSteps[id]};
     g.identity = in.getArray<std::uint32_t>("grain identities", grains);
     g.color = in.getArray<std::uint32_t>("grain colours", grains);
     const std::vector<std::uint32_t> speeds = in.getArray<std::uint32_t>("grain fall speeds", grains);
@@ -161,7 +171,7 @@ void requireConsistentSnapshot(const sandcore::SceneSnapshot& s, const CellGrid&
                                   " where its layout allows none");
             if (v == sandcore::kEmpty) continue;
             const auto id = std::uint64_t(v);
-            if (id >= grains || g.level[id] != level || g.cell[id] != n)
+            if (id >= grains || g.level[id] != level || g.place[id].cell != n)
                 throw FormatError(std::string(name) + " grid cell " + std::to_string(n) + " names grain " +
                                   std::to_string(v) + ", which lies elsewhere");
             ++counted[int(level)];
@@ -170,7 +180,7 @@ void requireConsistentSnapshot(const sandcore::SceneSnapshot& s, const CellGrid&
     for (std::uint64_t id = 0; id < grains; ++id) {
         if (g.level[id] != GridLevel::Lower && g.level[id] != GridLevel::Upper)
             throw FormatError("grain " + std::to_string(id) + " lies in no grid");
-        const sandcore::MoveCode move = g.cameFrom[id];
+        const sandcore::MoveCode move = g.place[id].cameFrom;
         if (std::abs(sandcore::moveDx(move)) > sandcore::kMaxMoveSideways ||
             std::abs(sandcore::moveDz(move)) > sandcore::kMaxMoveSideways ||
             std::abs(sandcore::moveDy(move)) > sandcore::kMaxMoveVertical)

@@ -50,9 +50,9 @@ std::int64_t checkMovedGrainsDrawnAtTheirCells(Application& app) {
     REQUIRE(drawn.size() == std::size_t(grains.size()));
     std::int64_t moved = 0;
     for (std::uint32_t id = 0; id < grains.size(); ++id) {
-        if (grains.movedAtStep[id] != scene.counters().stepsDone) continue;
+        if (grains.place[id].movedAtStep != scene.counters().stepsDone) continue;
         ++moved;
-        const sandcore::Vec3 cell = sandcore::cellDisplayPoint(scene, grains.level[id], grains.cell[id],
+        const sandcore::Vec3 cell = sandcore::cellDisplayPoint(scene, grains.level[id], grains.place[id].cell,
                                                                grains.identity[id], {render.cellSize, render.jitter});
         CAPTURE(id);
         CHECK(drawn[id].x == cell.x);

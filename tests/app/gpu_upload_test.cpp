@@ -53,7 +53,7 @@ void requireGpuEqualsCpu(SceneRenderer& renderer, const sandcore::Scene& scene, 
         REQUIRE(gpu[id].x == cpu[id].x);
         REQUIRE(gpu[id].y == cpu[id].y);
         REQUIRE(gpu[id].z == cpu[id].z);
-        gliding += scene.grains().movedAtStep[id] == scene.counters().stepsDone ? 1 : 0;
+        gliding += scene.grains().place[id].movedAtStep == scene.counters().stepsDone ? 1 : 0;
     }
     (void)gliding;
 }
@@ -106,7 +106,7 @@ TEST_CASE("V8: every edit that bypasses the step uploads everything, and the GPU
     CHECK(renderer.stats().uploadBytes == 0);
     const sandcore::SceneSnapshot saved = host.scene().snapshot();
     const sandcore::GrainStore& grains = host.scene().grains();
-    host.editScene().removeGrain(grains.level[0], grains.cell[0]); // the last grain takes id 0
+    host.editScene().removeGrain(grains.level[0], grains.place[0].cell); // the last grain takes id 0
     frameAfter("grain removal by swap", true);
     host.runSteps(1);
     frameAfter("a step after the removal", false);

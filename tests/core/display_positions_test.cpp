@@ -14,7 +14,7 @@ namespace {
 // The display point of a resting grain, computed here independently of the library's code path.
 Vec3 expectedRestingPoint(const Scene& scene, std::uint32_t id, const DisplaySettings& display) {
     const GrainStore& g = scene.grains();
-    const Int3 c = scene.grid(g.level[id]).coordinate(g.cell[id]);
+    const Int3 c = scene.grid(g.level[id]).coordinate(g.place[id].cell);
     const Int3 o = scene.gridOrigin(g.level[id]);
     const Vec3 j = jitterOffset(g.identity[id], display.jitter);
     return {(float(c.x + o.x) + 0.5f + j.x) * display.cellSize, (float(c.y + o.y) + 0.5f + j.y) * display.cellSize,
@@ -33,8 +33,8 @@ TEST_CASE("after 10^6 steps every resting grain sits exactly on its cell's displ
         // While sand moves, a gliding grain is on the straight line from its old cell's display
         // point to its new one: at fraction f, (1 - f) of the move is still ahead.
         for (std::uint32_t id = 0; id < scene.grains().size(); ++id) {
-            if (scene.grains().movedAtStep[id] != scene.counters().stepsDone) continue;
-            const MoveCode from = scene.grains().cameFrom[id];
+            if (scene.grains().place[id].movedAtStep != scene.counters().stepsDone) continue;
+            const MoveCode from = scene.grains().place[id].cameFrom;
             const Vec3 end = expectedRestingPoint(scene, id, display);
             const Vec3 middle = grainDisplayPosition(scene, id, 0.25f, display);
             REQUIRE(middle.x == doctest::Approx(end.x + 0.75f * float(moveDx(from)) * display.cellSize));

@@ -41,7 +41,7 @@ std::map<std::tuple<int, int, int, int>, std::pair<std::uint32_t, std::uint32_t>
     const GrainStore& grains = scene.grains();
     for (std::uint32_t id = 0; id < grains.size(); ++id) {
         const GridLevel level = grains.level[id];
-        const Int3 c = scene.grid(level).coordinate(grains.cell[id]);
+        const Int3 c = scene.grid(level).coordinate(grains.place[id].cell);
         const int worldY = c.y + scene.gridOrigin(level).y;
         out[{c.x, worldY, c.z, int(level)}] = {grains.identity[id], grains.color[id]};
     }
@@ -81,7 +81,7 @@ TEST_CASE("flip: the sand becomes the exact mirror in y, every grain keeps its i
     // Every grain sits in a cell of its grid that holds its id, never in an INVALID cell.
     const GrainStore& grains = scene.grains();
     for (std::uint32_t id = 0; id < grains.size(); ++id)
-        CHECK(scene.grid(grains.level[id])[grains.cell[id]] == CellValue(id));
+        CHECK(scene.grid(grains.level[id])[grains.place[id].cell] == CellValue(id));
 }
 
 TEST_CASE("flip: two flips with no step between give back the same state") {

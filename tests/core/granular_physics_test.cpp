@@ -31,7 +31,7 @@ Scene granularBox(Int3 lower, float gravity, const std::vector<Int3>& invalid = 
 }
 
 int lowerY(const Scene& scene, std::int64_t id) {
-    return scene.grid(GridLevel::Lower).coordinate(scene.grains().cell[std::size_t(id)]).y;
+    return scene.grid(GridLevel::Lower).coordinate(scene.grains().place[std::size_t(id)].cell).y;
 }
 
 } // namespace
@@ -67,7 +67,7 @@ TEST_CASE("gravity: a one-cell obstacle stops a grain at any speed") {
         int lowestInColumn = 119;
         for (int i = 0; i < 12; ++i) {
             scene.step();
-            const Int3 at = grid.coordinate(scene.grains().cell[std::size_t(id)]);
+            const Int3 at = grid.coordinate(scene.grains().place[std::size_t(id)].cell);
             if (at.x == 1 && at.z == 1) {
                 REQUIRE(at.y > obstacle); // never inside or past it
                 lowestInColumn = at.y;
@@ -96,18 +96,18 @@ TEST_CASE("gravity: a fast grain glides along its whole path, and rests exactly 
     while (lowerY(scene, id) > 0) {
         const Vec3 before = grainDisplayPosition(scene, id, 1.0f, display);
         scene.step();
-        const MoveCode from = scene.grains().cameFrom[id];
+        const MoveCode from = scene.grains().place[id].cameFrom;
         longest = std::max(longest, moveDy(from));
         // At fraction 0 the grain is where it was drawn at the end of the last step.
         CHECK(grainDisplayPosition(scene, id, 0.0f, display) == before);
-        const Vec3 end = cellDisplayPoint(scene, GridLevel::Lower, scene.grains().cell[id], scene.grains().identity[id], display);
+        const Vec3 end = cellDisplayPoint(scene, GridLevel::Lower, scene.grains().place[id].cell, scene.grains().identity[id], display);
         CHECK(grainDisplayPosition(scene, id, 0.5f, display).y ==
               doctest::Approx(end.y + 0.5f * float(moveDy(from)) * display.cellSize));
     }
     CHECK(longest >= 10); // several cells in one step
     for (int i = 0; i < 1000; ++i) scene.step();
     CHECK(grainDisplayPosition(scene, id, 0.3f, display) ==
-          cellDisplayPoint(scene, GridLevel::Lower, scene.grains().cell[id], scene.grains().identity[id], display));
+          cellDisplayPoint(scene, GridLevel::Lower, scene.grains().place[id].cell, scene.grains().identity[id], display));
 }
 
 TEST_CASE("repose: a poured cone is round and stands at the asked angle") {

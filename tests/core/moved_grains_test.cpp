@@ -21,7 +21,7 @@ struct Place {
 std::vector<Place> placesOf(const Scene& scene) {
     std::vector<Place> places;
     const GrainStore& grains = scene.grains();
-    for (std::uint32_t id = 0; id < grains.size(); ++id) places.push_back({grains.level[id], grains.cell[id]});
+    for (std::uint32_t id = 0; id < grains.size(); ++id) places.push_back({grains.level[id], grains.place[id].cell});
     return places;
 }
 
@@ -30,9 +30,9 @@ void checkMovesMatchRecords(const Scene& scene) {
     const GrainStore& grains = scene.grains();
     for (const GrainMove& move : scene.movedGrains()) {
         REQUIRE(move.grain < grains.size());
-        REQUIRE_MESSAGE(move.cell == grains.cell[move.grain], "grain " << move.grain << " is listed in another cell");
+        REQUIRE_MESSAGE(move.cell == grains.place[move.grain].cell, "grain " << move.grain << " is listed in another cell");
         REQUIRE_MESSAGE(move.level == grains.level[move.grain], "grain " << move.grain << " is listed in another grid");
-        REQUIRE(move.cameFrom == grains.cameFrom[move.grain]);
+        REQUIRE(move.cameFrom == grains.place[move.grain].cameFrom);
     }
 }
 
@@ -53,7 +53,7 @@ std::int64_t checkEveryStep(Scene& scene, int steps) {
         REQUIRE_MESSAGE(listed == changed, "step " << i + 1 << ": listed " << listed.size() << ", changed " << changed.size());
         // movesLastStep counts a grain that falls into the neck row and passes it in one step twice.
         CHECK(std::int64_t(listed.size()) <= scene.counters().movesLastStep);
-        for (std::uint32_t id : listed) CHECK(scene.grains().movedAtStep[id] == scene.counters().stepsDone);
+        for (std::uint32_t id : listed) CHECK(scene.grains().place[id].movedAtStep == scene.counters().stepsDone);
         checkMovesMatchRecords(scene);
         checked += std::int64_t(listed.size());
     }
@@ -118,7 +118,7 @@ TEST_CASE("movedGrains under the granular rules and after edits that renumber gr
     const auto other = std::ranges::find_if(listed, [&](std::uint32_t id) { return id != last; });
     REQUIRE(other != listed.end());
     const std::uint32_t victim = *other;
-    REQUIRE(classic.removeGrain(grains.level[victim], grains.cell[victim]));
+    REQUIRE(classic.removeGrain(grains.level[victim], grains.place[victim].cell));
     for (std::uint32_t id : fixtures::movedIds(classic)) CHECK(id < classic.grains().size());
     CHECK(std::ranges::count(fixtures::movedIds(classic), victim) == (lastMoved ? 1 : 0));
     checkMovesMatchRecords(classic);

@@ -62,7 +62,7 @@ TEST_CASE("slip picks each empty successor, uniformly over seeds") {
         putLower(scene, 1, 0, 1);
         const auto top = putLower(scene, 1, 1, 1);
         scene.step();
-        const Int3 c = scene.grid(GridLevel::Lower).coordinate(scene.grains().cell[std::size_t(top)]);
+        const Int3 c = scene.grid(GridLevel::Lower).coordinate(scene.grains().place[std::size_t(top)].cell);
         REQUIRE(c.y == 0);
         ++landed[{c.x, c.z}];
     }
@@ -80,7 +80,7 @@ TEST_CASE("grid edges: a grain in a corner only slips to successors inside the b
         putLower(scene, 0, 0, 0);
         const auto top = putLower(scene, 0, 1, 0);
         scene.step();
-        const Int3 c = scene.grid(GridLevel::Lower).coordinate(scene.grains().cell[std::size_t(top)]);
+        const Int3 c = scene.grid(GridLevel::Lower).coordinate(scene.grains().place[std::size_t(top)].cell);
         CHECK(c.y == 0);
         CHECK(c.x <= 1);
         CHECK(c.z <= 1);
@@ -103,9 +103,9 @@ TEST_CASE("a step never moves a grain twice") {
     const auto id = putLower(scene, 2, 9, 2);
     for (int step = 1; step <= 9; ++step) {
         scene.step();
-        const Int3 c = scene.grid(GridLevel::Lower).coordinate(scene.grains().cell[std::size_t(id)]);
+        const Int3 c = scene.grid(GridLevel::Lower).coordinate(scene.grains().place[std::size_t(id)].cell);
         CHECK(c.y == 9 - step);
-        CHECK(scene.grains().movedAtStep[std::size_t(id)] == std::uint64_t(step));
+        CHECK(scene.grains().place[std::size_t(id)].movedAtStep == std::uint64_t(step));
     }
 }
 
@@ -121,7 +121,7 @@ TEST_CASE("transition moves exactly the grains of the shared row whose lower cel
     scene.step();
     const CellGrid& lower = scene.grid(GridLevel::Lower);
     CHECK(scene.grains().level[std::size_t(a)] == GridLevel::Lower);
-    CHECK(scene.grains().cell[std::size_t(a)] == lower.index(0, 2, 0));
+    CHECK(scene.grains().place[std::size_t(a)].cell == lower.index(0, 2, 0));
     CHECK(upper.at(0, 0, 0) == kEmpty);
     CHECK(upper.at(2, 0, 2) == b); // blocked: stays in the upper grid
     CHECK(upper.at(1, 1, 1) == c); // fell one layer, not into the lower grid
@@ -136,13 +136,13 @@ TEST_CASE("transition keeps the world position of the grain") {
     const auto id = scene.addGrain(GridLevel::Upper, upper.index(1, 0, 1));
     const Int3 before = scene.gridOrigin(GridLevel::Upper);
     scene.step();
-    const Int3 cell = scene.grid(GridLevel::Lower).coordinate(scene.grains().cell[std::size_t(id)]);
+    const Int3 cell = scene.grid(GridLevel::Lower).coordinate(scene.grains().place[std::size_t(id)].cell);
     const Int3 origin = scene.gridOrigin(GridLevel::Lower);
     CHECK(before.y == 3); // the upper grid's bottom row is the lower grid's top row
     CHECK(cell.y + origin.y == 0 + before.y);
     CHECK(cell.x == 1);
     CHECK(cell.z == 1);
-    CHECK(scene.grains().cameFrom[std::size_t(id)] == kNoMove);
+    CHECK(scene.grains().place[std::size_t(id)].cameFrom == kNoMove);
 }
 
 TEST_CASE("a grain that falls into the shared row and passes to the lower grid in one step still glides") {
@@ -151,6 +151,6 @@ TEST_CASE("a grain that falls into the shared row and passes to the lower grid i
     const auto id = std::size_t(scene.addGrain(GridLevel::Upper, upper.index(1, 1, 1)));
     scene.step(); // (1,1,1) -> (1,0,1) in the upper grid, then the transition into the lower grid
     CHECK(scene.grains().level[id] == GridLevel::Lower);
-    CHECK(scene.grains().movedAtStep[id] == 1);
-    CHECK(scene.grains().cameFrom[id] == packMove(0, 1, 0)); // it came from one cell above, in world terms
+    CHECK(scene.grains().place[id].movedAtStep == 1);
+    CHECK(scene.grains().place[id].cameFrom == packMove(0, 1, 0)); // it came from one cell above, in world terms
 }

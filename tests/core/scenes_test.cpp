@@ -65,7 +65,7 @@ TEST_CASE("canvas: both grids EMPTY, and a poured grain lands on the floor") {
     REQUIRE(id == 0);
     for (int i = 0; i < 60; ++i) scene.step();
     CHECK(scene.grains().level[0] == GridLevel::Lower);
-    CHECK(scene.grid(GridLevel::Lower).coordinate(scene.grains().cell[0]) == Int3{30, 0, 30});
+    CHECK(scene.grid(GridLevel::Lower).coordinate(scene.grains().place[0].cell) == Int3{30, 0, 30});
     scene.reset();
     CHECK(scene.grainCount() == 0);
 }

@@ -39,7 +39,7 @@ struct Place {
 std::vector<Place> placesOf(const Scene& scene) {
     std::vector<Place> places;
     for (std::uint32_t id = 0; id < scene.grains().size(); ++id)
-        places.push_back({scene.grains().level[id], scene.grains().cell[id]});
+        places.push_back({scene.grains().level[id], scene.grains().place[id].cell});
     return places;
 }
 
@@ -70,7 +70,7 @@ void checkUpkeepMatchesFullRecompute(const Scene& scene, const SurfaceUpkeep& up
     estimateGrainNormals(scene, NormalMethod::ColumnHeights, normals);
     for (std::uint32_t id = 0; id < scene.grains().size(); ++id) {
         const GridLevel level = scene.grains().level[id];
-        const Vec3 kept = upkeep.columnNormals(level)[scene.grains().cell[id] % scene.grid(level).layerSize()];
+        const Vec3 kept = upkeep.columnNormals(level)[scene.grains().place[id].cell % scene.grid(level).layerSize()];
         REQUIRE_MESSAGE((kept.x == normals[id].x && kept.y == normals[id].y && kept.z == normals[id].z),
                         "normal of grain " << id);
     }
@@ -118,10 +118,10 @@ int runAndCheck(Scene& scene, int steps) {
             const MovedPlace& place = upkeep.movedPlaces()[m];
             const std::uint32_t id = scene.movedGrains()[m].grain;
             REQUIRE(place.grain == id);
-            REQUIRE(place.cell == grains.cell[id]);
+            REQUIRE(place.cell == grains.place[id].cell);
             REQUIRE(place.level == (grains.level[id] == GridLevel::Upper ? 1u : 0u));
-            REQUIRE(place.cameFrom == grains.cameFrom[id]);
-            REQUIRE(place.movedStep == std::uint32_t(grains.movedAtStep[id]));
+            REQUIRE(place.cameFrom == grains.place[id].cameFrom);
+            REQUIRE(place.movedStep == std::uint32_t(grains.place[id].movedAtStep));
         }
     }
     return moves;

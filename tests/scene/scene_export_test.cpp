@@ -31,7 +31,7 @@ std::map<std::tuple<int, int, int>, std::uint32_t> worldGrains(const sandcore::S
     std::map<std::tuple<int, int, int>, std::uint32_t> cells;
     const sandcore::GrainStore& g = scene.grains();
     for (std::uint32_t id = 0; id < g.size(); ++id) {
-        const Int3 c = scene.grid(g.level[id]).coordinate(g.cell[id]);
+        const Int3 c = scene.grid(g.level[id]).coordinate(g.place[id].cell);
         const int y = c.y + scene.gridOrigin(g.level[id]).y;
         const auto key = std::make_tuple(c.x, y, c.z);
         const std::uint32_t color = grainExportColor(patterns, g.identity[id], g.color[id]);

@@ -38,9 +38,7 @@ void checkSameSnapshot(const sandcore::Scene& a, const sandcore::Scene& b) {
     CHECK(std::equal(x.upper.cells().begin(), x.upper.cells().end(), y.upper.cells().begin(), y.upper.cells().end()));
     CHECK(std::equal(x.lower.cells().begin(), x.lower.cells().end(), y.lower.cells().begin(), y.lower.cells().end()));
     CHECK(x.grains.level == y.grains.level);
-    CHECK(x.grains.cell == y.grains.cell);
-    CHECK(x.grains.cameFrom == y.grains.cameFrom);
-    CHECK(x.grains.movedAtStep == y.grains.movedAtStep);
+    CHECK(x.grains.place == y.grains.place);
     CHECK(x.grains.identity == y.grains.identity);
     CHECK(x.grains.color == y.grains.color);
     CHECK(x.nextIdentity == y.nextIdentity);

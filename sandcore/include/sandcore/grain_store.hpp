@@ -38,7 +38,7 @@ inline constexpr MoveCode kNoMove = packMove(0, 0, 0); ///< dx = dy = dz = 0
 struct GrainMove {
     std::uint32_t grain = 0;            ///< its id
     std::uint32_t cell = 0;             ///< the cell it is in, in grid `level`
-    MoveCode cameFrom = kNoMove;        ///< world offset back to the cell it left (as GrainStore::cameFrom)
+    MoveCode cameFrom = kNoMove;        ///< world offset back to the cell it left (as PlaceRecord::cameFrom)
     GridLevel level = GridLevel::Lower; ///< the grid holding it
 };
 
@@ -50,12 +50,21 @@ struct FallState {
     bool operator==(const FallState&) const = default;
 };
 
+/// Where a grain is and how it got there: the three fields a step writes for every grain it
+/// moves, together in 16 bytes. The moved grains lie all over the id range, so each write is a
+/// cache miss; one record a move costs one line where three arrays cost three.
+struct PlaceRecord {
+    std::uint32_t cell = 0;         ///< cell index in the grain's grid
+    MoveCode cameFrom = kNoMove;    ///< world offset of the cell it left in its last move
+    std::uint64_t movedAtStep = 0;  ///< step number of its last move (0 = never moved)
+    bool operator==(const PlaceRecord&) const = default;
+};
+static_assert(sizeof(PlaceRecord) == 16, "four records a cache line, none across two");
+
 /// Every grain's place, last move and look, one array per field (ids index all of them).
 struct GrainStore {
     std::vector<GridLevel> level;            ///< grid holding the grain
-    std::vector<std::uint32_t> cell;         ///< cell index in that grid
-    std::vector<MoveCode> cameFrom;          ///< world offset of the cell it left in its last move
-    std::vector<std::uint64_t> movedAtStep;  ///< step number of its last move (0 = never moved)
+    std::vector<PlaceRecord> place;          ///< its cell, last move and the step of that move
     std::vector<std::uint32_t> identity;     ///< stable per grain: picks its jitter and pattern
     std::vector<std::uint32_t> color;        ///< RGBA8 (R in the low byte); 0 = the default sand colours
     /// granular: how each grain falls (classic keeps them at rest; no display effect), one array
@@ -67,15 +76,13 @@ struct GrainStore {
     FallState& fallOf(std::uint32_t id) { return fall[std::size_t(level[id])][id]; }
     const FallState& fallOf(std::uint32_t id) const { return fall[std::size_t(level[id])][id]; } ///< as above
 
-    std::uint32_t size() const { return std::uint32_t(cell.size()); } ///< number of grains
+    std::uint32_t size() const { return std::uint32_t(place.size()); } ///< number of grains
     void clear();                                                      ///< removes every grain
     void reserve(std::uint32_t count); ///< room for count grains without reallocating
     /// Writes a move into grain id's record: the cell it entered, the offset back to the one it
     /// left, and the step it moved in (what the display glides from).
     void recordMove(std::uint32_t id, std::uint32_t to, MoveCode back, std::uint64_t step) {
-        cell[id] = to;
-        cameFrom[id] = back;
-        movedAtStep[id] = step;
+        place[id] = {to, back, step};
     }
     /// Appends a grain and returns its id.
     std::uint32_t add(GridLevel where, std::uint32_t cellIndex, std::uint32_t grainIdentity, std::uint32_t rgba);

@@ -78,8 +78,8 @@ std::int64_t cellBitWordsOf(const sandcore::CellGrid& grid) {
 constexpr sandcore::GridLevel kLevels[2] = {sandcore::GridLevel::Lower, sandcore::GridLevel::Upper};
 
 GrainPlace placeOf(const sandcore::GrainStore& grains, std::uint32_t id) {
-    return {grains.cell[id], grains.level[id] == sandcore::GridLevel::Upper ? 1u : 0u, grains.cameFrom[id],
-            std::uint32_t(grains.movedAtStep[id])};
+    return {grains.place[id].cell, grains.level[id] == sandcore::GridLevel::Upper ? 1u : 0u, grains.place[id].cameFrom,
+            std::uint32_t(grains.place[id].movedAtStep)};
 }
 
 GrainPlace placeOf(const sandcore::MovedPlace& moved) { return {moved.cell, moved.level, moved.cameFrom, moved.movedStep}; }
