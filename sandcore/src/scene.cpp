@@ -173,20 +173,26 @@ void Scene::step() {
                 grains_.recordMove(move.grain, move.cell, move.cameFrom, stepNumber);
                 movedGrains_.push_back(move);
             };
-            if (writesItsOwn) return sweep.feed().drain(write);
+            auto drainGrid = [&](int which) {
+                if (which == 1) upperMovesBegin_ = movedGrains_.size();
+                (which == 0 ? *lowerSweep_ : *upperSweep_).feed().drain(write);
+            };
+            if (writesItsOwn) return drainGrid(grid);
             if (sweepsDone.fetch_add(1, std::memory_order_acq_rel) != 0) return; // the other one writes
-            sweep.feed().drain(write);
+            drainGrid(grid);
             state = kWaiting;
             if (sweepState[1 - grid].compare_exchange_strong(state, kWritesItsOwn, std::memory_order_acq_rel)) return;
-            (grid == 0 ? *upperSweep_ : *lowerSweep_).feed().drain(write);
+            drainGrid(1 - grid);
         });
         lowerSweep_->setDeferWakesAbove(false);
         lowerSweep_->applyDeferredWakes();
     } else {
         lower = lowerSweep_->sweep(lowerContext, pool);
+        upperMovesBegin_ = movedGrains_.size(); // listed directly: the lower grid's moves so far
         upper = upperSweep_->sweep(upperContext, pool);
     }
     lowerSweep_->takeLoggedMoves(movedGrains_); // fed or listed directly: nothing left
+    if (pool && !sideBySide) upperMovesBegin_ = movedGrains_.size(); // logged by strips
     upperSweep_->takeLoggedMoves(movedGrains_);
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;
@@ -302,7 +308,7 @@ void Scene::transitionGranular() {
 // entry); one that was resting there does not move on screen.
 void Scene::listTransition(std::uint32_t grain, std::uint32_t lowerCell) {
     if (grains_.place[grain].movedAtStep == counters_.stepsDone) {
-        listedTransitions_ = true;
+        ++listedTransitions_;
         return;
     }
     grains_.place[grain].cameFrom = kNoMove;
@@ -312,16 +318,20 @@ void Scene::listTransition(std::uint32_t grain, std::uint32_t lowerCell) {
 
 // The entries of grains that moved into the upper grid's bottom row in this step's sweep and
 // then passed into the lower grid: where they are now. Only such entries lie in that row of the
-// upper grid and name a grain the lower grid holds, so one pass over the list finds them without
-// reading the records of the others.
+// upper grid and name a grain the lower grid holds, so a pass over the list finds them without
+// reading the records of the others. It starts at the upper grid's moves and stops at the last
+// one to correct: the upper sweep goes bottom up, so with the classic rules (one layer a move)
+// they are the first of its moves, and the pass, serial after both sweeps, reads few entries.
 void Scene::moveListedIntoLowerGrid() {
-    if (!listedTransitions_) return;
-    listedTransitions_ = false;
+    std::size_t left = listedTransitions_;
+    listedTransitions_ = 0;
     const std::uint32_t bottomRow = upper_.layerSize();
-    for (GrainMove& move : movedGrains_) {
+    for (std::size_t i = upperMovesBegin_; left > 0 && i < movedGrains_.size(); ++i) {
+        GrainMove& move = movedGrains_[i];
         if (move.level != GridLevel::Upper || move.cell >= bottomRow || grains_.level[move.grain] != GridLevel::Lower) continue;
         move.level = GridLevel::Lower;
         move.cell = grains_.place[move.grain].cell;
+        --left;
     }
 }
 

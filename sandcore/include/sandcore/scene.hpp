@@ -176,7 +176,8 @@ private:
     std::unique_ptr<NeckFlow> neckFlow_;      // granular hourglass only
     std::vector<std::uint32_t> transitionReady_; // scratch of transitionGranular
     std::vector<GrainMove> movedGrains_;         // movedGrains(); a flip moves every grain
-    bool listedTransitions_ = false;             // a transition passed a grain its sweep listed (scratch of step)
+    std::size_t listedTransitions_ = 0;          // grains a transition passed that their sweep listed (scratch of step)
+    std::size_t upperMovesBegin_ = 0;            // where the upper grid's moves start in movedGrains_ (scratch of step)
 };
 
 } // namespace sandcore
