@@ -53,9 +53,10 @@ constexpr int kXSumOfRow[8] = {0, -1, 0, -1, 1, 0, 1, 0};
 
 bool sameVec(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
-// How far ahead in the moved list the records are fetched: the grains a step moves lie all over
-// the id range, and waiting for each record's cache line in turn costs more than all the rest.
-constexpr std::size_t kPrefetchAhead = 12;
+// How far ahead in the moved list the cells and records are fetched: the grains a step moves lie
+// all over the grids and the id range, and waiting for each cache line in turn costs more than
+// all the rest.
+constexpr std::size_t kFetchAhead = 16;
 
 } // namespace
 
@@ -120,7 +121,7 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
     updateNumber_ = 0;
     changedCells_.clear();
     changedPlace_.clear();
-    movedPlaces_.clear();
+    forgetPlaces();
     changedInner_.clear();
     changedGradient_.clear();
     changedColumns_.clear();
@@ -136,7 +137,7 @@ void SurfaceUpkeep::clearChanges() {
     }
     for (const ColumnRef& ref : changedColumns_) columnListed_[index(ref.level)][ref.column] = 0;
     changedColumns_.clear();
-    movedPlaces_.clear();
+    forgetPlaces();
     changedCellsListed_.clear();
     rebuilt_ = false;
 }
@@ -349,7 +350,9 @@ void SurfaceUpkeep::update(const Scene& scene) {
     changedCells_.clear();
     origins_ = {scene.gridOrigin(GridLevel::Lower), scene.gridOrigin(GridLevel::Upper)};
     // First the net changes: after this the bits hold the grids' occupancy again.
-    const std::size_t firstPlace = movedPlaces_.size();
+    // The last update's places live in the scene's list, which this step has overwritten: unless
+    // they were cleared or retained, they are lost (the consumer re-reads every place).
+    if (!latestMoves_.empty()) placesComplete_ = false;
     syncMovedGrains(scene);
     changedCellsListed_.insert(changedCellsListed_.end(), changedCells_.begin(), changedCells_.end());
     if (trackFlags_) {
@@ -357,11 +360,9 @@ void SurfaceUpkeep::update(const Scene& scene) {
         // stayed change only next to a net change, in its 6 world neighbours (flag) or its 26
         // neighbours in its grid (normal); both read only the bits, final by now.
         ++updateNumber_;
-        for (std::size_t i = firstPlace; i < movedPlaces_.size(); ++i) {
-            const MovedPlace& grain = movedPlaces_[i];
-            const GridLevel level = grain.level != 0 ? GridLevel::Upper : GridLevel::Lower;
-            refreshFlag(scene, level, grain.cell, grain.grain);
-            if (trackGradient_) refreshGradient(scene, level, grain.cell, grain.grain);
+        for (const GrainMove& grain : latestMoves_) {
+            refreshFlag(scene, grain.level, grain.cell, grain.grain);
+            if (trackGradient_) refreshGradient(scene, grain.level, grain.cell, grain.grain);
         }
         for (const auto& [level, cell] : changedCells_) {
             refreshInnerAround(scene, level, cell);
@@ -371,64 +372,66 @@ void SurfaceUpkeep::update(const Scene& scene) {
     if (trackColumns_) updateHeights(scene);
 }
 
-// The moved grains' cells into the bits, and their places into movedPlaces_. Two passes: the
-// first copies the step's list of moves (each with the grain's place, so no grain record is read)
-// into movedPlaces_; the second syncs the cell each fills and the cell it left, their bits and the
-// left cell's grid entry fetched a few ahead (no chain of one miss waiting for another). Every
-// move goes down within one grid, except that a grain enters the lower grid's top row (the shared
-// row) from the upper grid, resting there (no move) or after a move in the same step: such places
-// go through world coordinates, both grids, in the first pass.
+// The moved grains' cells into the bits. One pass over the step's list of moves (each with the
+// grain's place, so no grain record is read): the cell each fills and the cell it left are synced,
+// their bits and the left cell's grid entry fetched a few moves ahead (no chain of one miss
+// waiting for another). The places themselves are not copied: the list is the scene's, read
+// until its next step (retainMoves). Every move goes down within one grid, except that a grain
+// enters the lower grid's top row (the shared row) from the upper grid, resting there (no move)
+// or after a move in the same step: such places go through world coordinates, both grids.
 void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
     const std::span<const GrainMove> moved = scene.movedGrains();
+    latestMoves_ = moved;
     // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
-    const auto step = std::uint32_t(scene.counters().stepsDone);
-    const std::size_t first = movedPlaces_.size();
-    auto withinGrid = [&](const MovedPlace& place) {
-        const GridShape& shape = shapes_[place.level];
-        return place.cameFrom != kNoMove && (place.level != 0 || place.cell < shape.layer * std::uint32_t(shape.size.y - 1));
+    latestStep_ = std::uint32_t(scene.counters().stepsDone);
+    auto withinGrid = [&](const GrainMove& move) {
+        const GridShape& shape = shapes_[index(move.level)];
+        return move.cameFrom != kNoMove &&
+               (move.level != GridLevel::Lower || move.cell < shape.layer * std::uint32_t(shape.size.y - 1));
     };
-    auto leftCell = [&](const MovedPlace& place) {
-        const GridShape& shape = shapes_[place.level];
-        const MoveCode from = place.cameFrom;
-        return std::uint32_t(std::int64_t(place.cell) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
+    auto leftCell = [&](const GrainMove& move) {
+        const GridShape& shape = shapes_[index(move.level)];
+        const MoveCode from = move.cameFrom;
+        return std::uint32_t(std::int64_t(move.cell) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
                              std::int64_t(shape.layer) * moveDy(from));
     };
     for (std::size_t i = 0; i < moved.size(); ++i) {
-        const GrainMove& move = moved[i];
-        if (trackFlags_) {
-            if (i + kPrefetchAhead < moved.size()) prefetch(&grains_[moved[i + kPrefetchAhead].grain]);
-            list(move.grain, kPlaceListed, changedPlace_);
-        }
-        const MovedPlace& place = movedPlaces_.emplace_back(
-            MovedPlace{move.grain, move.cell, move.level == GridLevel::Upper ? 1u : 0u, move.cameFrom, step});
-        if (withinGrid(place)) continue;
-        syncFilledCell(move.level, place.cell);
-        const Int3 c = shapes_[place.level].coordinate(place.cell);
-        const Int3 o = origins_[place.level];
-        const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
-        syncWorldCell(scene, world);
-        const MoveCode from = place.cameFrom;
-        if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
-    }
-    constexpr std::size_t kCellsAhead = 16;
-    const std::size_t end = movedPlaces_.size();
-    for (std::size_t i = first; i < end; ++i) {
-        if (i + kCellsAhead < end) {
-            const MovedPlace& ahead = movedPlaces_[i + kCellsAhead];
+        if (i + kFetchAhead < moved.size()) {
+            const GrainMove& ahead = moved[i + kFetchAhead];
+            if (trackFlags_) prefetch(&grains_[ahead.grain]);
             if (withinGrid(ahead)) {
-                const GridLevel level = ahead.level != 0 ? GridLevel::Upper : GridLevel::Lower;
                 const std::uint32_t left = leftCell(ahead);
-                prefetch(scene.grid(level).cells().data() + left);
-                prefetch(grainBits_[ahead.level].byteOf(ahead.cell));
-                prefetch(grainBits_[ahead.level].byteOf(left));
+                prefetch(scene.grid(ahead.level).cells().data() + left);
+                prefetch(grainBits_[index(ahead.level)].byteOf(ahead.cell));
+                prefetch(grainBits_[index(ahead.level)].byteOf(left));
             }
         }
-        const MovedPlace& place = movedPlaces_[i];
-        if (!withinGrid(place)) continue;
-        const GridLevel level = place.level != 0 ? GridLevel::Upper : GridLevel::Lower;
-        syncFilledCell(level, place.cell);
-        syncCell(scene, level, leftCell(place));
+        const GrainMove& move = moved[i];
+        if (trackFlags_) list(move.grain, kPlaceListed, changedPlace_);
+        syncFilledCell(move.level, move.cell);
+        if (withinGrid(move)) {
+            syncCell(scene, move.level, leftCell(move));
+            continue;
+        }
+        const Int3 c = shapes_[index(move.level)].coordinate(move.cell);
+        const Int3 o = origins_[index(move.level)];
+        const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
+        syncWorldCell(scene, world);
+        const MoveCode from = move.cameFrom;
+        if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
     }
+}
+
+void SurfaceUpkeep::retainMoves() {
+    retainedPlaces_.reserve(retainedPlaces_.size() + latestMoves_.size());
+    for (const GrainMove& move : latestMoves_) retainedPlaces_.push_back(placeOf(move, latestStep_));
+    latestMoves_ = {};
+}
+
+void SurfaceUpkeep::forgetPlaces() {
+    retainedPlaces_.clear();
+    latestMoves_ = {};
+    placesComplete_ = true;
 }
 
 // isInnerGrain from the bits alone, at the grid's edge and across the seam too.

@@ -203,6 +203,13 @@ bool SceneHost::flip() {
 
 // One step, then the upkeep around what it moved (timed apart: it is the drawing's cost).
 void SceneHost::stepOnce() {
+    // The upkeep reads the last step's places from the scene's list until they are drawn; a step
+    // before that overwrites the list, so they are copied first.
+    if (!upkeepStale_ && upkeep_.movedPlaceCount() != 0) {
+        const auto start = Clock::now();
+        upkeep_.retainMoves();
+        tally_.upkeepMilliseconds += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    }
     const auto stepStart = Clock::now();
     scene_->step();
     tally_.stepMilliseconds += std::chrono::duration<double, std::milli>(Clock::now() - stepStart).count();

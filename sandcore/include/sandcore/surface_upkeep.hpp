@@ -107,16 +107,31 @@ public:
     std::span<const std::uint32_t> movedGrains() const { return changedPlace_; }
     /// Cells whose bits changed, in update order (a cell may be listed by several updates).
     std::span<const CellRef> changedCells() const { return changedCellsListed_; }
-    /// The places of the moved grains, in update order: a grain moved by several updates is
-    /// listed once per update, the last entry its place now.
-    std::span<const MovedPlace> movedPlaces() const { return movedPlaces_; }
+    /// Calls f(const MovedPlace&) for the place of every grain moved since clearChanges(), in
+    /// update order: a grain moved by several updates comes once per update, the last its place
+    /// now. The last update's places are read from the scene's list of moves (Scene::movedGrains),
+    /// not copied: that list holds them until the scene steps again, so whoever steps it again
+    /// before clearChanges() calls retainMoves() first (else placesComplete() turns false).
+    template <class F> void forEachMovedPlace(F&& f) const {
+        for (const MovedPlace& place : retainedPlaces_) f(place);
+        for (const GrainMove& move : latestMoves_) f(placeOf(move, latestStep_));
+    }
+    /// How many places forEachMovedPlace gives.
+    std::size_t movedPlaceCount() const { return retainedPlaces_.size() + latestMoves_.size(); }
+    /// Copies the last update's places out of the scene's list of moves, which the scene's next
+    /// step overwrites: call it before stepping the scene again while the changes are not cleared.
+    void retainMoves();
+    /// False when an update's places were lost (the scene stepped again before retainMoves or
+    /// clearChanges): forEachMovedPlace then misses some moved grains, and a consumer that mirrors
+    /// the places re-reads every grain's. True again after clearChanges() or a rebuild.
+    bool placesComplete() const { return placesComplete_; }
     /// Grains whose inner flag changed.
     std::span<const std::uint32_t> changedInnerFlags() const { return changedInner_; }
     /// Grains whose gradient normal changed (when tracked).
     std::span<const std::uint32_t> changedGradientNormals() const { return changedGradient_; }
     /// Columns whose normal changed.
     std::span<const ColumnRef> changedColumns() const { return changedColumns_; }
-    /// Empties the lists above and clears rebuilt().
+    /// Empties the lists above and clears rebuilt() (and the places: nothing is retained).
     void clearChanges();
     /// Cells the last update found filled or emptied, each once, in either grid (0 after a rebuild).
     std::size_t netChangesLastUpdate() const { return changedCells_.size(); }
@@ -130,6 +145,10 @@ private:
         std::uint8_t listed = 0;    // bits of the change lists naming it
     };
     static std::size_t index(GridLevel level) { return level == GridLevel::Upper ? 1 : 0; }
+    static MovedPlace placeOf(const GrainMove& move, std::uint32_t step) {
+        return {move.grain, move.cell, move.level == GridLevel::Upper ? 1u : 0u, move.cameFrom, step};
+    }
+    void forgetPlaces();
     bool firstLook(GrainSurface& grain, std::uint32_t what) const;
     void syncCell(const Scene& scene, GridLevel level, std::uint32_t cell);
     void syncFilledCell(GridLevel level, std::uint32_t cell);
@@ -172,7 +191,10 @@ private:
     std::vector<std::uint32_t> changedInner_;
     std::vector<std::uint32_t> changedGradient_;
     std::vector<ColumnRef> changedColumns_;
-    std::vector<MovedPlace> movedPlaces_;                 // since clearChanges; this update's at the end
+    std::vector<MovedPlace> retainedPlaces_;              // earlier updates' places since clearChanges (retainMoves)
+    std::span<const GrainMove> latestMoves_;              // the last update's moves: the scene's list, not copied
+    std::uint32_t latestStep_ = 0;                        // the step they moved in (low 32 bits)
+    bool placesComplete_ = true;                          // no update's places lost since clearChanges
     std::vector<ColumnRef> normalCandidates_;             // scratch: columns around changed heights
     std::vector<ColumnRef> touchedColumns_;               // scratch: columns whose height may have changed
     std::vector<int> heightsBefore_;                      // scratch: their heights before the step

@@ -382,19 +382,19 @@ std::int64_t GrainGpuStore::uploadChanges(const sandcore::Scene&, const sandcore
 // Persistent mapping: each change is one store into the buffer the GPU reads, in the upkeep's
 // order (a grain moved twice since the last frame ends with its last place).
 std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface) {
-    const std::span<const sandcore::MovedPlace> moved = surface.movedPlaces();
+    const std::size_t moved = surface.movedPlaceCount();
     const std::span<const std::uint32_t> flags = surface.changedInnerFlags();
     const std::span<const std::uint32_t> normals = gradientUploaded_ ? surface.changedGradientNormals()
                                                                      : std::span<const std::uint32_t>();
-    if (moved.empty() && flags.empty() && normals.empty() && surface.changedCells().empty()) return 0;
+    if (moved == 0 && flags.empty() && normals.empty() && surface.changedCells().empty()) return 0;
     fence_.waitForDraws();
     auto* places = static_cast<GrainPlace*>(places_gpu_.buffer.mapped());
-    for (const sandcore::MovedPlace& grain : moved) places[grain.grain] = placeOf(grain);
+    surface.forEachMovedPlace([&](const sandcore::MovedPlace& grain) { places[grain.grain] = placeOf(grain); });
     visibleBytes_ = 0;
     for (std::uint32_t id : flags) setVisible(id, !surface.isInner(id));
     auto* packed = static_cast<std::uint32_t*>(normals_gpu_.buffer.mapped());
     for (std::uint32_t id : normals) packed[id] = packedByKey_[surface.gradientKeyOf(id)];
-    return std::int64_t(moved.size() * sizeof(GrainPlace)) + visibleBytes_ + std::int64_t(normals.size()) * 4 +
+    return std::int64_t(moved * sizeof(GrainPlace)) + visibleBytes_ + std::int64_t(normals.size()) * 4 +
            writeCellBitChanges(surface);
 }
 
@@ -402,10 +402,10 @@ std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface)
 // in runs.
 std::int64_t GrainGpuStore::sendChangesInRuns(const sandcore::SurfaceUpkeep& surface) {
     std::int64_t bytes = 0;
-    for (const sandcore::MovedPlace& grain : surface.movedPlaces()) {
+    surface.forEachMovedPlace([&](const sandcore::MovedPlace& grain) {
         places_[grain.grain] = placeOf(grain);
         changedIds_.mark(grain.grain);
-    }
+    });
     bytes += uploadRuns(GL_TEXTURE_BUFFER, places_gpu_.buffer.get(), std::span<const GrainPlace>(places_), changedIds_, 0,
                         runs_, [](std::uint32_t, std::uint32_t) {});
     for (std::uint32_t id : surface.changedInnerFlags()) setVisible(id, !surface.isInner(id));

@@ -165,7 +165,7 @@ void SceneRenderer::uploadGrains(const sandcore::Scene& scene, float stepFractio
         return;
     }
     // The reference path: the owner's surface lists every change of the grains.
-    if (surface_ != nullptr && (surface_->rebuilt() || !surface_->movedPlaces().empty() ||
+    if (surface_ != nullptr && (surface_->rebuilt() || surface_->movedPlaceCount() != 0 || !surface_->placesComplete() ||
                                 !surface_->changedInnerFlags().empty() || !surface_->changedCells().empty())) {
         builder_.sceneChanged();
         grainsStale_ = true;
@@ -206,7 +206,8 @@ void SceneRenderer::uploadGpuGrains(const sandcore::Scene& scene, const RenderSe
             ownSurface_.rebuild(scene);
         }
     }
-    const bool full = grainsStale_ || surface->rebuilt() || !gpuStore_.canUpdate(scene, *surface, settings);
+    const bool full = grainsStale_ || surface->rebuilt() || !surface->placesComplete() ||
+                      !gpuStore_.canUpdate(scene, *surface, settings);
     stats_.uploadBytes = full ? gpuStore_.uploadAll(scene, *surface, settings) : gpuStore_.uploadChanges(scene, *surface);
     surface->clearChanges();
     grainsStale_ = false;
