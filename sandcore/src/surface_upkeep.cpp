@@ -423,7 +423,6 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
 }
 
 void SurfaceUpkeep::retainMoves() {
-    retainedPlaces_.reserve(retainedPlaces_.size() + latestMoves_.size());
     for (const GrainMove& move : latestMoves_) retainedPlaces_.push_back(placeOf(move, latestStep_));
     latestMoves_ = {};
 }
