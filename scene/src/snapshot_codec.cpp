@@ -90,29 +90,21 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
 }
 
 void writeGrains(ByteWriter& out, const sandcore::GrainStore& g) {
+    // The file keeps one array per field (the format before places and falls shared records):
+    // each field of a record is gathered into an array of its own.
+    auto putField = [&](auto field) {
+        std::vector<decltype(field(0u))> values(g.size());
+        for (std::uint32_t id = 0; id < g.size(); ++id) values[id] = field(id);
+        out.putArray(values);
+    };
     out.putArray(g.level);
-    // The file keeps one array per field (the format before places and falls shared records).
-    std::vector<std::uint32_t> cells(g.size());
-    std::vector<sandcore::MoveCode> moves(g.size());
-    std::vector<std::uint64_t> moveSteps(g.size());
-    for (std::uint32_t id = 0; id < g.size(); ++id) {
-        cells[id] = g.place[id].cell;
-        moves[id] = g.place[id].cameFrom;
-        moveSteps[id] = g.place[id].movedAtStep;
-    }
-    out.putArray(cells);
-    out.putArray(moves);
-    out.putArray(moveSteps);
+    putField([&](std::uint32_t id) { return g.place[id].cell; });
+    putField([&](std::uint32_t id) { return g.place[id].cameFrom; });
+    putField([&](std::uint32_t id) { return g.place[id].movedAtStep; });
     out.putArray(g.identity);
     out.putArray(g.color);
-    std::vector<std::uint32_t> speeds(g.size());
-    std::vector<std::uint16_t> fractions(g.size());
-    for (std::uint32_t id = 0; id < g.size(); ++id) {
-        speeds[id] = g.fallOf(id).speed;
-        fractions[id] = g.fallOf(id).fraction;
-    }
-    out.putArray(speeds);
-    out.putArray(fractions);
+    putField([&](std::uint32_t id) { return g.fallOf(id).speed; });
+    putField([&](std::uint32_t id) { return g.fallOf(id).fraction; });
 }
 
 sandcore::GrainStore readGrains(ByteReader& in) {

@@ -61,7 +61,7 @@ struct PlaceRecord {
 };
 static_assert(sizeof(PlaceRecord) == 16, "four records a cache line, none across two");
 
-/// Every grain's place, last move and look, one array per field (ids index all of them).
+/// Every grain's place, last move and look, one array per field except the place record (ids index all of them).
 struct GrainStore {
     std::vector<GridLevel> level;            ///< grid holding the grain
     std::vector<PlaceRecord> place;          ///< its cell, last move and the step of that move
