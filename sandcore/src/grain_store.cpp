@@ -7,7 +7,7 @@ void GrainStore::clear() {
     place.clear();
     identity.clear();
     color.clear();
-    for (std::vector<FallState>& grid : fall) grid.clear();
+    for (FallStates& grid : fall) grid.clear();
 }
 
 void GrainStore::reserve(std::uint32_t count) {
@@ -15,7 +15,7 @@ void GrainStore::reserve(std::uint32_t count) {
     place.reserve(count);
     identity.reserve(count);
     color.reserve(count);
-    for (std::vector<FallState>& grid : fall) grid.reserve(count);
+    for (FallStates& grid : fall) grid.reserve(count);
 }
 
 std::uint32_t GrainStore::add(GridLevel where, std::uint32_t cellIndex, std::uint32_t grainIdentity,
@@ -24,7 +24,7 @@ std::uint32_t GrainStore::add(GridLevel where, std::uint32_t cellIndex, std::uin
     place.push_back({cellIndex, kNoMove, 0});
     identity.push_back(grainIdentity);
     color.push_back(rgba);
-    for (std::vector<FallState>& grid : fall) grid.push_back({});
+    for (FallStates& grid : fall) grid.push_back({});
     return std::uint32_t(place.size() - 1);
 }
 
@@ -34,12 +34,12 @@ std::uint32_t GrainStore::removeBySwap(std::uint32_t id) {
     place[id] = place[last];
     identity[id] = identity[last];
     color[id] = color[last];
-    for (std::vector<FallState>& grid : fall) grid[id] = grid[last];
+    for (FallStates& grid : fall) grid[id] = grid[last];
     level.pop_back();
     place.pop_back();
     identity.pop_back();
     color.pop_back();
-    for (std::vector<FallState>& grid : fall) grid.pop_back();
+    for (FallStates& grid : fall) grid.pop_back();
     return last;
 }
 

@@ -154,7 +154,7 @@ private:
         std::uint64_t awake = 0;
         std::uint64_t occupied = 0;
     };
-    std::vector<RowWord> words_; // row = y * sizeZ + z, padded to whole words
+    std::vector<RowWord, LargePageAllocator<RowWord>> words_; // row = y * sizeZ + z, padded to whole words
     // Granular only, indexed as words_: the cells whose grain may be in motion (markInMotion). A
     // visit reads a grain's fall state by id, a cache miss, and most visited grains are at rest.
     std::vector<std::uint64_t> inMotion_;

@@ -74,7 +74,7 @@ void Scene::setPhysics(const PhysicsSettings& physics) {
     validatePhysics(physics);
     settings_.physics = physics;
     configurePhysics();
-    for (std::vector<FallState>& grid : grains_.fall) std::fill(grid.begin(), grid.end(), FallState{});
+    for (FallStates& grid : grains_.fall) std::fill(grid.begin(), grid.end(), FallState{});
     // The new rules read further than the old ones: every grain looks again (a superset of the awake set).
     markEverythingAwake();
 }

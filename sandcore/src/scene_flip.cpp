@@ -57,7 +57,7 @@ bool Scene::flip() {
     lower_ = std::move(lower);
     std::swap(counters_.grainsUpper, counters_.grainsLower);
     // Turning over stops every fall (granular): what fell down would now fall up.
-    for (std::vector<FallState>& grid : grains_.fall) std::fill(grid.begin(), grid.end(), FallState{});
+    for (FallStates& grid : grains_.fall) std::fill(grid.begin(), grid.end(), FallState{});
     // Every grain changed its cell, so the scene is no longer settled.
     counters_.movesLastStep = grains_.size();
     movedGrains_.clear();

@@ -25,7 +25,7 @@ constexpr std::uint64_t kBytesPerGridCell = sizeof(CellValue) + 1;
 constexpr std::uint64_t kBytesPerGrain =
     (elementBytes<decltype(GrainStore::level)>() + elementBytes<decltype(GrainStore::place)>() +
      elementBytes<decltype(GrainStore::identity)>() + elementBytes<decltype(GrainStore::color)>() +
-     2 * elementBytes<std::vector<FallState>>() + 7) / 8 * 8;
+     2 * elementBytes<FallStates>() + 7) / 8 * 8;
 // A grain's entry in the scene's fill list (the upper-grid cells that reset fills).
 constexpr std::uint64_t kBytesPerFillEntry = sizeof(std::uint32_t);
 // The voxelizer's inside flag and, in robust mode, its vote count per cell.

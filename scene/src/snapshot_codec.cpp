@@ -122,7 +122,7 @@ sandcore::GrainStore readGrains(ByteReader& in) {
     const std::vector<std::uint16_t> fractions = in.getArray<std::uint16_t>("grain fall fractions", grains);
     // Into the array of each grain's grid; a damaged grid byte (which the consistency checks
     // refuse later) picks the lower one rather than an array that is not there.
-    for (std::vector<sandcore::FallState>& grid : g.fall) grid.assign(speeds.size(), {});
+    for (sandcore::FallStates& grid : g.fall) grid.assign(speeds.size(), {});
     for (std::uint32_t id = 0; id < g.size(); ++id)
         g.fall[g.level[id] == GridLevel::Upper ? 1 : 0][id] = {speeds[id], fractions[id]};
     return g;

@@ -1,5 +1,7 @@
 // Large blocks: aligned for huge pages, and freed ones kept (within a bound) for the next
 // allocation of a similar size, except under AddressSanitizer.
+#include "sandcore/cell_bits.hpp"
+#include "sandcore/grain_store.hpp"
 #include "sandcore/large_pages.hpp"
 
 #include <doctest/doctest.h>
@@ -59,4 +61,27 @@ TEST_CASE("the kept large blocks never exceed their bound") {
     if (kKeepsBlocks) CHECK(largeBlockCacheBytes() == kLargeBlockCacheBytes / blockBytes * blockBytes);
     releaseLargeBlockCache();
     CHECK(largeBlockCacheBytes() == 0);
+}
+
+// What a step and the surface upkeep read or write at random (grain records by id, the sweeps'
+// and the surface's bits by cell) sits in huge-page blocks once it is big enough to span many.
+TEST_CASE("grain records, fall states and big cell bits start on huge-page boundaries") {
+    auto onBoundary = [](const void* p) { return reinterpret_cast<std::uintptr_t>(p) % kLargePageBytes == 0; };
+    GrainStore grains;
+    grains.reserve(300'000); // 4.8 MB of place records, 2.4 MB of fall states per grid
+    CHECK(onBoundary(grains.place.data()));
+    CHECK(onBoundary(grains.fall[0].data()));
+    CHECK(onBoundary(grains.fall[1].data()));
+    CellBits big, half, small;
+    big.assign(40'000'000);  // 5 MB
+    half.assign(9'000'000);  // 1.1 MB: a whole huge page rather than 4 KiB pages
+    small.assign(100'000);   // 12.5 KB: as any small vector
+    CHECK(onBoundary(big.byteOf(0)));
+    CHECK(onBoundary(half.byteOf(0)));
+    // The bits stay usable past every boundary of the rounded block.
+    half.set(8'999'999, true);
+    CHECK(half.test(8'999'999));
+    CHECK_FALSE(half.test(8'999'998));
+    small.set(99'999, true);
+    CHECK(small.test(99'999));
 }

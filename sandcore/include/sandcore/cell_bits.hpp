@@ -4,6 +4,7 @@
 // coordinate without a division.
 
 #include "sandcore/cell_grid.hpp"
+#include "sandcore/large_pages.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -53,7 +54,16 @@ struct GridShape {
 class CellBits {
 public:
     /// All 0, with at least one byte past the end, whole 32-bit words.
-    void assign(std::uint32_t cells) { bytes_.assign((std::size_t(cells) / 8 + 2 + 3) & ~std::size_t(3), 0); }
+    void assign(std::uint32_t cells) {
+        const std::size_t bytes = (std::size_t(cells) / 8 + 2 + 3) & ~std::size_t(3);
+        // Bits of a big grid are read at random (one cell a moved grain): from half a huge page
+        // up, a whole one (a few TLB entries instead of hundreds).
+        if (bytes >= kLargePageBytes / 2 && bytes_.capacity() < bytes) {
+            bytes_ = {};
+            bytes_.reserve((bytes + kLargePageBytes - 1) / kLargePageBytes * kLargePageBytes);
+        }
+        bytes_.assign(bytes, 0);
+    }
     bool test(std::uint32_t n) const { return (bytes_[n >> 3] >> (n & 7u)) & 1u; }
     void set(std::uint32_t n, bool on) {
         std::uint8_t& byte = bytes_[n >> 3];
@@ -77,7 +87,7 @@ public:
     }
 
 private:
-    std::vector<std::uint8_t> bytes_;
+    std::vector<std::uint8_t, LargePageAllocator<std::uint8_t>> bytes_;
 };
 
 } // namespace sandcore

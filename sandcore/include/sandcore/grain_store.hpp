@@ -2,6 +2,8 @@
 // Per-grain records (structure of arrays), indexed by grain id. Ids are dense: [0, size()).
 // Removing a grain moves the last grain into the freed id, so arrays stay packed for drawing.
 
+#include "sandcore/large_pages.hpp"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -61,17 +63,20 @@ struct PlaceRecord {
 };
 static_assert(sizeof(PlaceRecord) == 16, "four records a cache line, none across two");
 
+/// One grid's fall states, indexed by grain id (huge pages: read at random by id).
+using FallStates = std::vector<FallState, LargePageAllocator<FallState>>;
+
 /// Every grain's place, last move and look, one array per field except the place record (ids index all of them).
 struct GrainStore {
     std::vector<GridLevel> level;            ///< grid holding the grain
-    std::vector<PlaceRecord> place;          ///< its cell, last move and the step of that move
+    std::vector<PlaceRecord, LargePageAllocator<PlaceRecord>> place; ///< its cell, last move and the step of that move
     std::vector<std::uint32_t> identity;     ///< stable per grain: picks its jitter and pattern
     std::vector<std::uint32_t> color;        ///< RGBA8 (R in the low byte); 0 = the default sand colours
     /// granular: how each grain falls (classic keeps them at rest; no display effect), one array
     /// per grid indexed by GridLevel, each indexed by id: a grain's state is in its own grid's
     /// array (fallOf), the other array's entry means nothing. The two grids are swept side by
     /// side, and with one array their threads would keep writing the same cache lines.
-    std::array<std::vector<FallState>, 2> fall;
+    std::array<FallStates, 2> fall;
     /// A grain's fall state, in the array of the grid that holds it.
     FallState& fallOf(std::uint32_t id) { return fall[std::size_t(level[id])][id]; }
     const FallState& fallOf(std::uint32_t id) const { return fall[std::size_t(level[id])][id]; } ///< as above

@@ -1,8 +1,9 @@
 #pragma once
-// Memory for the big arrays of a scene (cell grids) and of the voxelizer: blocks of 2 MiB and
-// more are aligned to 2 MiB and offered to the kernel as transparent huge pages (madvise), so a
-// sweep over a grid of a million cells takes a few TLB entries instead of thousands of 4 KiB
-// ones. Freed blocks are kept, up to kLargeBlockCacheBytes, for the next allocation of a similar
+// Memory for the big arrays of a scene (cell grids, the grain records a step writes by id, the
+// sweeps' awake words, the surface's cell bits) and of the voxelizer: blocks of 2 MiB and more
+// are aligned to 2 MiB and offered to the kernel as transparent huge pages (madvise), so a sweep
+// over a grid of a million cells, or a step writing the records of grains all over the id range,
+// takes a few TLB entries instead of thousands of 4 KiB ones. Freed blocks are kept, up to kLargeBlockCacheBytes, for the next allocation of a similar
 // size: fresh memory costs a page fault per page and the kernel's clearing of every byte.
 // Smaller blocks come from operator new as usual.
 
