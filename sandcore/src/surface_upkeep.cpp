@@ -158,13 +158,6 @@ void SurfaceUpkeep::syncCell(const Scene& scene, GridLevel level, std::uint32_t 
     changeCell(level, cell, value >= 0); // a step only moves grains: EMPTY or a grain, never INVALID
 }
 
-// The cell a moved grain is in: it holds a grain now, no need to read the grid (a cache miss).
-void SurfaceUpkeep::syncFilledCell(GridLevel level, std::uint32_t cell) {
-    CellBits& grains = grainBits_[index(level)];
-    if (grains.test(cell)) return;
-    changeCell(level, cell, true);
-}
-
 // A net change: the cell now holds a grain (filled) or is EMPTY. Without per-grain flags the
 // inner count follows each change as it is made: only the cell and its 6 world neighbours can
 // change their flag, so the count moves by their flags after the change less their flags before
@@ -227,16 +220,6 @@ std::int64_t SurfaceUpkeep::innerChangeInside(GridLevel level, std::uint32_t cel
         inner += othersHide ? 1 : 0;
     }
     return inner;
-}
-
-// A world cell, in every grid that holds it (the shared row is in both).
-void SurfaceUpkeep::syncWorldCell(const Scene& scene, Int3 world) {
-    for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
-        const CellGrid& grid = scene.grid(level);
-        const Int3 origin = origins_[index(level)];
-        const int x = world.x - origin.x, y = world.y - origin.y, z = world.z - origin.z;
-        if (grid.contains(x, y, z)) syncCell(scene, level, grid.index(x, y, z));
-    }
 }
 
 // isInnerGrain from the bits; at the grid's edge and across the seam, isInnerGrain itself.
@@ -372,22 +355,36 @@ void SurfaceUpkeep::update(const Scene& scene) {
     if (trackColumns_) updateHeights(scene);
 }
 
-// The moved grains' cells into the bits. One pass over the step's list of moves (each with the
-// grain's place, so no grain record is read): the cell each fills and the cell it left are synced,
-// their bits and the left cell's grid entry fetched a few moves ahead (no chain of one miss
-// waiting for another). The places themselves are not copied: the list is the scene's, read
-// until its next step (retainMoves). Every move goes down within one grid, except that a grain
-// enters the lower grid's top row (the shared row) from the upper grid, resting there (no move)
-// or after a move in the same step: such places go through world coordinates, both grids.
+// The moved grains' cells into the bits, without reading the grids. A cell changed when it was
+// filled or left but not both: a step fills each cell at most once (one grain ends in it) and
+// leaves it at most once (one grain started in it). So two passes over the step's list of moves
+// flip the grain bit of every cell a move fills, then of every cell a move leaves, and each flip
+// says at once whether it is a net change: a filled cell whose bit was clear was EMPTY before the
+// step (no leave has been flipped yet); a left cell whose bit is still set was not refilled (a
+// refill flipped it clear in the first pass). The bits end as the grids' occupancy, and the net
+// changes are found from the list and the bits alone, where reading the grid cost a cache miss a
+// move. The net changes are then flipped back and applied one by one (changeCell: hides, inner
+// count, the change list), as a consistent sequence of single changes.
+// Every move goes down within one grid, except that a grain enters the lower grid's top row (the
+// shared row) from the upper grid, resting there (no move) or after a move in the same step. The
+// shared row is in both grids and the upper grid's bottom row is where grains wait for the neck,
+// filled and left within one step unlisted: cells there are synced from the grid (syncCell) after
+// the flips, and never flipped. The places themselves are not copied: the list is the scene's,
+// read until its next step (retainMoves).
 void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
     const std::span<const GrainMove> moved = scene.movedGrains();
     latestMoves_ = moved;
     // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
     latestStep_ = std::uint32_t(scene.counters().stepsDone);
+    const GridShape& lowerShape = shapes_[index(GridLevel::Lower)];
+    const std::uint32_t lowerTopFirst = lowerShape.layer * std::uint32_t(lowerShape.size.y - 1);
+    const std::uint32_t upperLayer = shapes_[index(GridLevel::Upper)].layer;
+    // The lower grid's top row and the upper grid's bottom row: synced from the grid, not flipped.
+    auto inSharedRow = [&](GridLevel level, std::uint32_t cell) {
+        return level == GridLevel::Lower ? cell >= lowerTopFirst : cell < upperLayer;
+    };
     auto withinGrid = [&](const GrainMove& move) {
-        const GridShape& shape = shapes_[index(move.level)];
-        return move.cameFrom != kNoMove &&
-               (move.level != GridLevel::Lower || move.cell < shape.layer * std::uint32_t(shape.size.y - 1));
+        return move.cameFrom != kNoMove && (move.level != GridLevel::Lower || move.cell < lowerTopFirst);
     };
     auto leftCell = [&](const GrainMove& move) {
         const GridShape& shape = shapes_[index(move.level)];
@@ -395,31 +392,66 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
         return std::uint32_t(std::int64_t(move.cell) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
                              std::int64_t(shape.layer) * moveDy(from));
     };
+    auto worldOf = [&](const GrainMove& move) {
+        const Int3 c = shapes_[index(move.level)].coordinate(move.cell);
+        const Int3 o = origins_[index(move.level)];
+        return Int3{c.x + o.x, c.y + o.y, c.z + o.z};
+    };
+    // A world cell in every grid that holds it: f(level, cell).
+    auto forEachGridCell = [&](Int3 world, auto&& f) {
+        for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
+            const Int3 o = origins_[index(level)];
+            const int x = world.x - o.x, y = world.y - o.y, z = world.z - o.z;
+            if (scene.grid(level).contains(x, y, z)) f(level, scene.grid(level).index(x, y, z));
+        }
+    };
+    netCells_.clear();
+    fromGrid_.clear();
+    // First pass: the cells the moves fill.
     for (std::size_t i = 0; i < moved.size(); ++i) {
         if (i + kFetchAhead < moved.size()) {
             const GrainMove& ahead = moved[i + kFetchAhead];
             if (trackFlags_) prefetch(&grains_[ahead.grain]);
-            if (withinGrid(ahead)) {
-                const std::uint32_t left = leftCell(ahead);
-                prefetch(scene.grid(ahead.level).cells().data() + left);
-                prefetch(grainBits_[index(ahead.level)].byteOf(ahead.cell));
-                prefetch(grainBits_[index(ahead.level)].byteOf(left));
-            }
+            prefetch(grainBits_[index(ahead.level)].byteOf(ahead.cell));
         }
         const GrainMove& move = moved[i];
         if (trackFlags_) list(move.grain, kPlaceListed, changedPlace_);
-        syncFilledCell(move.level, move.cell);
-        if (withinGrid(move)) {
-            syncCell(scene, move.level, leftCell(move));
+        if (!withinGrid(move)) {
+            forEachGridCell(worldOf(move), [&](GridLevel level, std::uint32_t cell) { fromGrid_.push_back({level, cell}); });
             continue;
         }
-        const Int3 c = shapes_[index(move.level)].coordinate(move.cell);
-        const Int3 o = origins_[index(move.level)];
-        const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
-        syncWorldCell(scene, world);
-        const MoveCode from = move.cameFrom;
-        if (from != kNoMove) syncWorldCell(scene, {world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)});
+        if (inSharedRow(move.level, move.cell)) {
+            fromGrid_.push_back({move.level, move.cell});
+            continue;
+        }
+        CellBits& bits = grainBits_[index(move.level)];
+        if (!bits.test(move.cell)) netCells_.push_back({{move.level, move.cell}, true});
+        bits.flip(move.cell);
     }
+    // Second pass: the cells they left, mostly the cells the first pass filled (a falling column):
+    // their bits were just read. Fetching them ahead here was measured slower.
+    auto flipLeft = [&](GridLevel level, std::uint32_t cell) {
+        if (inSharedRow(level, cell)) {
+            fromGrid_.push_back({level, cell});
+            return;
+        }
+        CellBits& bits = grainBits_[index(level)];
+        if (bits.test(cell)) netCells_.push_back({{level, cell}, false});
+        bits.flip(cell);
+    };
+    for (const GrainMove& move : moved) {
+        if (withinGrid(move)) {
+            flipLeft(move.level, leftCell(move));
+        } else if (move.cameFrom != kNoMove) {
+            const Int3 world = worldOf(move);
+            const MoveCode from = move.cameFrom;
+            forEachGridCell({world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)}, flipLeft);
+        }
+    }
+    // Back to the bits before the step, then the net changes one at a time.
+    for (const NetCell& net : netCells_) grainBits_[index(net.ref.level)].flip(net.ref.cell);
+    for (const NetCell& net : netCells_) changeCell(net.ref.level, net.ref.cell, net.filled);
+    for (const CellRef& ref : fromGrid_) syncCell(scene, ref.level, ref.cell);
 }
 
 void SurfaceUpkeep::retainMoves() {

@@ -6,7 +6,8 @@
 //
 // How: per grid, one bit per cell says which cells held a grain after the last update. A step's
 // moved grains (Scene::movedGrains, each with its cameFrom) name every cell it filled or left;
-// those whose occupancy differs from the bits are its net changes. In a draining bulb a column
+// those whose occupancy differs from the bits are its net changes, found from the list and the
+// bits alone (a cell filled and left in one step did not change). In a draining bulb a column
 // of k falling grains moves k grains but changes 2 cells (its bottom filled, its top emptied).
 // Only net changes alter a neighbour's flag, gradient normal or column height; a moved grain's
 // own flag and normal are looked at again in its new cell, from the bits.
@@ -151,8 +152,6 @@ private:
     void forgetPlaces();
     bool firstLook(GrainSurface& grain, std::uint32_t what) const;
     void syncCell(const Scene& scene, GridLevel level, std::uint32_t cell);
-    void syncFilledCell(GridLevel level, std::uint32_t cell);
-    void syncWorldCell(const Scene& scene, Int3 world);
     bool innerAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
     std::uint16_t gradientKeyAt(const Scene& scene, GridLevel level, std::uint32_t cell) const;
     void refreshFlag(const Scene& scene, GridLevel level, std::uint32_t cell, std::uint32_t grain);
@@ -199,6 +198,12 @@ private:
     std::vector<ColumnRef> touchedColumns_;               // scratch: columns whose height may have changed
     std::vector<int> heightsBefore_;                      // scratch: their heights before the step
     std::vector<CellRef> changedCells_;                   // scratch: cells the step filled or emptied, net
+    struct NetCell {
+        CellRef ref;
+        bool filled = false;
+    };
+    std::vector<NetCell> netCells_;                       // scratch of syncMovedGrains: the net changes found by flips
+    std::vector<CellRef> fromGrid_;                       // scratch of syncMovedGrains: shared-row cells, synced from the grid
     std::vector<CellRef> changedCellsListed_;             // changedCells_ of every update since clearChanges
 };
 
