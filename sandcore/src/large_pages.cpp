@@ -108,7 +108,7 @@ BlockCache& blockCache() {
 } // namespace
 
 void* allocateLarge(std::size_t bytes) {
-    if (bytes < kLargePageBytes) return ::operator new(bytes);
+    if (bytes < kSmallestLargeBlock) return ::operator new(bytes);
     const std::size_t rounded = roundedToLargePages(bytes);
     if (void* reused = blockCache().take(rounded)) return reused;
     void* block = std::aligned_alloc(kLargePageBytes, rounded);
@@ -127,7 +127,7 @@ void* allocateLarge(std::size_t bytes) {
 }
 
 void freeLarge(void* block, std::size_t bytes) noexcept {
-    if (bytes < kLargePageBytes) {
+    if (bytes < kSmallestLargeBlock) {
         ::operator delete(block);
         return;
     }

@@ -53,17 +53,9 @@ struct GridShape {
 /// row around a cell read the same on any byte order.
 class CellBits {
 public:
-    /// All 0, with at least one byte past the end, whole 32-bit words.
-    void assign(std::uint32_t cells) {
-        const std::size_t bytes = (std::size_t(cells) / 8 + 2 + 3) & ~std::size_t(3);
-        // Bits of a big grid are read at random (one cell a moved grain): from half a huge page
-        // up, a whole one (a few TLB entries instead of hundreds).
-        if (bytes >= kLargePageBytes / 2 && bytes_.capacity() < bytes) {
-            bytes_ = {};
-            bytes_.reserve((bytes + kLargePageBytes - 1) / kLargePageBytes * kLargePageBytes);
-        }
-        bytes_.assign(bytes, 0);
-    }
+    /// All 0, with at least one byte past the end, whole 32-bit words. Bits of 1 MiB and more
+    /// sit on huge pages (LargePageAllocator): a moved grain's cell is read at random.
+    void assign(std::uint32_t cells) { bytes_.assign((std::size_t(cells) / 8 + 2 + 3) & ~std::size_t(3), 0); }
     bool test(std::uint32_t n) const { return (bytes_[n >> 3] >> (n & 7u)) & 1u; }
     void set(std::uint32_t n, bool on) {
         std::uint8_t& byte = bytes_[n >> 3];

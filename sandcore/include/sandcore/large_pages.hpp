@@ -1,11 +1,12 @@
 #pragma once
 // Memory for the big arrays of a scene (cell grids, the grain records a step writes by id, the
-// sweeps' awake words, the surface's cell bits) and of the voxelizer: blocks of 2 MiB and more
-// are aligned to 2 MiB and offered to the kernel as transparent huge pages (madvise), so a sweep
-// over a grid of a million cells, or a step writing the records of grains all over the id range,
-// takes a few TLB entries instead of thousands of 4 KiB ones. Freed blocks are kept, up to kLargeBlockCacheBytes, for the next allocation of a similar
-// size: fresh memory costs a page fault per page and the kernel's clearing of every byte.
-// Smaller blocks come from operator new as usual.
+// sweeps' awake words, the surface's cell bits) and of the voxelizer: blocks from half a huge
+// page up are rounded up to whole 2 MiB pages, aligned to them and offered to the kernel as
+// transparent huge pages (madvise), so a sweep over a grid of a million cells, or a step writing
+// the records of grains all over the id range, takes a few TLB entries instead of hundreds or
+// thousands of 4 KiB ones. Freed blocks are kept, up to kLargeBlockCacheBytes, for the next
+// allocation of a similar size: fresh memory costs a page fault per page and the kernel's
+// clearing of every byte. Smaller blocks come from operator new as usual.
 
 #include <cstddef>
 #include <new>
@@ -13,13 +14,15 @@
 
 namespace sandcore {
 
-/// Smallest block handed to huge pages, bytes.
+/// A huge page, bytes.
 inline constexpr std::size_t kLargePageBytes = std::size_t{2} << 20;
+/// Smallest block handed to huge pages (rounded up to a whole one), bytes.
+inline constexpr std::size_t kSmallestLargeBlock = kLargePageBytes / 2;
 
 /// Freed large blocks kept for reuse at most, bytes (none under AddressSanitizer).
 inline constexpr std::size_t kLargeBlockCacheBytes = std::size_t{256} << 20;
 
-/// bytes of memory, 2 MiB aligned and advised as huge pages when bytes >= kLargePageBytes.
+/// bytes of memory, 2 MiB aligned and advised as huge pages when bytes >= kSmallestLargeBlock.
 /// Throws std::bad_alloc when no memory is left.
 void* allocateLarge(std::size_t bytes);
 /// Frees a block of allocateLarge(bytes), given the same byte count: kept for reuse while the
