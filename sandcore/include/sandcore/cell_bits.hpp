@@ -78,6 +78,13 @@ public:
         return (pair >> (first & 7u)) & 7u;
     }
 
+    /// Bits of cells n-2 .. n+2 as bits 0 .. 4 (n >= 2).
+    unsigned around5(std::uint32_t n) const {
+        const std::uint32_t first = n - 2;
+        const unsigned pair = unsigned(bytes_[first >> 3]) | unsigned(bytes_[(first >> 3) + 1]) << 8;
+        return (pair >> (first & 7u)) & 31u;
+    }
+
 private:
     std::vector<std::uint8_t, LargePageAllocator<std::uint8_t>> bytes_;
 };
