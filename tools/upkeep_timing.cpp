@@ -42,7 +42,12 @@ int main(int argc, char** argv) {
     step.threads = std::atoi(argv[2]);
     const int updates = std::atoi(argv[3]);
     const bool columns = argc > 4 && std::atoi(argv[4]) != 0;
-    const std::size_t evictBytes = std::size_t(argc > 5 ? std::atoi(argv[5]) : 64) << 20;
+    const int evictMegabytes = argc > 5 ? std::atoi(argv[5]) : 64;
+    if (height < 8 || step.threads < 1 || updates < 1 || evictMegabytes < 0) {
+        std::fprintf(stderr, "upkeep_timing: HEIGHT must be at least 8, THREADS and UPDATES at least 1, EVICT_MB not negative\n");
+        return 2;
+    }
+    const std::size_t evictBytes = std::size_t(evictMegabytes) << 20;
     Scene scene = makeHourglassScene(makeHourglassMask({height, defaultNeckRadius(height), 0.0f}), {}, step);
     for (int i = 0; i < 400; ++i) scene.step();
     SurfaceUpkeep upkeep;

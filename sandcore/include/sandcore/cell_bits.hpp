@@ -71,19 +71,15 @@ public:
         const std::uint8_t* b = bytes_.data() + std::size_t(w) * 4;
         return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
     }
+    /// Bits of `count` (at most 9) cells from `first` on, as bits 0 .. count-1: two bytes read.
+    unsigned run(std::uint32_t first, unsigned count) const {
+        const unsigned pair = unsigned(bytes_[first >> 3]) | unsigned(bytes_[(first >> 3) + 1]) << 8;
+        return (pair >> (first & 7u)) & ((1u << count) - 1u);
+    }
     /// Bits of cells n-1, n and n+1 as bits 0, 1 and 2 (n >= 1).
-    unsigned around(std::uint32_t n) const {
-        const std::uint32_t first = n - 1;
-        const unsigned pair = unsigned(bytes_[first >> 3]) | unsigned(bytes_[(first >> 3) + 1]) << 8;
-        return (pair >> (first & 7u)) & 7u;
-    }
-
+    unsigned around(std::uint32_t n) const { return run(n - 1, 3); }
     /// Bits of cells n-2 .. n+2 as bits 0 .. 4 (n >= 2).
-    unsigned around5(std::uint32_t n) const {
-        const std::uint32_t first = n - 2;
-        const unsigned pair = unsigned(bytes_[first >> 3]) | unsigned(bytes_[(first >> 3) + 1]) << 8;
-        return (pair >> (first & 7u)) & 31u;
-    }
+    unsigned around5(std::uint32_t n) const { return run(n - 2, 5); }
 
 private:
     std::vector<std::uint8_t, LargePageAllocator<std::uint8_t>> bytes_;
