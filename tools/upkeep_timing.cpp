@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
         upkeep.update(scene);
         updateMs.push_back(millisecondsSince(start));
         const auto placesStart = std::chrono::steady_clock::now();
-        upkeep.forEachMovedPlace([&](const MovedPlace& p) {
+        upkeep.forEachMovedPlace(scene.workers(), [&](const MovedPlace& p) {
             places[p.grain] = {p.cell, p.level, std::uint32_t(p.cameFrom), p.movedStep};
         });
         placesMs.push_back(millisecondsSince(placesStart));

@@ -2,6 +2,7 @@
 
 #include "sandcore/inner_grains.hpp"
 #include "sandcore/normals.hpp"
+#include "sandcore/worker_pool.hpp"
 
 #include "layer_neighbourhood.hpp"
 
@@ -57,6 +58,8 @@ bool sameVec(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && 
 // all over the grids and the id range, and waiting for each cache line in turn costs more than
 // all the rest.
 constexpr std::size_t kFetchAhead = 16;
+// The same for the net changes' hide bits (each a few cache lines).
+constexpr std::size_t kNetFetchAhead = 6;
 
 } // namespace
 
@@ -158,29 +161,22 @@ void SurfaceUpkeep::syncCell(const Scene& scene, GridLevel level, std::uint32_t 
     changeCell(level, cell, value >= 0); // a step only moves grains: EMPTY or a grain, never INVALID
 }
 
+void SurfaceUpkeep::setCell(GridLevel level, std::uint32_t cell, bool filled) {
+    grainBits_[index(level)].set(cell, filled);
+    hideBits_[index(level)].set(cell, filled);
+}
+
 // A net change: the cell now holds a grain (filled) or is EMPTY. Without per-grain flags the
 // inner count follows each change as it is made: only the cell and its 6 world neighbours can
 // change their flag, so the count moves by their flags after the change less their flags before
-// (a sum of such steps is the change of the whole update, whatever the order).
+// (a sum of such steps is the change of the whole update, whatever the order). Here in either
+// grid, across the seam too; applyNetChanges does the cells away from faces and seam cheaper.
 void SurfaceUpkeep::changeCell(GridLevel level, std::uint32_t cell, bool filled) {
-    auto apply = [&] {
-        grainBits_[index(level)].set(cell, filled);
-        hideBits_[index(level)].set(cell, filled);
-        changedCells_.push_back({level, cell});
-    };
-    if (trackFlags_) return apply();
-    const GridShape& shape = shapes_[index(level)];
-    const Int3 c = shape.coordinate(cell);
-    if (c.x >= 2 && c.z >= 2 && c.y >= 2 && c.x + 2 < shape.size.x && c.z + 2 < shape.size.z && c.y + 2 < shape.size.y) {
-        // Two cells from every face and the seam: all the flags involved lie in this grid.
-        const std::int64_t inner = innerChangeInside(level, cell);
-        apply();
-        innerCount_ += filled ? inner : -inner;
-        return;
-    }
-    const std::int64_t before = innerAround(level, c);
-    apply();
-    innerCount_ += innerAround(level, c) - before;
+    const Int3 c = shapes_[index(level)].coordinate(cell);
+    const std::int64_t before = trackFlags_ ? 0 : innerAround(level, c);
+    setCell(level, cell, filled);
+    changedCells_.push_back({level, cell});
+    if (!trackFlags_) innerCount_ += innerAround(level, c) - before;
 }
 
 // The inner grains among a cell and its 6 world neighbours, in either grid (from the bits).
@@ -341,11 +337,16 @@ void SurfaceUpkeep::update(const Scene& scene) {
     }
     changedCells_.clear();
     origins_ = {scene.gridOrigin(GridLevel::Lower), scene.gridOrigin(GridLevel::Upper)};
+    // With the scene's threads (idle between steps), one grid each (see syncMovedGrains). Per-grain
+    // flags (the CPU path) list grains in shared lists: one thread.
+    WorkerPool* pool = trackFlags_ ? nullptr : scene.workers();
+    shares_[0].levels = pool != nullptr ? 1u : 3u;
+    shares_[1].levels = 2u;
     // First the net changes: after this the bits hold the grids' occupancy again.
     // The last update's places live in the scene's list, which this step has overwritten: unless
     // they were cleared or retained, they are lost (the consumer re-reads every place).
     if (!latestMoves_.empty()) placesComplete_ = false;
-    syncMovedGrains(scene);
+    syncMovedGrains(scene, pool);
     changedCellsListed_.insert(changedCellsListed_.end(), changedCells_.begin(), changedCells_.end());
     if (trackFlags_) {
         // A moved grain's flag and normal are about its new cell: look again at each. Grains that
@@ -361,7 +362,13 @@ void SurfaceUpkeep::update(const Scene& scene) {
             if (trackGradient_) refreshGradientAround(scene, level, cell);
         }
     }
-    if (trackColumns_) updateHeights(scene);
+    if (trackColumns_) updateHeights(scene, pool);
+}
+
+// part(share) for each share in use: side by side on the pool's threads, or share 0 alone.
+template <class Part> void SurfaceUpkeep::forEachShare(WorkerPool* pool, Part&& part) {
+    if (pool != nullptr) pool->parallelFor(2, [&](int s) { part(shares_[std::size_t(s)]); });
+    else part(shares_[0]);
 }
 
 // The moved grains' cells into the bits, without reading the grids. A cell changed when it was
@@ -372,26 +379,62 @@ void SurfaceUpkeep::update(const Scene& scene) {
 // step (no leave has been flipped yet); a left cell whose bit is still set was not refilled (a
 // refill flipped it clear in the first pass). The bits end as the grids' occupancy, and the net
 // changes are found from the list and the bits alone, where reading the grid cost a cache miss a
-// move. The net changes are then flipped back and applied one by one (changeCell: hides, inner
-// count, the change list), as a consistent sequence of single changes.
+// move. The net changes are then flipped back and applied one by one (hides, inner count, the
+// change list), as a consistent sequence of single changes: the order does not matter, the inner
+// count's steps add up to the change of the whole update.
 // Every move goes down within one grid, except that a grain enters the lower grid's top row (the
 // shared row) from the upper grid, resting there (no move) or after a move in the same step. The
 // shared row is in both grids and the upper grid's bottom row is where grains wait for the neck,
 // filled and left within one step unlisted: cells there are synced from the grid (syncCell) after
 // the flips, and never flipped. The places themselves are not copied: the list is the scene's,
 // read until its next step (retainMoves).
-void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
-    const std::span<const GrainMove> moved = scene.movedGrains();
-    latestMoves_ = moved;
+void SurfaceUpkeep::syncMovedGrains(const Scene& scene, WorkerPool* pool) {
+    latestMoves_ = scene.movedGrains();
     // Every grain a step lists moved in that step (its movedAtStep): not read, one cache miss less.
     latestStep_ = std::uint32_t(scene.counters().stepsDone);
+    // On two threads, one grid each: a grid's flips, its net changes and their inner counts away
+    // from faces and seam read and write only that grid's bits. What reads both grids is done
+    // afterwards on one: a cell a move left in the other grid, a net change near a face or the
+    // seam, the shared rows.
+    const int shareCount = pool != nullptr ? 2 : 1;
+    for (GridShare& share : shares_) {
+        share.net.clear();
+        share.fromGrid.clear();
+        share.otherLeaves.clear();
+        share.changed.clear();
+        share.nearEdge.clear();
+        share.innerChange = 0;
+    }
+    forEachShare(pool, [&](GridShare& share) { flipMoves(scene, share); });
+    for (int s = 0; s < shareCount; ++s)
+        for (const CellRef& ref : shares_[std::size_t(s)].otherLeaves)
+            flipLeft(ref.level, ref.cell, shares_[shareCount == 2 ? index(ref.level) : 0]);
+    forEachShare(pool, [&](GridShare& share) { applyNetChanges(share); });
+    for (int s = 0; s < shareCount; ++s) {
+        const GridShare& share = shares_[std::size_t(s)];
+        innerCount_ += share.innerChange;
+        changedCells_.insert(changedCells_.end(), share.changed.begin(), share.changed.end());
+    }
+    for (int s = 0; s < shareCount; ++s) {
+        for (const NetCell& net : shares_[std::size_t(s)].nearEdge) changeCell(net.ref.level, net.ref.cell, net.filled);
+        for (const CellRef& ref : shares_[std::size_t(s)].fromGrid) syncCell(scene, ref.level, ref.cell);
+    }
+}
+
+// The lower grid's top row and the upper grid's bottom row: synced from the grid, not flipped.
+bool SurfaceUpkeep::inSharedRow(GridLevel level, std::uint32_t cell) const {
+    const GridShape& lower = shapes_[index(GridLevel::Lower)];
+    return level == GridLevel::Lower ? cell >= lower.layer * std::uint32_t(lower.size.y - 1)
+                                     : cell < shapes_[index(GridLevel::Upper)].layer;
+}
+
+// The two passes of flips for the moves in the grids a share owns.
+void SurfaceUpkeep::flipMoves(const Scene& scene, GridShare& share) {
+    const std::span<const GrainMove> moved = latestMoves_;
     const GridShape& lowerShape = shapes_[index(GridLevel::Lower)];
     const std::uint32_t lowerTopFirst = lowerShape.layer * std::uint32_t(lowerShape.size.y - 1);
-    const std::uint32_t upperLayer = shapes_[index(GridLevel::Upper)].layer;
-    // The lower grid's top row and the upper grid's bottom row: synced from the grid, not flipped.
-    auto inSharedRow = [&](GridLevel level, std::uint32_t cell) {
-        return level == GridLevel::Lower ? cell >= lowerTopFirst : cell < upperLayer;
-    };
+    const unsigned levels = share.levels;
+    auto owns = [levels](GridLevel level) { return ((levels >> index(level)) & 1u) != 0; };
     auto withinGrid = [&](const GrainMove& move) {
         return move.cameFrom != kNoMove && (move.level != GridLevel::Lower || move.cell < lowerTopFirst);
     };
@@ -414,53 +457,94 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene) {
             if (scene.grid(level).contains(x, y, z)) f(level, scene.grid(level).index(x, y, z));
         }
     };
-    netCells_.clear();
-    fromGrid_.clear();
     // First pass: the cells the moves fill.
     for (std::size_t i = 0; i < moved.size(); ++i) {
         if (i + kFetchAhead < moved.size()) {
             const GrainMove& ahead = moved[i + kFetchAhead];
             if (trackFlags_) prefetch(&grains_[ahead.grain]);
-            prefetch(grainBits_[index(ahead.level)].byteOf(ahead.cell));
+            if (owns(ahead.level)) prefetch(grainBits_[index(ahead.level)].byteOf(ahead.cell));
         }
         const GrainMove& move = moved[i];
+        if (!owns(move.level)) continue;
         if (trackFlags_) list(move.grain, kPlaceListed, changedPlace_);
         if (!withinGrid(move)) {
-            forEachGridCell(worldOf(move), [&](GridLevel level, std::uint32_t cell) { fromGrid_.push_back({level, cell}); });
+            forEachGridCell(worldOf(move), [&](GridLevel level, std::uint32_t cell) { share.fromGrid.push_back({level, cell}); });
             continue;
         }
         if (inSharedRow(move.level, move.cell)) {
-            fromGrid_.push_back({move.level, move.cell});
+            share.fromGrid.push_back({move.level, move.cell});
             continue;
         }
         CellBits& bits = grainBits_[index(move.level)];
-        if (!bits.test(move.cell)) netCells_.push_back({{move.level, move.cell}, true});
+        if (!bits.test(move.cell)) share.net.push_back({{move.level, move.cell}, true});
         bits.flip(move.cell);
     }
     // Second pass: the cells they left, mostly the cells the first pass filled (a falling column):
     // their bits were just read. Fetching them ahead here was measured slower.
-    auto flipLeft = [&](GridLevel level, std::uint32_t cell) {
-        if (inSharedRow(level, cell)) {
-            fromGrid_.push_back({level, cell});
-            return;
-        }
-        CellBits& bits = grainBits_[index(level)];
-        if (bits.test(cell)) netCells_.push_back({{level, cell}, false});
-        bits.flip(cell);
+    auto leave = [&](GridLevel level, std::uint32_t cell) {
+        if (owns(level)) flipLeft(level, cell, share);
+        else share.otherLeaves.push_back({level, cell});
     };
     for (const GrainMove& move : moved) {
+        if (!owns(move.level)) continue;
         if (withinGrid(move)) {
-            flipLeft(move.level, leftCell(move));
+            flipLeft(move.level, leftCell(move), share);
         } else if (move.cameFrom != kNoMove) {
             const Int3 world = worldOf(move);
             const MoveCode from = move.cameFrom;
-            forEachGridCell({world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)}, flipLeft);
+            forEachGridCell({world.x + moveDx(from), world.y + moveDy(from), world.z + moveDz(from)}, leave);
         }
     }
-    // Back to the bits before the step, then the net changes one at a time.
-    for (const NetCell& net : netCells_) grainBits_[index(net.ref.level)].flip(net.ref.cell);
-    for (const NetCell& net : netCells_) changeCell(net.ref.level, net.ref.cell, net.filled);
-    for (const CellRef& ref : fromGrid_) syncCell(scene, ref.level, ref.cell);
+}
+
+// A cell a move left, after every fill of the step: a net change when its bit is still set.
+void SurfaceUpkeep::flipLeft(GridLevel level, std::uint32_t cell, GridShare& share) {
+    if (inSharedRow(level, cell)) {
+        share.fromGrid.push_back({level, cell});
+        return;
+    }
+    CellBits& bits = grainBits_[index(level)];
+    if (bits.test(cell)) share.net.push_back({{level, cell}, false});
+    bits.flip(cell);
+}
+
+// Back to the bits before the step, then the net changes one at a time; those near a face or
+// the seam, whose inner count reads the other grid, are left for changeCell.
+void SurfaceUpkeep::applyNetChanges(GridShare& share) {
+    for (const NetCell& net : share.net) grainBits_[index(net.ref.level)].flip(net.ref.cell);
+    for (std::size_t i = 0; i < share.net.size(); ++i) {
+        if (!trackFlags_ && i + kNetFetchAhead < share.net.size()) {
+            // The hide bits innerChangeInside reads lie in 7 cache lines that the flips did not touch.
+            const CellRef ahead = share.net[i + kNetFetchAhead].ref;
+            const GridShape& shape = shapes_[index(ahead.level)];
+            const CellBits& hides = hideBits_[index(ahead.level)];
+            const std::uint32_t reach = 2 * shape.layer + 2 * shape.row + 2;
+            if (ahead.cell >= reach && ahead.cell + reach < hides.wordCount() * 32u) {
+                for (std::uint32_t r = ahead.cell - 2 * shape.row - 2; r <= ahead.cell + 2 * shape.row + 2; r += 2 * shape.row)
+                    prefetch(hides.byteOf(r));
+                prefetch(hides.byteOf(ahead.cell - 2 * shape.layer));
+                prefetch(hides.byteOf(ahead.cell - shape.layer));
+                prefetch(hides.byteOf(ahead.cell + shape.layer));
+                prefetch(hides.byteOf(ahead.cell + 2 * shape.layer));
+            }
+        }
+        const auto [level, cell] = share.net[i].ref;
+        const NetCell& net = share.net[i];
+        if (!trackFlags_) {
+            const GridShape& shape = shapes_[index(level)];
+            const Int3 c = shape.coordinate(cell);
+            if (!(c.x >= 2 && c.z >= 2 && c.y >= 2 && c.x + 2 < shape.size.x && c.z + 2 < shape.size.z &&
+                  c.y + 2 < shape.size.y)) {
+                share.nearEdge.push_back(net);
+                continue;
+            }
+            // Two cells from every face and the seam: all the flags involved lie in this grid.
+            const std::int64_t inner = innerChangeInside(level, cell);
+            share.innerChange += net.filled ? inner : -inner;
+        }
+        setCell(level, cell, net.filled);
+        share.changed.push_back(net.ref);
+    }
 }
 
 void SurfaceUpkeep::retainMoves() {
@@ -502,28 +586,37 @@ bool SurfaceUpkeep::innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) c
 // Heights: a filled cell can only raise its column; then each touched column scans down from
 // its (upper bound of the) height to its top grain. Column normals: around changed heights.
 // The grain bits, final by now, say which cells hold a grain: a bit is a far smaller read than
-// the grid's cell.
-void SurfaceUpkeep::updateHeights(const Scene& scene) {
-    ++updateNumber_;
-    touchedColumns_.clear();
-    heightsBefore_.clear();
+// the grid's cell. Each grid's columns are its own: on two threads, one grid each.
+void SurfaceUpkeep::updateHeights(const Scene& scene, WorkerPool* pool) {
+    const std::uint32_t heightsPass = ++updateNumber_, normalsPass = ++updateNumber_;
+    forEachShare(pool, [&](GridShare& share) { updateHeightsOf(scene, share, heightsPass, normalsPass); });
+    for (GridShare& share : shares_) {
+        changedColumns_.insert(changedColumns_.end(), share.changedColumns.begin(), share.changedColumns.end());
+        share.changedColumns.clear();
+    }
+}
+
+void SurfaceUpkeep::updateHeightsOf(const Scene& scene, GridShare& share, std::uint32_t heightsPass,
+                                    std::uint32_t normalsPass) {
+    share.touchedColumns.clear();
+    share.heightsBefore.clear();
     for (const auto& [level, cell] : changedCells_) {
+        if (((share.levels >> index(level)) & 1u) == 0) continue;
         const CellGrid& grid = scene.grid(level);
         const std::uint32_t column = cell % grid.layerSize();
         const int y = int(cell / grid.layerSize());
         int& height = heights_[index(level)][column];
         std::uint32_t& stamp = columnStamp_[index(level)][column];
-        if (stamp != updateNumber_) {
-            stamp = updateNumber_;
-            touchedColumns_.push_back({level, column});
-            heightsBefore_.push_back(height);
+        if (stamp != heightsPass) {
+            stamp = heightsPass;
+            share.touchedColumns.push_back({level, column});
+            share.heightsBefore.push_back(height);
         }
         if (grainBits_[index(level)].test(cell)) height = std::max(height, y + 1);
     }
-    const std::uint32_t normalsPass = ++updateNumber_;
-    normalCandidates_.clear();
-    for (std::size_t i = 0; i < touchedColumns_.size(); ++i) {
-        const ColumnRef& touched = touchedColumns_[i];
+    share.normalCandidates.clear();
+    for (std::size_t i = 0; i < share.touchedColumns.size(); ++i) {
+        const ColumnRef& touched = share.touchedColumns[i];
         const CellGrid& grid = scene.grid(touched.level);
         const Int3 s = grid.size();
         int& height = heights_[index(touched.level)][touched.column];
@@ -531,7 +624,7 @@ void SurfaceUpkeep::updateHeights(const Scene& scene) {
         int y = height - 1;
         while (y >= 0 && !holds.test(touched.column + std::uint32_t(y) * grid.layerSize())) --y;
         height = y + 1;
-        if (height == heightsBefore_[i]) continue;
+        if (height == share.heightsBefore[i]) continue;
         // Its normal and its 8 neighbours' read this height.
         const int x = int(touched.column % std::uint32_t(s.x)), z = int(touched.column / std::uint32_t(s.x));
         LayerNeighbourhood(x, z, s.x, s.z).forEachWithCentre([&](int dx, int dz) {
@@ -539,11 +632,11 @@ void SurfaceUpkeep::updateHeights(const Scene& scene) {
             std::uint32_t& stamp = columnStamp_[index(touched.level)][column];
             if (stamp == normalsPass) return;
             stamp = normalsPass;
-            normalCandidates_.push_back({touched.level, column});
+            share.normalCandidates.push_back({touched.level, column});
         });
     }
     // Recompute after every height is final; list only the columns whose normal really changed.
-    for (const ColumnRef& ref : normalCandidates_) {
+    for (const ColumnRef& ref : share.normalCandidates) {
         const Int3 s = scene.grid(ref.level).size();
         const std::vector<int>& heights = heights_[index(ref.level)];
         const int x = int(ref.column % std::uint32_t(s.x)), z = int(ref.column / std::uint32_t(s.x));
@@ -554,7 +647,7 @@ void SurfaceUpkeep::updateHeights(const Scene& scene) {
         std::uint8_t& listed = columnListed_[index(ref.level)][ref.column];
         if (listed) continue;
         listed = 1;
-        changedColumns_.push_back(ref);
+        share.changedColumns.push_back(ref);
     }
 }
 

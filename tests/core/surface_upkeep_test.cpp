@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <set>
 #include <vector>
 
@@ -200,8 +201,8 @@ Scene canvasWithColumn(GridLevel level, int x, int z, int yFrom, int yTo) {
 // A column that reaches from the upper grid's layer 2 down into the lower grid's top rows, so
 // grains leave the upper grid's bottom row (the shared row) as others enter it, in one step; and a
 // second column one cell over, resting on nothing, in the upper grid only.
-Scene canvasWithSeamColumns() {
-    Scene scene = makeCanvasScene({{12, 4, 12}, {12, 10, 12}});
+Scene canvasWithSeamColumns(int threads = 1) {
+    Scene scene = makeCanvasScene({{12, 4, 12}, {12, 10, 12}}, stepSettings(1, threads, false));
     const CellGrid& upper = scene.grid(GridLevel::Upper);
     const CellGrid& lower = scene.grid(GridLevel::Lower);
     for (int y = 0; y <= 2; ++y) scene.addGrain(GridLevel::Upper, upper.index(5, y, 6));
@@ -323,11 +324,16 @@ TEST_CASE("surface upkeep without per-grain flags: bits, changed cells and inner
 }
 
 TEST_CASE("surface upkeep without per-grain flags: columns through the seam and a sculpture stay exact") {
-    Scene scene = canvasWithSeamColumns();
-    const CellGrid& upper = scene.grid(GridLevel::Upper);
-    for (int y = 0; y <= 3; ++y) scene.addGrain(GridLevel::Upper, upper.index(0, y, 0)); // at the grid's corner
-    CHECK(runBitsOnlyAndCheck(scene, 25, true) > 0);
-    CHECK(scene.counters().grainsUpper == 0);
+    // On 2 threads each grid's share of the update runs on its own, and a grain that fell from
+    // the upper grid into the lower grid's top row left a cell in the grid the other thread owns.
+    for (int threads : {1, 2}) {
+        CAPTURE(threads);
+        Scene scene = canvasWithSeamColumns(threads);
+        const CellGrid& upper = scene.grid(GridLevel::Upper);
+        for (int y = 0; y <= 3; ++y) scene.addGrain(GridLevel::Upper, upper.index(0, y, 0)); // at the grid's corner
+        CHECK(runBitsOnlyAndCheck(scene, 25, true) > 0);
+        CHECK(scene.counters().grainsUpper == 0);
+    }
     Scene sculpture = makeSculptureScene(makeSphereMask(16), stepSettings(5, 1, false));
     CHECK(runBitsOnlyAndCheck(sculpture, 40, false) > 0);
 }
@@ -382,4 +388,43 @@ TEST_CASE("surface upkeep: the places of several steps between two clears, retai
         upkeep.clearChanges();
         CHECK(upkeep.placesComplete());
     }
+}
+
+TEST_CASE("surface upkeep: places shared out among the scene's threads end in every grain's place") {
+    // Big enough that a step moves more grains than one thread takes alone; frames of 1 to 3
+    // steps, so earlier steps' places come first and a grain moved twice ends in its last place.
+    Scene scene = makeHourglassScene(makeHourglassMask({72, 4.0f, 0.0f}), {}, stepSettings(5, 2, false));
+    REQUIRE(scene.workers() != nullptr);
+    for (int i = 0; i < 60; ++i) scene.step();
+    SurfaceUpkeep upkeep;
+    upkeep.setTracking({false, false, false});
+    upkeep.rebuild(scene);
+    upkeep.clearChanges();
+    std::vector<std::uint32_t> cells(scene.grains().size()), steps(scene.grains().size());
+    for (std::uint32_t id = 0; id < cells.size(); ++id) {
+        cells[id] = scene.grains().place[id].cell;
+        steps[id] = std::uint32_t(scene.grains().place[id].movedAtStep);
+    }
+    std::size_t largest = 0;
+    for (int frame = 0; frame < 9; ++frame) {
+        for (int s = 0; s < 1 + frame % 3; ++s) {
+            if (s > 0) upkeep.retainMoves();
+            scene.step();
+            largest = std::max(largest, scene.movedGrains().size());
+            upkeep.update(scene);
+        }
+        std::atomic<std::size_t> written{0};
+        upkeep.forEachMovedPlace(scene.workers(), [&](const MovedPlace& place) {
+            cells[place.grain] = place.cell;
+            steps[place.grain] = place.movedStep;
+            written.fetch_add(1, std::memory_order_relaxed);
+        });
+        REQUIRE(written.load() == upkeep.movedPlaceCount());
+        upkeep.clearChanges();
+        for (std::uint32_t id = 0; id < cells.size(); ++id) {
+            REQUIRE(cells[id] == scene.grains().place[id].cell);
+            REQUIRE(steps[id] == std::uint32_t(scene.grains().place[id].movedAtStep));
+        }
+    }
+    CHECK(largest >= 2048); // shared out (SurfaceUpkeep shares 2048 places and more)
 }

@@ -99,6 +99,9 @@ public:
     const StepSettings& settings() const { return settings_; } ///< how steps run
     void setSeed(std::uint64_t seed);   ///< changes the randomness of later steps
     void setThreads(int threads);       ///< 1 or more; the result does not change
+    /// The threads its steps share, or null on one thread. Idle between steps: work that follows
+    /// a step (the surface upkeep, a renderer's stores) may share them too, never during one.
+    WorkerPool* workers() const { return settings_.threads > 1 ? pool_.get() : nullptr; }
     void setSleeping(bool sleeping);    ///< R5 on or off; the result does not change
     /// PH1: switches the rules (level, repose angle, gravity) from the next step on; every grain
     /// starts at rest. Throws std::invalid_argument for settings validatePhysics refuses.

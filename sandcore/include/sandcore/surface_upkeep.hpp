@@ -19,6 +19,7 @@
 #include "sandcore/cell_bits.hpp"
 #include "sandcore/scene.hpp"
 #include "sandcore/vec3.hpp"
+#include "sandcore/worker_pool.hpp"
 
 #include <array>
 #include <cstdint>
@@ -117,6 +118,21 @@ public:
         for (const MovedPlace& place : retainedPlaces_) f(place);
         for (const GrainMove& move : latestMoves_) f(placeOf(move, latestStep_));
     }
+    /// As forEachMovedPlace, with the last update's places shared out among the pool's threads
+    /// (null: all on this one) after the earlier updates' on this one: f is called side by side
+    /// for different grains (the last update lists each grain once), each grain's last place last.
+    template <class F> void forEachMovedPlace(WorkerPool* pool, F&& f) const {
+        for (const MovedPlace& place : retainedPlaces_) f(place);
+        const std::size_t count = latestMoves_.size();
+        const int pieces = pool != nullptr && count >= kPlacesPerPiece ? pool->threadCount() : 1;
+        auto piece = [&](int p) {
+            const std::size_t end = count * std::size_t(p + 1) / std::size_t(pieces);
+            for (std::size_t i = count * std::size_t(p) / std::size_t(pieces); i < end; ++i)
+                f(placeOf(latestMoves_[i], latestStep_));
+        };
+        if (pieces > 1) pool->parallelFor(pieces, piece);
+        else piece(0);
+    }
     /// How many places forEachMovedPlace gives.
     std::size_t movedPlaceCount() const { return retainedPlaces_.size() + latestMoves_.size(); }
     /// Copies the last update's places out of the scene's list of moves, which the scene's next
@@ -145,6 +161,8 @@ private:
         std::uint8_t inner = 0;     // 1 for an inner grain
         std::uint8_t listed = 0;    // bits of the change lists naming it
     };
+    // Fewer places than this are not worth waking another thread for.
+    static constexpr std::size_t kPlacesPerPiece = 2048;
     static std::size_t index(GridLevel level) { return level == GridLevel::Upper ? 1 : 0; }
     static MovedPlace placeOf(const GrainMove& move, std::uint32_t step) {
         return {move.grain, move.cell, move.level == GridLevel::Upper ? 1u : 0u, move.cameFrom, step};
@@ -158,9 +176,17 @@ private:
     void refreshGradient(const Scene& scene, GridLevel level, std::uint32_t cell, std::uint32_t grain);
     void refreshInnerAround(const Scene& scene, GridLevel level, std::uint32_t cell);
     void refreshGradientAround(const Scene& scene, GridLevel level, std::uint32_t cell);
-    void updateHeights(const Scene& scene);
+    void updateHeights(const Scene& scene, WorkerPool* pool);
+    struct GridShare;
+    void updateHeightsOf(const Scene& scene, GridShare& share, std::uint32_t heightsPass, std::uint32_t normalsPass);
     void list(std::uint32_t grain, std::uint8_t bit, std::vector<std::uint32_t>& into);
-    void syncMovedGrains(const Scene& scene);
+    void syncMovedGrains(const Scene& scene, WorkerPool* pool);
+    template <class Part> void forEachShare(WorkerPool* pool, Part&& part);
+    void flipMoves(const Scene& scene, GridShare& share);
+    void flipLeft(GridLevel level, std::uint32_t cell, GridShare& share);
+    void applyNetChanges(GridShare& share);
+    bool inSharedRow(GridLevel level, std::uint32_t cell) const;
+    void setCell(GridLevel level, std::uint32_t cell, bool filled);
     void changeCell(GridLevel level, std::uint32_t cell, bool filled);
     std::int64_t innerAround(GridLevel level, Int3 c) const;
     std::int64_t innerChangeInside(GridLevel level, std::uint32_t cell) const;
@@ -194,16 +220,27 @@ private:
     std::span<const GrainMove> latestMoves_;              // the last update's moves: the scene's list, not copied
     std::uint32_t latestStep_ = 0;                        // the step they moved in (low 32 bits)
     bool placesComplete_ = true;                          // no update's places lost since clearChanges
-    std::vector<ColumnRef> normalCandidates_;             // scratch: columns around changed heights
-    std::vector<ColumnRef> touchedColumns_;               // scratch: columns whose height may have changed
-    std::vector<int> heightsBefore_;                      // scratch: their heights before the step
     std::vector<CellRef> changedCells_;                   // scratch: cells the step filled or emptied, net
     struct NetCell {
         CellRef ref;
         bool filled = false;
     };
-    std::vector<NetCell> netCells_;                       // scratch of syncMovedGrains: the net changes found by flips
-    std::vector<CellRef> fromGrid_;                       // scratch of syncMovedGrains: shared-row cells, synced from the grid
+    // Scratch of an update: what one thread found and did in the grids it owns (with the scene's
+    // threads, one grid each; else one share owns both).
+    struct GridShare {
+        unsigned levels = 3;              // the grids it owns: bit 0 lower, bit 1 upper
+        std::vector<NetCell> net;         // the net changes its flips found
+        std::vector<CellRef> fromGrid;    // shared-row cells, synced from the grid afterwards
+        std::vector<CellRef> otherLeaves; // cells its moves left in a grid it does not own: flipped afterwards
+        std::vector<CellRef> changed;     // the net changes it applied
+        std::vector<NetCell> nearEdge;    // net changes whose inner count reads both grids: applied afterwards
+        std::int64_t innerChange = 0;     // what the changes it applied did to the inner count
+        std::vector<ColumnRef> touchedColumns;   // columns whose height may have changed
+        std::vector<int> heightsBefore;          // their heights before the step
+        std::vector<ColumnRef> normalCandidates; // columns around changed heights
+        std::vector<ColumnRef> changedColumns;   // columns whose normal changed, not yet listed
+    };
+    std::array<GridShare, 2> shares_;
     std::vector<CellRef> changedCellsListed_;             // changedCells_ of every update since clearChanges
 };
 

@@ -374,14 +374,15 @@ std::int64_t GrainGpuStore::uploadColumns(const sandcore::SurfaceUpkeep& surface
     return bytes;
 }
 
-std::int64_t GrainGpuStore::uploadChanges(const sandcore::Scene&, const sandcore::SurfaceUpkeep& surface) {
-    const std::int64_t bytes = persistent_ ? writeChanges(surface) : sendChangesInRuns(surface);
+std::int64_t GrainGpuStore::uploadChanges(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface) {
+    const std::int64_t bytes = persistent_ ? writeChanges(surface, scene.workers()) : sendChangesInRuns(surface);
     return bytes + uploadColumns(surface);
 }
 
 // Persistent mapping: each change is one store into the buffer the GPU reads, in the upkeep's
-// order (a grain moved twice since the last frame ends with its last place).
-std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface) {
+// order (a grain moved twice since the last frame ends with its last place). The places, a cache
+// miss each, are shared with the scene's threads, idle between steps.
+std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface, sandcore::WorkerPool* workers) {
     const std::size_t moved = surface.movedPlaceCount();
     const std::span<const std::uint32_t> flags = surface.changedInnerFlags();
     const std::span<const std::uint32_t> normals = gradientUploaded_ ? surface.changedGradientNormals()
@@ -389,7 +390,7 @@ std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface)
     if (moved == 0 && flags.empty() && normals.empty() && surface.changedCells().empty()) return 0;
     fence_.waitForDraws();
     auto* places = static_cast<GrainPlace*>(places_gpu_.buffer.mapped());
-    surface.forEachMovedPlace([&](const sandcore::MovedPlace& grain) { places[grain.grain] = placeOf(grain); });
+    surface.forEachMovedPlace(workers, [places](const sandcore::MovedPlace& grain) { places[grain.grain] = placeOf(grain); });
     visibleBytes_ = 0;
     for (std::uint32_t id : flags) setVisible(id, !surface.isInner(id));
     auto* packed = static_cast<std::uint32_t*>(normals_gpu_.buffer.mapped());

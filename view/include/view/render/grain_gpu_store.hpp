@@ -107,7 +107,7 @@ private:
     void makeVisibleList(const sandcore::SurfaceUpkeep& surface);
     void setVisible(std::uint32_t grain, bool visible);
     std::int64_t uploadColumns(const sandcore::SurfaceUpkeep& surface);
-    std::int64_t writeChanges(const sandcore::SurfaceUpkeep& surface);
+    std::int64_t writeChanges(const sandcore::SurfaceUpkeep& surface, sandcore::WorkerPool* workers);
     std::int64_t sendChangesInRuns(const sandcore::SurfaceUpkeep& surface);
     void allocate(BufferTexture& texture, std::size_t bytes, const void* data);
     std::int64_t uploadCellBits(const sandcore::SurfaceUpkeep& surface);
