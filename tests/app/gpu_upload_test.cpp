@@ -83,6 +83,50 @@ TEST_CASE("V8: the GPU's display positions equal writeDisplayPositions after ste
     CHECK(host.scene().counters().grainsLower > 0); // grains crossed into the lower grid
 }
 
+TEST_CASE("V8: on 2 threads the places and cell bits, written by both threads, leave the GPU equal to the scene") {
+    if (!testing::requireDisplay("stores shared among threads")) return;
+    std::optional<Application> app = testing::openApplication(hourglassOptions(24, 0), "stores shared among threads");
+    if (!app) return;
+    SceneSettings scene = hourglassSettings(160);
+    scene.step.threads = 2;
+    SceneHost host(scene);
+    SceneRenderer renderer(shaderDirectory());
+    RenderSettings settings;
+    settings.lighting = true; // inner grains drawn and lit: the cell bits path on any GL
+    renderer.setScene(host.scene(), settings.cellSize);
+    host.runSteps(150);
+    renderer.useSurface(&host.surfaceUpkeep(renderer.gpuStore().trackingFor(host.scene(), settings)));
+    requireGpuEqualsCpu(renderer, host.scene(), 1.0f, settings);
+    std::size_t mostMoves = 0, mostChanges = 0;
+    for (int step = 0; step < 4; ++step) {
+        host.runSteps(1);
+        mostMoves = std::max(mostMoves, host.scene().movedGrains().size());
+        mostChanges = std::max(mostChanges, host.surfaceUpkeep(renderer.gpuStore().trackingFor(host.scene(), settings)).changedCells().size());
+        requireGpuEqualsCpu(renderer, host.scene(), 0.5f, settings);
+        REQUIRE(!renderer.stats().fullUpload);
+    }
+    // Enough for both stores to be shared out (2048 places, 1024 changed cells and more).
+    CHECK(mostMoves >= 2048);
+    CHECK(mostChanges >= 1024);
+    // The cell bits the GPU holds are the grids' occupancy, word for word.
+    const GrainGpuStore& store = renderer.gpuStore();
+    REQUIRE(store.flagsFromBits());
+    const std::vector<std::uint32_t> words = store.readCellBits();
+    std::size_t compared = 0;
+    for (int set = 0; set < 4; ++set) {
+        const auto level = set % 2 == 1 ? sandcore::GridLevel::Upper : sandcore::GridLevel::Lower;
+        const sandcore::CellGrid& grid = host.scene().grid(level);
+        const std::size_t first = std::size_t(store.cellBitsOffsets()[std::size_t(set)]);
+        for (std::uint32_t cell = 0; cell < grid.cellCount(); ++cell) {
+            const bool bit = ((words.at(first + cell / 32) >> (cell % 32)) & 1u) != 0;
+            const bool expected = set < 2 ? grid[cell] >= 0 : grid[cell] != sandcore::kEmpty;
+            if (bit != expected) FAIL_CHECK("set " << set << " cell " << cell);
+            ++compared;
+        }
+    }
+    CHECK(compared > 0);
+}
+
 TEST_CASE("V8: every edit that bypasses the step uploads everything, and the GPU then matches the scene") {
     if (!testing::requireDisplay("uploads after edits")) return;
     std::optional<Application> app = testing::openApplication(hourglassOptions(24, 0), "uploads after edits");

@@ -14,6 +14,9 @@ namespace sandglass {
 
 namespace {
 
+// Fewer changed cells than this are not worth waking another thread for.
+constexpr std::size_t kSharedCellChanges = 1024;
+
 constexpr std::uint32_t kNotListed = std::numeric_limits<std::uint32_t>::max();
 
 // Sends the runs of `all` that `changed` marks (runs at most maxGap entries apart joined: the
@@ -197,23 +200,39 @@ std::int64_t GrainGpuStore::uploadCellBits(const sandcore::SurfaceUpkeep& surfac
     return bytes;
 }
 
-// The words holding the cells the upkeep lists as changed, from its bits: into the mapped buffer,
-// or into the copy here and marked for the runs.
-std::int64_t GrainGpuStore::writeCellBitChanges(const sandcore::SurfaceUpkeep& surface) {
+std::vector<std::uint32_t> GrainGpuStore::readCellBits() const {
+    std::vector<std::uint32_t> words(cellBits_gpu_.buffer.size() / 4);
+    glBindBuffer(GL_TEXTURE_BUFFER, cellBits_gpu_.buffer.get());
+    glGetBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(words.size() * 4), words.data());
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    return words;
+}
+
+// The words holding the cells the upkeep lists as changed, from its bits: into the mapped buffer
+// (with the scene's idle threads, one grid each: their words are apart), or into the copy here and
+// marked for the runs.
+std::int64_t GrainGpuStore::writeCellBitChanges(const sandcore::SurfaceUpkeep& surface, sandcore::WorkerPool* workers) {
     if (!bitsMode_) return 0;
     auto* mapped = persistent_ ? static_cast<std::uint32_t*>(cellBits_gpu_.buffer.mapped()) : nullptr;
     std::uint32_t* words = mapped != nullptr ? mapped : cellBitWords_.data();
-    for (const sandcore::CellRef& ref : surface.changedCells()) {
-        const std::size_t grid = ref.level == sandcore::GridLevel::Upper ? 1 : 0;
-        const std::uint32_t word = ref.cell >> 5;
-        const auto grains = std::uint32_t(bitsOffsets_[grid]) + word, hides = std::uint32_t(bitsOffsets_[2 + grid]) + word;
-        words[grains] = surface.grainBits(ref.level).word(word);
-        words[hides] = surface.hideBits(ref.level).word(word);
-        if (mapped != nullptr) continue;
-        changedWords_.mark(grains);
-        changedWords_.mark(hides);
-    }
-    if (mapped != nullptr) return std::int64_t(surface.changedCells().size()) * 8;
+    const std::span<const sandcore::CellRef> changed = surface.changedCells();
+    auto writeGrids = [&](int only) { // only: 0 or 1 for that grid, -1 for both
+        for (const sandcore::CellRef& ref : changed) {
+            const int grid = ref.level == sandcore::GridLevel::Upper ? 1 : 0;
+            if (only >= 0 && grid != only) continue;
+            const std::uint32_t word = ref.cell >> 5;
+            const auto grains = std::uint32_t(bitsOffsets_[std::size_t(grid)]) + word;
+            const auto hides = std::uint32_t(bitsOffsets_[std::size_t(2 + grid)]) + word;
+            words[grains] = surface.grainBits(ref.level).word(word);
+            words[hides] = surface.hideBits(ref.level).word(word);
+            if (mapped != nullptr) continue;
+            changedWords_.mark(grains);
+            changedWords_.mark(hides);
+        }
+    };
+    if (mapped != nullptr && workers != nullptr && changed.size() >= kSharedCellChanges) workers->parallelFor(2, writeGrids);
+    else writeGrids(-1);
+    if (mapped != nullptr) return std::int64_t(changed.size()) * 8;
     return uploadRuns(GL_TEXTURE_BUFFER, cellBits_gpu_.buffer.get(), std::span<const std::uint32_t>(cellBitWords_),
                       changedWords_, 4, runs_, [](std::uint32_t, std::uint32_t) {});
 }
@@ -396,7 +415,7 @@ std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface,
     auto* packed = static_cast<std::uint32_t*>(normals_gpu_.buffer.mapped());
     for (std::uint32_t id : normals) packed[id] = packedByKey_[surface.gradientKeyOf(id)];
     return std::int64_t(moved * sizeof(GrainPlace)) + visibleBytes_ + std::int64_t(normals.size()) * 4 +
-           writeCellBitChanges(surface);
+           writeCellBitChanges(surface, workers);
 }
 
 // Without it: the copies here are brought up to date and the changed entries go up in id order,
@@ -420,7 +439,7 @@ std::int64_t GrainGpuStore::sendChangesInRuns(const sandcore::SurfaceUpkeep& sur
         bytes += uploadRuns(GL_TEXTURE_BUFFER, normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_),
                             changedNormals_, 4, runs_, [](std::uint32_t, std::uint32_t) {});
     }
-    return bytes + writeCellBitChanges(surface);
+    return bytes + writeCellBitChanges(surface, nullptr);
 }
 
 } // namespace sandglass

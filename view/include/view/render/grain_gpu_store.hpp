@@ -97,6 +97,8 @@ public:
     bool flagsFromBits() const { return bitsMode_; }
     /// Word offsets in the cell-bits texture: lower grains, upper grains, lower hides, upper hides.
     const std::array<std::int32_t, 4>& cellBitsOffsets() const { return bitsOffsets_; }
+    /// The words of the cell-bits texture as the GL holds them (read back, to check them).
+    std::vector<std::uint32_t> readCellBits() const;
 
 private:
     struct BufferTexture {
@@ -111,7 +113,7 @@ private:
     std::int64_t sendChangesInRuns(const sandcore::SurfaceUpkeep& surface);
     void allocate(BufferTexture& texture, std::size_t bytes, const void* data);
     std::int64_t uploadCellBits(const sandcore::SurfaceUpkeep& surface);
-    std::int64_t writeCellBitChanges(const sandcore::SurfaceUpkeep& surface);
+    std::int64_t writeCellBitChanges(const sandcore::SurfaceUpkeep& surface, sandcore::WorkerPool* workers);
 
     bool persistent_ = false;
     DrawFence fence_;
