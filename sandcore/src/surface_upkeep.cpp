@@ -430,11 +430,18 @@ bool SurfaceUpkeep::inSharedRow(GridLevel level, std::uint32_t cell) const {
 
 // The two passes of flips for the moves in the grids a share owns.
 void SurfaceUpkeep::flipMoves(const Scene& scene, GridShare& share) {
+    if (share.levels == 1u) return flipMovesOf<0>(scene, share);
+    if (share.levels == 2u) return flipMovesOf<1>(scene, share);
+    flipMovesOf<-1>(scene, share);
+}
+
+// Only: the one grid the share owns (0 lower, 1 upper), or -1 for both; known when compiled, so
+// a share of one grid tests each move's grid once and nothing else about ownership.
+template <int Only> void SurfaceUpkeep::flipMovesOf(const Scene& scene, GridShare& share) {
     const std::span<const GrainMove> moved = latestMoves_;
     const GridShape& lowerShape = shapes_[index(GridLevel::Lower)];
     const std::uint32_t lowerTopFirst = lowerShape.layer * std::uint32_t(lowerShape.size.y - 1);
-    const unsigned levels = share.levels;
-    auto owns = [levels](GridLevel level) { return ((levels >> index(level)) & 1u) != 0; };
+    auto owns = [](GridLevel level) { return Only < 0 || int(index(level)) == Only; };
     auto withinGrid = [&](const GrainMove& move) {
         return move.cameFrom != kNoMove && (move.level != GridLevel::Lower || move.cell < lowerTopFirst);
     };

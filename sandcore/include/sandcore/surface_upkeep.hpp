@@ -183,6 +183,7 @@ private:
     void syncMovedGrains(const Scene& scene, WorkerPool* pool);
     template <class Part> void forEachShare(WorkerPool* pool, Part&& part);
     void flipMoves(const Scene& scene, GridShare& share);
+    template <int Only> void flipMovesOf(const Scene& scene, GridShare& share);
     void flipLeft(GridLevel level, std::uint32_t cell, GridShare& share);
     void applyNetChanges(GridShare& share);
     bool inSharedRow(GridLevel level, std::uint32_t cell) const;
