@@ -172,11 +172,12 @@ void SurfaceUpkeep::setCell(GridLevel level, std::uint32_t cell, bool filled) {
 // (a sum of such steps is the change of the whole update, whatever the order). Here in either
 // grid, across the seam too; applyNetChanges does the cells away from faces and seam cheaper.
 void SurfaceUpkeep::changeCell(GridLevel level, std::uint32_t cell, bool filled) {
-    const Int3 c = shapes_[index(level)].coordinate(cell);
-    const std::int64_t before = trackFlags_ ? 0 : innerAround(level, c);
-    setCell(level, cell, filled);
     changedCells_.push_back({level, cell});
-    if (!trackFlags_) innerCount_ += innerAround(level, c) - before;
+    if (trackFlags_) return setCell(level, cell, filled);
+    const Int3 c = shapes_[index(level)].coordinate(cell);
+    const std::int64_t before = innerAround(level, c);
+    setCell(level, cell, filled);
+    innerCount_ += innerAround(level, c) - before;
 }
 
 // The inner grains among a cell and its 6 world neighbours, in either grid (from the bits).

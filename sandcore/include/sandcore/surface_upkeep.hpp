@@ -114,10 +114,7 @@ public:
     /// now. The last update's places are read from the scene's list of moves (Scene::movedGrains),
     /// not copied: that list holds them until the scene steps again, so whoever steps it again
     /// before clearChanges() calls retainMoves() first (else placesComplete() turns false).
-    template <class F> void forEachMovedPlace(F&& f) const {
-        for (const MovedPlace& place : retainedPlaces_) f(place);
-        for (const GrainMove& move : latestMoves_) f(placeOf(move, latestStep_));
-    }
+    template <class F> void forEachMovedPlace(F&& f) const { forEachMovedPlace(nullptr, f); }
     /// As forEachMovedPlace, with the last update's places shared out among the pool's threads
     /// (null: all on this one) after the earlier updates' on this one: f is called side by side
     /// for different grains (the last update lists each grain once), each grain's last place last.
