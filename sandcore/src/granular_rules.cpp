@@ -5,15 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace sandcore {
 
 namespace {
 
-constexpr std::uint32_t kOne = 1u << 16; // one cell in 16.16 fixed point
 // Fastest fall per step, cells: far below what a MoveCode holds, far above any grid's height.
-constexpr std::uint32_t kMaxFallSpeed = 4096u * kOne;
+constexpr std::uint32_t kMaxFallSpeed = 4096u * kOneCell;
 
 // Stream of the fixed per-cell dither, apart from the per-step streams (the grid levels 0, 1).
 constexpr std::uint64_t kDitherStream = 0x3d;
@@ -46,7 +46,7 @@ double calibratedThresholdSlope(double reposeDegrees) {
 GranularRules::GranularRules(const PhysicsSettings& physics) {
     validatePhysics(physics);
     slope_ = calibratedThresholdSlope(physics.reposeDegrees);
-    gravity_ = std::uint32_t(std::lround(double(physics.gravity) * kOne));
+    gravity_ = std::uint32_t(std::lround(double(physics.gravity) * kOneCell));
     // Steep cones lean towards the grid's axes (the lattice's 45-degree facets are stable there):
     // from about 35 degrees on, thresholds rise towards the diagonals to keep the cone round.
     // Shallow cones stand low along the diagonals (about 24 against 26 degrees at 25): there too
@@ -98,11 +98,44 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
         throughCentreSpans_[bit] = {throughCentre_.size(), list.size()};
         throughCentre_.insert(throughCentre_.end(), list.begin(), list.end());
     }
+    wholeAtLeast_.assign(std::size_t(maxDrop_) + 2, 0);
+    wholeExactly_.assign(std::size_t(maxDrop_) + 2, 0);
+    for (int k = 0; k < kOffsets; ++k) {
+        const std::uint32_t threshold = offsets_[std::size_t(k)].thresholdQ8;
+        for (std::uint32_t d = 0; d <= threshold >> 8; ++d) wholeAtLeast_[d] |= std::uint64_t{1} << k;
+        wholeExactly_[threshold >> 8] |= std::uint64_t{1} << k;
+        restComplement_[std::size_t(k)] = std::uint8_t(255 - (threshold & 255));
+    }
+    for (int r = 0; r < kWindow; ++r)
+        for (unsigned taken = 0; taken < (1u << kWindow); ++taken)
+            for (int k = 0; k < kOffsets; ++k)
+                if ((offsets_[std::size_t(k)].pathMask >> (r * kWindow)) & taken)
+                    blockedBy_[std::size_t(r)][taken] |= std::uint64_t{1} << k;
     for (int bit = 0; bit < kWindow * kWindow; ++bit) {
         throughCellSpans_[std::size_t(bit)].first = throughCell_.size();
         for (int k = 0; k < kOffsets; ++k)
             if (offsets_[std::size_t(k)].pathMask >> bit & 1) throughCell_.push_back(std::uint8_t(k));
         throughCellSpans_[std::size_t(bit)].second = throughCell_.size() - throughCellSpans_[std::size_t(bit)].first;
+    }
+    // The grains beside c, seen from c (bit of the 9x9 columns around it: (dz + 4) * 9 + (dx + 4)).
+    auto setBit9 = [](std::uint64_t (&bits)[2], int dx, int dz) {
+        const int bit = (dz + kGranularReach + 1) * (kWindow + 2) + dx + kGranularReach + 1;
+        bits[bit >> 6] |= std::uint64_t{1} << (bit & 63);
+    };
+    for (int bit = 0; bit < kWindow * kWindow; ++bit) {
+        nearSlideSpans_[std::size_t(bit)].first = nearSlides_.size();
+        const int gx = bit % kWindow - kGranularReach, gz = bit / kWindow - kGranularReach; // the grain, from c
+        if (std::max(std::abs(gx), std::abs(gz)) == 1)
+            for (std::uint8_t k : offsetsThrough((kGranularReach - gz) * kWindow + (kGranularReach - gx))) {
+                const Offset& o = offsets_[k];
+                NearSlide slide;
+                for (int cell = 0; cell < kWindow * kWindow; ++cell)
+                    if (o.pathMask >> cell & 1)
+                        setBit9(slide.path, cell % kWindow - kGranularReach + gx, cell / kWindow - kGranularReach + gz);
+                setBit9(slide.target, o.dx + gx, o.dz + gz);
+                nearSlides_.push_back(slide);
+            }
+        nearSlideSpans_[std::size_t(bit)].second = nearSlides_.size() - nearSlideSpans_[std::size_t(bit)].first;
     }
     for (const Offset& o : offsets_) {
         std::uint64_t path = 0;
@@ -112,6 +145,22 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
                 path |= std::uint64_t{1} << ((qz + kGranularReach) * kWindow + qx + kGranularReach);
             }
         pathsTowardsCentre_[std::size_t((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx)] = path;
+    }
+    // The same paths as tables of whole windows (grainsWithOpenPathThroughCentre, ...TowardsCentre).
+    if (throughCentre_.size() > 64) throw std::logic_error("granular rules: more than 64 paths through a cell");
+    for (int bit = 0; bit < kWindow * kWindow; ++bit) {
+        const auto [first, count] = throughCentreSpans_[std::size_t(bit)];
+        for (std::size_t path = first; path < first + count; ++path) {
+            for (unsigned n = 0; n < 16; ++n)
+                if (n >> (path % 4) & 1) grainsOfThroughPaths_[path / 4][n] |= std::uint64_t{1} << bit;
+            for (int r = 0; r < kWindow; ++r)
+                for (unsigned taken = 0; taken < (1u << kWindow); ++taken)
+                    if ((throughCentre_[path] >> (r * kWindow)) & taken) throughBlockedBy_[std::size_t(r)][taken] |= std::uint64_t{1} << path;
+        }
+        for (int r = 0; r < kWindow; ++r)
+            for (unsigned taken = 0; taken < (1u << kWindow); ++taken)
+                if ((pathsTowardsCentre_[std::size_t(bit)] >> (r * kWindow)) & taken)
+                    towardsBlockedBy_[std::size_t(r)][taken] |= std::uint64_t{1} << bit;
     }
     // Who may gain from an EMPTY cell c, by layer above c (see wakeMask): in c's layer and the one
     // above, every grain of the window; d layers above c, only a grain whose deepest possible
@@ -126,6 +175,39 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
 
 namespace {
 
+// Set bits of a word, without a library call on CPUs the build does not assume to have POPCNT.
+int setBitCount(std::uint64_t v) {
+    v -= (v >> 1) & 0x5555555555555555ull;
+    v = (v & 0x3333333333333333ull) + ((v >> 2) & 0x3333333333333333ull);
+    v = (v + (v >> 4)) & 0x0f0f0f0f0f0f0f0full;
+    return int((v * 0x0101010101010101ull) >> 56);
+}
+
+// Bit k: offset k's dither (byte k of dithers) carries past the rest of its threshold, dither >
+// restComplement[k].
+std::uint64_t carriesOf(const std::uint64_t (&dithers)[GranularRules::kOffsets / 8],
+                        const std::array<std::uint8_t, GranularRules::kOffsets>& restComplement) {
+    static_assert(GranularRules::kOffsets == 48);
+#if defined(__SSE2__)
+    std::uint8_t bytes[GranularRules::kOffsets];
+    std::memcpy(bytes, dithers, sizeof bytes);
+    std::uint64_t notCarried = 0;
+    for (int part = 0; part < 3; ++part) {
+        const __m128i dither = _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + 16 * part));
+        const __m128i rest = _mm_load_si128(reinterpret_cast<const __m128i*>(restComplement.data() + 16 * part));
+        // dither - rest saturates at 0 exactly when dither <= rest: no carry
+        const __m128i none = _mm_cmpeq_epi8(_mm_subs_epu8(dither, rest), _mm_setzero_si128());
+        notCarried |= std::uint64_t(unsigned(_mm_movemask_epi8(none))) << (16 * part);
+    }
+    return ~notCarried & ((std::uint64_t{1} << GranularRules::kOffsets) - 1);
+#else
+    std::uint64_t carried = 0;
+    for (int k = 0; k < GranularRules::kOffsets; ++k)
+        carried |= std::uint64_t((dithers[k >> 3] >> ((k & 7) * 8) & 0xffu) > restComplement[std::size_t(k)]) << k;
+    return carried;
+#endif
+}
+
 // Moves `grain` from cell `from` to cell `to` of the same grid; the outcome carries the offset back
 // (in cells) for the record, which the sweep writes or feeds.
 GranularOutcome moveGrain(CellGrid& grid, CellValue grain, std::uint32_t from, std::uint32_t to, Int3 back, Int3 toCell) {
@@ -137,45 +219,6 @@ GranularOutcome moveGrain(CellGrid& grid, CellValue grain, std::uint32_t from, s
 }
 
 } // namespace
-
-GranularOutcome GranularRules::visit(CellGrid& grid, std::span<FallState> falls, std::uint64_t seed, std::uint64_t step,
-                                     std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z, MotionHints hints) const {
-    const std::uint32_t from = grid.index(x, y, z);
-    const CellValue grain = grid[from];
-    if (grain < 0) return {};
-    const CellValue below = grid[from - grid.layerSize()];
-    if (below == kEmpty) return fall(grid, falls, bottomIsOutlet, x, y, z, from, grain, hints.grain);
-
-    // Most visited grains rest on grains at rest: the hints spare them both states (a cache miss
-    // each, by id).
-    const auto id = std::size_t(grain);
-    if (below >= 0 && hints.below && falls[std::size_t(below)].speed > 0) {
-        // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
-        // so the grain follows at once when the one below moves on (a column flows as one).
-        const std::uint32_t speed = falls[std::size_t(below)].speed;
-        const FallState own = hints.grain ? falls[id] : FallState{};
-        const auto fraction = std::uint16_t(std::min<std::uint32_t>(own.fraction + speed + gravity_ / 2, kOne - 1));
-        // Nothing changed (it waits, a cell of progress gathered, on a grain held at the same
-        // speed): it may sleep, since the one below wakes it when it changes speed or moves. Not
-        // on the outlet row of the upper grid, whose speeds the transition sets without a visit.
-        GranularOutcome outcome;
-        outcome.inMotion = true; // speed > 0
-        if (speed == own.speed && fraction == own.fraction && (y > 1 || !bottomIsOutlet)) {
-            outcome.kind = GranularOutcome::Riding;
-            return outcome;
-        }
-        falls[id] = {speed, fraction};
-        outcome.kind = GranularOutcome::Waiting;
-        return outcome;
-    }
-    if (hints.grain && (falls[id].speed | falls[id].fraction)) { // it was in motion and stops here
-        falls[id] = FallState{};
-        GranularOutcome outcome = slide(grid, seed, step, stream, x, y, z, from, grain, below == kInvalid);
-        outcome.stopped = outcome.kind == GranularOutcome::Resting;
-        return outcome;
-    }
-    return slide(grid, seed, step, stream, x, y, z, from, grain, below == kInvalid);
-}
 
 GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
                                     std::uint32_t from, CellValue grain, bool mayBeMoving) const {
@@ -216,7 +259,6 @@ GranularOutcome GranularRules::slide(CellGrid& grid, std::uint64_t seed, std::ui
     const Int3 size = grid.size();
     const std::int64_t row = size.x, layer = grid.layerSize();
     const CellValue* cells = grid.cells().data();
-    auto at = [&](int dx, int dy, int dz) { return cells[std::int64_t(from) + dy * layer + dz * row + dx]; };
 
     // The 7x7 windows of EMPTY cells in the grain's layer (paths) and the layer below (targets)
     // as bit masks, bit (dz + 3) * 7 + (dx + 3); cells outside the grid count as taken. Away from
@@ -245,35 +287,42 @@ GranularOutcome GranularRules::slide(CellGrid& grid, std::uint64_t seed, std::ui
         if (dz < -1 || dz > 1) emptyHere |= emptyRow(rowOf(dz, 0)) << shift;
         emptyBelow |= emptyRow(rowOf(dz, -1)) << shift;
     }
-    std::uint8_t possible[kOffsets];
-    int count = 0;
-    std::uint64_t dithers[kOffsets / 8]; // 8 bits per offset, each word drawn only when needed
-    std::uint64_t cellHash = 0;
-    unsigned drawn = 0; // bit w: dithers[w] is drawn
-    for (std::uint64_t targets = emptyBelow; targets;) {
-        const int bit = __builtin_ctzll(targets);
-        targets &= targets - 1;
-        const int k = bit < kOffsets / 2 ? bit : bit - 1; // the window's centre has no offset
-        const Offset& o = offsets_[std::size_t(k)];
-        if (o.pathMask & ~emptyHere) continue; // something lies in the way at the grain's level
-        if (onVessel) { // the glass is smoother than the sand: one free cell down is enough
-            possible[count++] = std::uint8_t(k);
-            continue;
+    // The slides open at the grain's level (no taken cell on the path, 7 look-ups) that end over an
+    // EMPTY cell, as bit k for offset k (the window's centre has none: bits above it shift down).
+    constexpr std::uint64_t kBelowCentre = (std::uint64_t{1} << (kOffsets / 2)) - 1;
+    std::uint64_t blocked = 0;
+    for (int r = 0; r < kWindow; ++r)
+        blocked |= blockedBy_[std::size_t(r)][~(emptyHere >> (r * kWindow)) & ((1u << kWindow) - 1)];
+    std::uint64_t open = ((emptyBelow & kBelowCentre) | ((emptyBelow >> 1) & ~kBelowCentre)) & ~blocked;
+    // On the glass (smoother than the sand) one free cell down is enough; on sand the column under
+    // the path's end must be `need` deep, need = max(1, floor((T|e| + dither) / 256)) with a fixed
+    // dither per cell and offset (8 bits each, 8 offsets to a draw). The slides that need d cells
+    // are a mask; layer by layer down, those whose column ends above it drop out.
+    if (!onVessel && (open & (wholeAtLeast_[2] | wholeExactly_[1]))) {
+        const std::uint64_t cellHash = mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
+        std::uint64_t dithers[kOffsets / 8];
+        for (int group = 0; group < kOffsets / 8; ++group)
+            dithers[group] = mix64(cellHash + std::uint64_t(group) * 0x9e3779b97f4a7c15ull);
+        const std::uint64_t carry = carriesOf(dithers, restComplement_);
+        std::uint64_t deep = ~std::uint64_t{0}; // columns EMPTY from layer y - 2 down to layer y - d
+        for (int d = 2; d <= maxDrop_; ++d) {
+            const std::uint64_t needing = (wholeAtLeast_[std::size_t(d)] | (wholeExactly_[std::size_t(d - 1)] & carry)) & open;
+            if (!needing) break; // who needs d + 1 needs d too
+            if (d > y) {         // the column is not that deep inside this grid
+                open &= ~needing;
+                break;
+            }
+            std::uint64_t emptyThere = 0;
+            for (int dz = dzMin; dz <= dzMax; ++dz) emptyThere |= emptyRow(rowOf(dz, -d)) << ((dz + kGranularReach) * kWindow);
+            deep &= (emptyThere & kBelowCentre) | ((emptyThere >> 1) & ~kBelowCentre);
+            open &= ~(needing & ~deep);
         }
-        if (!drawn) cellHash = mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
-        if (!(drawn >> (k >> 3) & 1u)) {
-            dithers[k >> 3] = mix64(cellHash + std::uint64_t(k >> 3) * 0x9e3779b97f4a7c15ull);
-            drawn |= 1u << (k >> 3);
-        }
-        const std::uint32_t dither = std::uint32_t(dithers[k >> 3] >> ((k & 7) * 8)) & 0xffu;
-        const int need = std::max(1, int((o.thresholdQ8 + dither) >> 8));
-        if (need > y) continue; // the column is not that deep inside this grid
-        int depth = 1;
-        while (depth < need && at(o.dx, -1 - depth, o.dz) == kEmpty) ++depth;
-        if (depth >= need) possible[count++] = std::uint8_t(k);
     }
-    if (count == 0) return {};
-    const Offset& o = offsets_[possible[pickBelow(counterRandom(seed, step, stream, from), std::uint32_t(count))]];
+    if (!open) return {};
+    // The n-th possible slide in ascending offset order, n drawn by a counter hash (R3).
+    const auto count = std::uint32_t(setBitCount(open));
+    for (std::uint32_t n = pickBelow(counterRandom(seed, step, stream, from), count); n > 0; --n) open &= open - 1;
+    const Offset& o = offsets_[std::size_t(__builtin_ctzll(open))];
     const std::uint32_t to = std::uint32_t(std::int64_t(from) - layer + o.dz * row + o.dx);
     return moveGrain(grid, grain, from, to, {-o.dx, 1, -o.dz}, {x + o.dx, y - 1, z + o.dz});
 }

@@ -36,6 +36,9 @@
 
 namespace sandcore {
 
+/// One cell in the 16.16 fixed point of fall speeds and fractions.
+inline constexpr std::uint32_t kOneCell = 1u << 16;
+
 /// How far sideways a granular grain may slide, cells (Chebyshev distance).
 inline constexpr int kGranularReach = 3;
 
@@ -91,11 +94,46 @@ public:
         const auto& [first, count] = throughCentreSpans_[std::size_t(bit)];
         return {throughCentre_.data() + first, count};
     }
+    /// Of the grains two or three columns from an EMPTY cell c of their own layer (window bits as in
+    /// wakeMask), those with a slide across c whose path is EMPTY from them up to c (some path of
+    /// pathsThroughCentre inside `clear`, the EMPTY cells of the layer's window around c). Seven
+    /// look-ups find the blocked paths, fourteen the grains of those left.
+    std::uint64_t grainsWithOpenPathThroughCentre(std::uint64_t clear) const {
+        std::uint64_t blocked = 0;
+        for (int r = 0; r < kWindow; ++r)
+            blocked |= throughBlockedBy_[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
+        const std::uint64_t open = ~blocked;
+        std::uint64_t grains = 0;
+        for (int nibble = 0; nibble < 16; ++nibble)
+            grains |= grainsOfThroughPaths_[std::size_t(nibble)][(open >> (4 * nibble)) & 15];
+        return grains;
+    }
+    /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
+    /// column crosses only EMPTY cells at their level (pathTowardsCentre inside `clear`, as above).
+    std::uint64_t grainsWithOpenPathTowardsCentre(std::uint64_t clear) const {
+        std::uint64_t blocked = 0;
+        for (int r = 0; r < kWindow; ++r)
+            blocked |= towardsBlockedBy_[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
+        return ~blocked & ((std::uint64_t{1} << (kWindow * kWindow)) - 1);
+    }
     /// The slides whose path at the grain's level crosses window cell `bit` (as in wakeMask, seen
     /// from the grain): their indices into offset().
     std::span<const std::uint8_t> offsetsThrough(int bit) const {
         const auto& [first, count] = throughCellSpans_[std::size_t(bit)];
         return {throughCell_.data() + first, count};
+    }
+    /// A slide of a grain beside an EMPTY cell c whose path crosses c, seen from c: its path's
+    /// cells and its target, as bits (dz + 4) * 9 + (dx + 4) of the 9x9 columns around c (81 bits:
+    /// two words, bits 64..80 in the second).
+    struct NearSlide {
+        std::uint64_t path[2] = {0, 0}; ///< the cells of the grain's layer it crosses (c included)
+        std::uint64_t target[2] = {0, 0}; ///< the cell of the layer below it ends in (one bit)
+    };
+    /// The slides of the grain at window bit `bit` (as in wakeMask, one of the 8 around c) whose
+    /// path crosses c: offsetsThrough seen from c, so a wake tests each with two masks.
+    std::span<const NearSlide> nearSlidesThroughCentre(int bit) const {
+        const auto& [first, count] = nearSlideSpans_[std::size_t(bit)];
+        return {nearSlides_.data() + first, count};
     }
     /// g in cells per step squared, 16.16 fixed point.
     std::uint32_t gravity() const { return gravity_; }
@@ -121,6 +159,15 @@ private:
                           int z, std::uint32_t from, CellValue grain, bool onVessel) const;
 
     std::array<Offset, kOffsets> offsets_{};
+    // blockedBy_[r][taken]: the slides (bit k for offset k) whose path crosses one of the cells
+    // `taken` (7 bits) of row r of the window, so a window's blocked slides are 7 look-ups.
+    std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow> blockedBy_{};
+    // A slide's need is floor((T|e| in 1/256 cells + dither) / 256): the whole part of T|e|
+    // plus a carry when the dither reaches past the rest. wholeAtLeast_[d]: the slides whose whole
+    // part is d or more; wholeExactly_[d]: exactly d; restComplement_[k]: 255 minus the rest, so
+    // the carry is dither > restComplement_[k].
+    std::vector<std::uint64_t> wholeAtLeast_, wholeExactly_;
+    alignas(16) std::array<std::uint8_t, kOffsets> restComplement_{};
     double slope_ = 0;
     int maxDrop_ = 1;
     std::uint32_t gravity_ = 0;
@@ -130,7 +177,55 @@ private:
     std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCentreSpans_{}; // first, count
     std::vector<std::uint8_t> throughCell_;                                                   // offsetsThrough, all bits
     std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCellSpans_{};   // first, count
+    // The paths of pathsThroughCentre, all grains, as bits 0..63 (there are 56): throughBlockedBy_[r]
+    // [taken] those crossing a taken cell of window row r, grainsOfThroughPaths_[i][n] the grains
+    // of the paths 4i..4i+3 that n holds. towardsBlockedBy_[r][taken]: the grains whose
+    // pathTowardsCentre crosses a taken cell of row r.
+    std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow> throughBlockedBy_{}, towardsBlockedBy_{};
+    std::array<std::array<std::uint64_t, 16>, 16> grainsOfThroughPaths_{};
+    std::vector<NearSlide> nearSlides_;                                                         // nearSlidesThroughCentre, all bits
+    std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> nearSlideSpans_{};     // first, count
 };
+
+// Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.
+inline GranularOutcome GranularRules::visit(CellGrid& grid, std::span<FallState> falls, std::uint64_t seed, std::uint64_t step,
+                                     std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z, MotionHints hints) const {
+    const std::uint32_t from = grid.index(x, y, z);
+    const CellValue grain = grid[from];
+    if (grain < 0) return {};
+    const CellValue below = grid[from - grid.layerSize()];
+    if (below == kEmpty) return fall(grid, falls, bottomIsOutlet, x, y, z, from, grain, hints.grain);
+
+    // Most visited grains rest on grains at rest: the hints spare them both states (a cache miss
+    // each, by id).
+    const auto id = std::size_t(grain);
+    if (below >= 0 && hints.below && falls[std::size_t(below)].speed > 0) {
+        // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
+        // so the grain follows at once when the one below moves on (a column flows as one).
+        const std::uint32_t speed = falls[std::size_t(below)].speed;
+        const FallState own = hints.grain ? falls[id] : FallState{};
+        const auto fraction = std::uint16_t(std::min<std::uint32_t>(own.fraction + speed + gravity_ / 2, kOneCell - 1));
+        // Nothing changed (it waits, a cell of progress gathered, on a grain held at the same
+        // speed): it may sleep, since the one below wakes it when it changes speed or moves. Not
+        // on the outlet row of the upper grid, whose speeds the transition sets without a visit.
+        GranularOutcome outcome;
+        outcome.inMotion = true; // speed > 0
+        if (speed == own.speed && fraction == own.fraction && (y > 1 || !bottomIsOutlet)) {
+            outcome.kind = GranularOutcome::Riding;
+            return outcome;
+        }
+        falls[id] = {speed, fraction};
+        outcome.kind = GranularOutcome::Waiting;
+        return outcome;
+    }
+    if (hints.grain && (falls[id].speed | falls[id].fraction)) { // it was in motion and stops here
+        falls[id] = FallState{};
+        GranularOutcome outcome = slide(grid, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+        outcome.stopped = outcome.kind == GranularOutcome::Resting;
+        return outcome;
+    }
+    return slide(grid, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+}
 
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the
 /// grains find the low-threshold paths, so T lies above tan of the angle).

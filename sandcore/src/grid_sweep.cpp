@@ -148,6 +148,19 @@ std::uint64_t emptyInWindow(const CellGrid& grid, int x, int y, int z) {
 // 9 rows of 9: the 7x7 window of each grain beside (x, z) lies inside.
 using EmptyRows9 = std::array<std::uint16_t, 9>;
 
+// The 9 rows as one mask of 81 bits, bit r * 9 + i for bit i of row r (bits 64..80 in the second word).
+using Window9 = std::array<std::uint64_t, 2>;
+Window9 packed(const EmptyRows9& rows) {
+    Window9 bits{};
+    for (int r = 0; r < 9; ++r) {
+        const int at = r * 9;
+        const auto row = std::uint64_t(rows[std::size_t(r)]);
+        if (at < 64) bits[0] |= row << at; // row 7 spills over, row 8 lies in the second word
+        if (at + 9 > 64) bits[1] |= at >= 64 ? row << (at - 64) : row >> (64 - at);
+    }
+    return bits;
+}
+
 // The 7x7 window (bit (dz + 3) * 7 + (dx + 3)) around the cell (dx, dz) away from the centre of
 // `rows`, |dx|, |dz| <= 1.
 std::uint64_t windowIn(const EmptyRows9& rows, int dx, int dz) {
@@ -192,46 +205,37 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         grains |= ((bits << dropped) & ((1u << window) - 1)) << ((zz - z + reach) * window);
     }
     std::uint64_t woken = granular_->wakeMask(layersAbove) & grains;
+    if (!woken) return; // most calls: every grain around is awake already, or none is there
     std::uint64_t clear = 0; // the EMPTY cells of this layer's window around (x, z), once read
     bool clearRead = false;
     if (layersAbove == 0 && (woken & kWindowCentre)) {
         // A grain beside (x, z) gains only through a slide whose path crosses (x, z), is EMPTY all
         // along and ends over an EMPTY cell of the layer below (when the target or a cell of the
-        // path empties later, or the column there deepens, that wakes it).
+        // path empties later, or the column there deepens, that wakes it). Each such slide is two
+        // masks of the 9x9 columns around (x, z) (GranularRules::nearSlidesThroughCentre).
         const EmptyRows9 here = emptyRowsAround<kGranularReach + 1>(grid, x, y, z),
                           below = emptyRowsAround<kGranularReach + 1>(grid, x, y - 1, z);
+        const Window9 hereCells = packed(here), belowCells = packed(below);
         clear = windowIn(here, 0, 0);
         clearRead = true;
         for (std::uint64_t near = woken & kWindowCentre; near; near &= near - 1) {
             const int bit = __builtin_ctzll(near);
-            const int dx = bit % window - reach, dz = bit / window - reach;
-            const std::uint64_t pathCells = windowIn(here, dx, dz), targets = windowIn(below, dx, dz);
-            const auto slides = granular_->offsetsThrough((reach - dz) * window + (reach - dx)); // (x, z) seen from it
-            const bool gains = std::any_of(slides.begin(), slides.end(), [&](std::uint8_t k) {
-                const GranularRules::Offset& o = granular_->offset(k);
-                return !(o.pathMask & ~pathCells) && (targets >> ((o.dz + reach) * window + o.dx + reach) & 1);
+            const auto slides = granular_->nearSlidesThroughCentre(bit);
+            const bool gains = std::any_of(slides.begin(), slides.end(), [&](const GranularRules::NearSlide& slide) {
+                return !((slide.path[0] & ~hereCells[0]) | (slide.path[1] & ~hereCells[1])) &&
+                       ((slide.target[0] & belowCells[0]) | (slide.target[1] & belowCells[1]));
             });
             if (!gains) woken &= ~(std::uint64_t{1} << bit);
         }
     }
     if (woken & ~kWindowCentre) {
+        // A grain two or three columns away gains, in (x, z)'s layer, only through a path across
+        // (x, z) that is EMPTY from it up to (x, z) (the rest of the path is its own business: when
+        // a cell of it empties later, that wakes it); in the layers above, only when its sideways
+        // path towards the column is EMPTY.
         if (!clearRead) clear = emptyInWindow(grid, x, y, z);
-        if (layersAbove == 0) {
-            // A grain two or three columns away gains only through a path across (x, z) that is
-            // EMPTY from it up to (x, z) (the rest of the path is its own business: when a cell of
-            // it empties later, that wakes it).
-            for (std::uint64_t far = woken & ~kWindowCentre; far; far &= far - 1) {
-                const int bit = __builtin_ctzll(far);
-                const auto paths = granular_->pathsThroughCentre(bit);
-                if (std::none_of(paths.begin(), paths.end(), [&](std::uint64_t path) { return !(path & ~clear); }))
-                    woken &= ~(std::uint64_t{1} << bit);
-            }
-        } else {
-            for (std::uint64_t far = woken & ~kWindowCentre; far; far &= far - 1) {
-                const int bit = __builtin_ctzll(far);
-                if (granular_->pathTowardsCentre(bit) & ~clear) woken &= ~(std::uint64_t{1} << bit);
-            }
-        }
+        woken &= kWindowCentre | (layersAbove == 0 ? granular_->grainsWithOpenPathThroughCentre(clear)
+                                                   : granular_->grainsWithOpenPathTowardsCentre(clear));
     }
     for (int zz = z0; zz <= z1; ++zz) {
         const std::uint64_t rowMask = ((woken >> ((zz - z + reach) * window)) & ((1u << window) - 1)) >> dropped;
