@@ -254,39 +254,22 @@ GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, 
     return outcome;
 }
 
-GranularOutcome GranularRules::slide(CellGrid& grid, std::uint64_t seed, std::uint64_t step, std::uint64_t stream, int x,
-                                     int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const {
-    const Int3 size = grid.size();
-    const std::int64_t row = size.x, layer = grid.layerSize();
-    const CellValue* cells = grid.cells().data();
-
-    // The 7x7 windows of EMPTY cells in the grain's layer (paths) and the layer below (targets)
-    // as bit masks, bit (dz + 3) * 7 + (dx + 3); cells outside the grid count as taken. Away from
-    // the grid's sides each row of the window is 8 cells read at once.
-    const bool inside = x >= kGranularReach && x + kGranularReach + 1 < size.x && z >= kGranularReach &&
-                        z + kGranularReach < size.z;
-    const int dzMin = std::max(-kGranularReach, -z), dzMax = std::min(kGranularReach, size.z - 1 - z);
-    const int dxMin = std::max(-kGranularReach, -x), dxMax = std::min(kGranularReach, size.x - 1 - x);
-    auto emptyRow = [&](const CellValue* centre) -> std::uint64_t {
-        if (inside) return emptyBitsOf8(centre - kGranularReach) & ((1u << kWindow) - 1);
-        std::uint64_t bits = 0;
-        for (int dx = dxMin; dx <= dxMax; ++dx) bits |= std::uint64_t(centre[dx] == kEmpty) << (dx + kGranularReach);
-        return bits;
-    };
-    auto rowOf = [&](int dz, int dy) { return cells + (std::int64_t(from) + dy * layer + dz * row); };
+GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty, std::uint64_t seed, std::uint64_t step,
+                                     std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain,
+                                     bool onVessel) const {
+    const std::int64_t row = grid.size().x, layer = grid.layerSize();
+    // The 7x7 windows of EMPTY cells in the grain's layer (paths) and the layers below (targets,
+    // columns) as bit masks, bit (dz + 3) * 7 + (dx + 3); cells outside the grid count as taken.
+    auto emptyRow = [&](int dz, int dy) -> std::uint64_t { return empty.span(x - kGranularReach, y + dy, z + dz, kWindow); };
+    auto emptyWindow = [&](int dy) { return empty.window<kGranularReach>(x, y + dy, z); };
     // Every path starts in one of the 8 cells around the grain: when all are taken (inside the
     // bulk), nothing can slide and the rest of the window need not be read.
     std::uint64_t emptyHere = 0;
-    for (int dz = std::max(-1, dzMin); dz <= std::min(1, dzMax); ++dz)
-        emptyHere |= emptyRow(rowOf(dz, 0)) << ((dz + kGranularReach) * kWindow);
+    for (int dz = -1; dz <= 1; ++dz) emptyHere |= emptyRow(dz, 0) << ((dz + kGranularReach) * kWindow);
     constexpr std::uint64_t kAround = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x14} << 21) | (std::uint64_t{0x1c} << 28);
     if (!(emptyHere & kAround)) return {};
-    std::uint64_t emptyBelow = 0;
-    for (int dz = dzMin; dz <= dzMax; ++dz) {
-        const int shift = (dz + kGranularReach) * kWindow;
-        if (dz < -1 || dz > 1) emptyHere |= emptyRow(rowOf(dz, 0)) << shift;
-        emptyBelow |= emptyRow(rowOf(dz, -1)) << shift;
-    }
+    emptyHere = emptyWindow(0);
+    const std::uint64_t emptyBelow = emptyWindow(-1);
     // The slides open at the grain's level (no taken cell on the path, 7 look-ups) that end over an
     // EMPTY cell, as bit k for offset k (the window's centre has none: bits above it shift down).
     constexpr std::uint64_t kBelowCentre = (std::uint64_t{1} << (kOffsets / 2)) - 1;
@@ -312,8 +295,7 @@ GranularOutcome GranularRules::slide(CellGrid& grid, std::uint64_t seed, std::ui
                 open &= ~needing;
                 break;
             }
-            std::uint64_t emptyThere = 0;
-            for (int dz = dzMin; dz <= dzMax; ++dz) emptyThere |= emptyRow(rowOf(dz, -d)) << ((dz + kGranularReach) * kWindow);
+            const std::uint64_t emptyThere = emptyWindow(-d);
             deep &= (emptyThere & kBelowCentre) | ((emptyThere >> 1) & ~kBelowCentre);
             open &= ~(needing & ~deep);
         }

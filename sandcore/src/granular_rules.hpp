@@ -24,6 +24,7 @@
 // below it; cells of its own layer within 3 columns (the paths); and the 7x7 columns of the
 // layers up to maxDrop() below it.
 
+#include "empty_cells.hpp"
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
 #include "sandcore/physics_settings.hpp"
@@ -75,8 +76,11 @@ public:
     /// states of this grid's grains (GrainStore::fall of its level). A move changes the grid's
     /// cells only: the caller writes the grain's record from the outcome. hints: which fall states
     /// are known to be zero (the result is the same; only fewer states are read).
-    GranularOutcome visit(CellGrid& grid, std::span<FallState> falls, std::uint64_t seed, std::uint64_t step,
-                          std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z, MotionHints hints = {}) const;
+    /// `from`: the cell's index, grid.index(x, y, z); `empty`: the grid's EMPTY cells as bits, up
+    /// to date (the slides read their windows there; the caller updates them after a move).
+    GranularOutcome visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls, std::uint64_t seed,
+                          std::uint64_t step, std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z,
+                          std::uint32_t from, MotionHints hints = {}) const;
 
     /// Deepest column a slide ever looks into, cells below the grain's layer.
     int maxDrop() const { return maxDrop_; }
@@ -155,8 +159,8 @@ public:
 private:
     GranularOutcome fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
                          std::uint32_t from, CellValue grain, bool mayBeMoving) const;
-    GranularOutcome slide(CellGrid& grid, std::uint64_t seed, std::uint64_t step, std::uint64_t stream, int x, int y,
-                          int z, std::uint32_t from, CellValue grain, bool onVessel) const;
+    GranularOutcome slide(CellGrid& grid, const EmptyCellBits& empty, std::uint64_t seed, std::uint64_t step,
+                          std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const;
 
     std::array<Offset, kOffsets> offsets_{};
     // blockedBy_[r][taken]: the slides (bit k for offset k) whose path crosses one of the cells
@@ -188,9 +192,9 @@ private:
 };
 
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.
-inline GranularOutcome GranularRules::visit(CellGrid& grid, std::span<FallState> falls, std::uint64_t seed, std::uint64_t step,
-                                     std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z, MotionHints hints) const {
-    const std::uint32_t from = grid.index(x, y, z);
+inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls,
+                                            std::uint64_t seed, std::uint64_t step, std::uint64_t stream, bool bottomIsOutlet,
+                                            int x, int y, int z, std::uint32_t from, MotionHints hints) const {
     const CellValue grain = grid[from];
     if (grain < 0) return {};
     const CellValue below = grid[from - grid.layerSize()];
@@ -220,11 +224,11 @@ inline GranularOutcome GranularRules::visit(CellGrid& grid, std::span<FallState>
     }
     if (hints.grain && (falls[id].speed | falls[id].fraction)) { // it was in motion and stops here
         falls[id] = FallState{};
-        GranularOutcome outcome = slide(grid, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+        GranularOutcome outcome = slide(grid, empty, seed, step, stream, x, y, z, from, grain, below == kInvalid);
         outcome.stopped = outcome.kind == GranularOutcome::Resting;
         return outcome;
     }
-    return slide(grid, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+    return slide(grid, empty, seed, step, stream, x, y, z, from, grain, below == kInvalid);
 }
 
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the

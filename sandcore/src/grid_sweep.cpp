@@ -53,6 +53,29 @@ GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
 void GridSweep::setGranular(const GranularRules* granular) {
     granular_ = granular;
     inMotion_.assign(granular ? words_.size() : 0, 0);
+    if (granular) empty_.resize(size_); // every cell taken until readEmptyCells
+}
+
+void GridSweep::readEmptyCells(const CellGrid& grid) {
+    if (granular_) empty_.read(grid);
+}
+
+bool GridSweep::emptyCellsMatch(const CellGrid& grid) const { return !granular_ || empty_.matches(grid); }
+
+void GridSweep::grainEntered(int x, int y, int z) {
+    if (granular_) empty_.setEmpty(x, y, z, false);
+    if (y > 0 || bottomIsOutlet_) wakeAt(x, y, z);
+}
+
+void GridSweep::grainEntered(std::uint32_t cell) {
+    const std::uint32_t x = cell % std::uint32_t(size_.x), rest = cell / std::uint32_t(size_.x);
+    grainEntered(int(x), int(rest / std::uint32_t(size_.z)), int(rest % std::uint32_t(size_.z)));
+}
+
+void GridSweep::cellBlocked(std::uint32_t cell) {
+    if (!granular_) return;
+    const std::uint32_t x = cell % std::uint32_t(size_.x), rest = cell / std::uint32_t(size_.x);
+    empty_.setEmpty(int(x), int(rest / std::uint32_t(size_.z)), int(rest % std::uint32_t(size_.z)), false);
 }
 
 void GridSweep::markInMotion(int x, int y, int z) {
@@ -110,43 +133,8 @@ constexpr int kGranularWindow = 2 * kGranularReach + 1;
 // The 3x3 cells around the window's centre: a grain there has the emptied cell beside it.
 constexpr std::uint64_t kWindowCentre = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x1c} << 21) | (std::uint64_t{0x1c} << 28);
 
-// The EMPTY cells of layer y within Reach columns of (x, z), row by row (z - Reach first), bit i
-// of a row for x - Reach + i; cells outside the grid count as taken. Away from the grid's sides a
-// row is read 8 cells at a time, with no bounds tests.
-template <int Reach> std::array<std::uint16_t, 2 * Reach + 1> emptyRowsAround(const CellGrid& grid, int x, int y, int z) {
-    constexpr int width = 2 * Reach + 1;
-    static_assert(width <= 16);
-    const Int3 size = grid.size();
-    const bool inside = x >= Reach && x - Reach + std::max(width, 8) <= size.x;
-    std::array<std::uint16_t, width> rows{};
-    for (int r = 0; r < width; ++r) {
-        const int zz = z - Reach + r;
-        if (zz < 0 || zz >= size.z) continue;
-        const CellValue* row = grid.cells().data() + grid.index(0, y, zz);
-        unsigned bits = 0;
-        if (inside) {
-            bits = emptyBitsOf8(row + (x - Reach));
-            for (int i = 8; i < width; ++i) bits |= unsigned(row[x - Reach + i] == kEmpty) << i;
-        } else {
-            for (int xx = std::max(x - Reach, 0); xx <= std::min(x + Reach, size.x - 1); ++xx)
-                bits |= unsigned(row[xx] == kEmpty) << (xx - x + Reach);
-        }
-        rows[std::size_t(r)] = std::uint16_t(bits & ((1u << width) - 1));
-    }
-    return rows;
-}
-
-// The EMPTY cells of layer y within 3 columns of (x, z), as a 7x7 window mask (bit (dz + 3) * 7 +
-// (dx + 3)).
-std::uint64_t emptyInWindow(const CellGrid& grid, int x, int y, int z) {
-    const auto rows = emptyRowsAround<kGranularReach>(grid, x, y, z);
-    std::uint64_t mask = 0;
-    for (int r = 0; r < kGranularWindow; ++r) mask |= std::uint64_t(rows[std::size_t(r)]) << (r * kGranularWindow);
-    return mask;
-}
-
 // 9 rows of 9: the 7x7 window of each grain beside (x, z) lies inside.
-using EmptyRows9 = std::array<std::uint16_t, 9>;
+using EmptyRows9 = std::uint16_t[9];
 
 // The 9 rows as one mask of 81 bits, bit r * 9 + i for bit i of row r (bits 64..80 in the second word).
 using Window9 = std::array<std::uint64_t, 2>;
@@ -185,7 +173,7 @@ std::uint64_t windowIn(const EmptyRows9& rows, int dx, int dz) {
 // of layer y or below, no grain can enter those cells before they are visited in this step
 // (grains only move down, and layer y and those above have not been swept yet), and one that
 // enters later is woken by its move.
-void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove) {
+void GridSweep::wakeGrainsAround(int x, int y, int z, int layersAbove) {
     constexpr int reach = kGranularReach, window = kGranularWindow;
     const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
     const std::size_t layerRow = std::size_t(y) * std::size_t(size_.z);
@@ -213,8 +201,9 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         // along and ends over an EMPTY cell of the layer below (when the target or a cell of the
         // path empties later, or the column there deepens, that wakes it). Each such slide is two
         // masks of the 9x9 columns around (x, z) (GranularRules::nearSlidesThroughCentre).
-        const EmptyRows9 here = emptyRowsAround<kGranularReach + 1>(grid, x, y, z),
-                          below = emptyRowsAround<kGranularReach + 1>(grid, x, y - 1, z);
+        EmptyRows9 here, below;
+        empty_.rowsAround<kGranularReach + 1>(x, y, z, here);
+        empty_.rowsAround<kGranularReach + 1>(x, y - 1, z, below);
         const Window9 hereCells = packed(here), belowCells = packed(below);
         clear = windowIn(here, 0, 0);
         clearRead = true;
@@ -233,7 +222,7 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         // (x, z) that is EMPTY from it up to (x, z) (the rest of the path is its own business: when
         // a cell of it empties later, that wakes it); in the layers above, only when its sideways
         // path towards the column is EMPTY.
-        if (!clearRead) clear = emptyInWindow(grid, x, y, z);
+        if (!clearRead) clear = empty_.window<kGranularReach>(x, y, z);
         woken &= kWindowCentre | (layersAbove == 0 ? granular_->grainsWithOpenPathThroughCentre(clear)
                                                    : granular_->grainsWithOpenPathTowardsCentre(clear));
     }
@@ -256,14 +245,14 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
 // the first cell of it that is not EMPTY ends the search (only the grain in it, when it lies right
 // above (x, y, z), can gain: it may fall).
 void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
-    if (y > 0) wakeGrainsAround(grid, x, y, z, 0); // layer 0 only falls or transitions
+    if (y > 0) wakeGrainsAround(x, y, z, 0); // layer 0 only falls or transitions
     const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
     for (int layer = y + 1; layer <= top; ++layer) {
         if (grid.at(x, layer, z) != kEmpty) {
             if (layer == y + 1 && grid.at(x, layer, z) >= 0) wakeAt(x, layer, z);
             break;
         }
-        wakeGrainsAround(grid, x, layer, z, layer - y);
+        wakeGrainsAround(x, layer, z, layer - y);
     }
 }
 
@@ -275,10 +264,12 @@ void GridSweep::wakeAroundEmptied(const CellGrid& grid, int x, int y, int z) {
 }
 
 template <bool Granular> inline void GridSweep::wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z) {
-    if constexpr (Granular)
+    if constexpr (Granular) {
+        empty_.setEmpty(x, y, z, true);
         wakeForGranular(grid, x, y, z);
-    else
+    } else {
         wakePredecessorsOf(x, y, z);
+    }
     if (!above_ || y != size_.y - 1) return;
     if (deferWakesAbove_)
         deferredWakesAbove_.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
@@ -406,21 +397,25 @@ inline void GridSweep::record(const SweepContext& context, StripLog& log, const 
     (context.movedList ? *context.movedList : log.moved).push_back(move);
 }
 
-bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z) {
+// row: y * sizeZ + z; rowStart: the index of cell (0, y, z). The strip loop has both.
+inline bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z, std::uint32_t row,
+                                     std::uint32_t rowStart) {
     // The occupied bits are kept as the classic visit keeps them, so the granular wakes can AND
     // with them instead of reading cells.
-    const std::size_t word = (std::size_t(y) * std::size_t(size_.z) + std::size_t(z)) * std::size_t(rowWords_) + std::size_t(x >> 6);
+    const std::size_t layerWords = std::size_t(size_.z) * std::size_t(rowWords_);
+    const std::size_t word = std::size_t(row) * std::size_t(rowWords_) + std::size_t(x >> 6);
     const std::uint64_t bit = std::uint64_t{1} << (x & 63);
-    if (context.grid.at(x, y, z) < 0) {
+    const std::uint32_t from = rowStart + std::uint32_t(x);
+    const CellValue* cells = context.grid.cells().data();
+    if (cells[from] < 0) {
         words_[word].occupied &= ~bit;
         return false;
     }
     // The grain below is in the same column of the layer below: the same bit, one layer's words back.
-    const std::size_t wordBelow = word - std::size_t(size_.z) * std::size_t(rowWords_);
-    const MotionHints hints{(inMotion_[word] & bit) != 0, (inMotion_[wordBelow] & bit) != 0};
+    const MotionHints hints{(inMotion_[word] & bit) != 0, (inMotion_[word - layerWords] & bit) != 0};
     const GranularOutcome outcome =
-        granular_->visit(context.grid, context.grains.fall[std::size_t(context.level)], context.seed, context.step,
-                         std::uint64_t(context.level), bottomIsOutlet_, x, y, z, hints);
+        granular_->visit(context.grid, empty_, context.grains.fall[std::size_t(context.level)], context.seed, context.step,
+                         std::uint64_t(context.level), bottomIsOutlet_, x, y, z, from, hints);
     // The bit follows the grain's state: cleared where it was, set where it is when in motion.
     if (outcome.kind == GranularOutcome::Moved) {
         inMotion_[word] &= ~bit;
@@ -429,16 +424,25 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
         inMotion_[word] ^= bit;
     }
     if (outcome.kind == GranularOutcome::Waiting || outcome.stopped) {
-        if (outcome.kind == GranularOutcome::Waiting) wakeAt(x, y, z); // in motion: visited again next step
+        if (outcome.kind == GranularOutcome::Waiting) { // in motion: visited again next step
+            words_[word].awake |= bit;
+            words_[word].occupied |= bit;
+            rowAwake_[row] = 1;
+        }
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
         // speed changed without a cell emptying, so the grain above must look again.
-        if (y + 1 < size_.y && context.grid.at(x, y + 1, z) >= 0) wakeAt(x, y + 1, z);
+        if (y + 1 < size_.y && cells[from + context.grid.layerSize()] >= 0) {
+            words_[word + layerWords].awake |= bit;
+            words_[word + layerWords].occupied |= bit;
+            rowAwake_[row + std::uint32_t(size_.z)] = 1;
+        }
     }
     if (outcome.kind != GranularOutcome::Moved) return false;
     words_[word].occupied &= ~bit; // every move goes down at least a layer: the cell it left is EMPTY
     const Int3 to = outcome.to;
     const std::uint32_t toCell = context.grid.index(to.x, to.y, to.z);
-    record(context, log, {std::uint32_t(context.grid[toCell]), toCell, outcome.cameFrom, context.level});
+    empty_.setEmpty(to.x, to.y, to.z, false); // the cell it left is marked EMPTY by wakeAroundEmptiedBy
+    record(context, log, {std::uint32_t(cells[toCell]), toCell, outcome.cameFrom, context.level});
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
     wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
     return true;
@@ -454,13 +458,14 @@ bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x,
 SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd) {
     SweepResult totals;
     const bool xDown = (context.step & 1) != 0, zDown = (context.step & 2) != 0;
-    auto visit = [&](int x, int z) {
-        ++totals.visited;
-        totals.moves += visitGranular(context, log, x, y, z) ? 1 : 0;
-    };
     for (int i = zBegin; i < zEnd; ++i) {
         const int z = zDown ? zBegin + zEnd - 1 - i : i;
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
+        const std::uint32_t rowStart = row * std::uint32_t(size_.x); // cell (0, y, z)
+        auto visit = [&](int x, int) {
+            ++totals.visited;
+            totals.moves += visitGranular(context, log, x, y, z, row, rowStart) ? 1 : 0;
+        };
         if (context.sleeping && !rowAwake_[row]) continue;
         rowAwake_[row] = 0;
         RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);

@@ -10,6 +10,7 @@
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
+#include "empty_cells.hpp"
 #include "move_feed.hpp"
 
 #include <cstdint>
@@ -66,6 +67,17 @@ public:
     /// no grain in motion, so a visit need not read its state.
     void markInMotion(int x, int y, int z);
 
+    /// Granular: reads which cells of grid are EMPTY (the rules' windows read bits kept by the
+    /// sweep). After the rules are set and after edits that bypass the calls below.
+    void readEmptyCells(const CellGrid& grid);
+    /// True when the kept EMPTY cells are those of grid (always, under the classic rules).
+    bool emptyCellsMatch(const CellGrid& grid) const;
+    /// A grain entered the cell (x, y, z) from outside a sweep: it is woken there (as wakeAt; not
+    /// on the floor, layer 0 of a grid without an outlet, which is never visited).
+    void grainEntered(int x, int y, int z);
+    void grainEntered(std::uint32_t cell); ///< as above, by index
+    /// The EMPTY cell became INVALID (an obstacle).
+    void cellBlocked(std::uint32_t cell);
     void wake(std::uint32_t cell);              ///< the cell is visited in its layer's next turn
     void wakeAt(int x, int y, int z);           ///< as wake, by coordinate
     void wakePredecessorsOf(int x, int y, int z); ///< the 9 cells above (x, y, z)
@@ -127,14 +139,15 @@ private:
     template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
     // classic rules; true when a grain moved
     bool visitCell(const SweepContext& context, StripLog& log, int x, int y, int z);
-    bool visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z);
+    bool visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z, std::uint32_t row,
+                       std::uint32_t rowStart);
     void record(const SweepContext& context, StripLog& log, const GrainMove& move);
     SweepResult sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd);
     void clearRow(std::uint32_t row);
     void prefetchFirstAwake(const CellGrid& grid, int y, int z) const;
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
-    void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove);
+    void wakeGrainsAround(int x, int y, int z, int layersAbove);
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
     int awakeRowsInLayer(int y) const;
 
@@ -158,6 +171,9 @@ private:
     // Granular only, indexed as words_: the cells whose grain may be in motion (markInMotion). A
     // visit reads a grain's fall state by id, a cache miss, and most visited grains are at rest.
     std::vector<std::uint64_t> inMotion_;
+    // Granular only: which cells are EMPTY, kept with every change of a cell (moves here, the
+    // scene's edits through the calls above), so slides and wakes read bits instead of cells.
+    EmptyCellBits empty_;
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
     MoveFeed feed_;
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits

@@ -116,6 +116,8 @@ void Scene::reset() {
     rebuildCells(GridLevel::Lower);
     upperSweep_->clear();
     lowerSweep_->clear();
+    upperSweep_->readEmptyCells(upper_);
+    lowerSweep_->readEmptyCells(lower_);
     grains_.reserve(std::uint32_t(upperFill_.size())); // a big fill grows no array piece by piece
     movedGrains_.reserve(upperFill_.size());           // address space only, until steps move grains
     for (std::uint32_t cell : upperFill_) addGrain(GridLevel::Upper, cell);
@@ -222,7 +224,7 @@ void Scene::transition() {
         // Same world position: a grain that fell into the shared row in this very step keeps
         // gliding from where it came from; one that was resting there does not move on screen.
         listTransition(std::uint32_t(grain), below);
-        lowerSweep_->wakeAt(c.x, lowerTop, c.z);
+        lowerSweep_->grainEntered(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
         ++moved;
     });
@@ -291,7 +293,7 @@ void Scene::transitionGranular() {
         grains_.fall[kLowerGrid][grain] = fall; // its state goes with it into the lower grid's array
         if (fall.speed | fall.fraction) lowerSweep_->markInMotion(c.x, lowerTop, c.z);
         listTransition(std::uint32_t(grain), below);
-        lowerSweep_->wakeAt(c.x, lowerTop, c.z);
+        lowerSweep_->grainEntered(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
     }
     moveListedIntoLowerGrid();
@@ -368,9 +370,13 @@ void Scene::setSleeping(bool sleeping) {
 }
 
 void Scene::markEverythingAwake() {
+    upperSweep_->readEmptyCells(upper_);
+    lowerSweep_->readEmptyCells(lower_);
     upperSweep_->wakeEveryGrain(upper_);
     lowerSweep_->wakeEveryGrain(lower_);
 }
+
+bool Scene::sweepsMatchCells() const { return upperSweep_->emptyCellsMatch(upper_) && lowerSweep_->emptyCellsMatch(lower_); }
 
 SceneSnapshot Scene::snapshot() const {
     return {upper_, lower_, grains_, nextIdentity_, counters_, upperObstacles_, lowerObstacles_, flipped_};
@@ -418,7 +424,7 @@ std::int64_t Scene::addGrain(GridLevel level, std::uint32_t cell, std::uint32_t 
     if (cell >= grid.cellCount() || grid[cell] != kEmpty) return -1;
     const std::uint32_t id = grains_.add(level, cell, nextIdentity_++, rgba);
     grid[cell] = CellValue(id);
-    sweepOf(level).wake(cell);
+    sweepOf(level).grainEntered(cell);
     (level == GridLevel::Upper ? counters_.grainsUpper : counters_.grainsLower) += 1;
     return id;
 }
@@ -446,6 +452,7 @@ std::int64_t Scene::addObstacle(GridLevel level, CellBox box) {
     std::int64_t removed = 0;
     forEachCellIn(grid, box, [&](std::uint32_t n) {
         if (grid[n] >= 0) removed += removeGrain(level, n) ? 1 : 0;
+        if (grid[n] == kEmpty) sweepOf(level).cellBlocked(n);
         grid[n] = kInvalid;
     });
     (level == GridLevel::Upper ? upperObstacles_ : lowerObstacles_).push_back(box);

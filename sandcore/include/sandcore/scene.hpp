@@ -91,6 +91,9 @@ public:
     bool settled() const { return counters_.stepsDone > 0 && counters_.movesLastStep == 0; }
     /// R7: a 64-bit hash of both grids' cell contents, stable across runs and platforms.
     std::uint64_t stateHash() const;
+    /// What the sweeps keep of the grids (the granular rules' EMPTY cells) agrees with the grids:
+    /// a check for tests, since every edit of a cell must tell the sweeps (R5).
+    bool sweepsMatchCells() const;
 
     /// World offset of a grid's cell (0, 0, 0), in cells: the lower grid sits at the origin and
     /// the upper grid's bottom row on the lower grid's top row.
