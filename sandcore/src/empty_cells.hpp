@@ -60,9 +60,10 @@ public:
         for (int y = 0; y < size_.y; ++y)
             for (int z = 0; z < size_.z; ++z)
                 for (int x = 0; x < size_.x; ++x)
-                    if (((row(y, z)[x >> 6] >> (x & 63)) & 1u) != (grid.at(x, y, z) == kEmpty ? 1u : 0u)) return false;
+                    if (isEmpty(x, y, z) != (grid.at(x, y, z) == kEmpty)) return false;
         return true;
     }
+    bool isEmpty(int x, int y, int z) const { return (row(y, z)[x >> 6] >> (x & 63)) & 1u; }
     void setEmpty(int x, int y, int z, bool empty) {
         std::uint64_t& word = words_[std::size_t(y * size_.z + z) * std::size_t(stride_) + std::size_t(x >> 6)];
         const std::uint64_t bit = std::uint64_t{1} << (x & 63);
@@ -106,10 +107,22 @@ public:
     /// + 1) + (dx + Reach) set when EMPTY.
     template <int Reach> std::uint64_t window(int x, int y, int z) const {
         static_assert(Reach <= 3);
-        std::uint16_t rows[2 * Reach + 1];
-        rowsAround<Reach>(x, y, z, rows);
+        constexpr int width = 2 * Reach + 1;
+        constexpr std::uint64_t rowMask = (std::uint64_t{1} << width) - 1;
+        const int x0 = x - Reach;
         std::uint64_t bits = 0;
-        for (int r = 0; r < 2 * Reach + 1; ++r) bits |= std::uint64_t(rows[r]) << (r * (2 * Reach + 1));
+        if (y < 0 || y >= size_.y || z < Reach || z + Reach >= size_.z || x0 < 0) {
+            for (int r = 0; r < width; ++r) bits |= std::uint64_t(span(x0, y, z - Reach + r, width)) << (r * width);
+            return bits;
+        }
+        const std::uint64_t* words = row(y, z - Reach) + (x0 >> 6);
+        const int offset = x0 & 63;
+        if (offset + width > 64) {
+            for (int r = 0; r < width; ++r, words += stride_)
+                bits |= (((words[0] >> offset) | (words[1] << (64 - offset))) & rowMask) << (r * width);
+        } else {
+            for (int r = 0; r < width; ++r, words += stride_) bits |= ((words[0] >> offset) & rowMask) << (r * width);
+        }
         return bits;
     }
 

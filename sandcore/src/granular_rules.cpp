@@ -260,15 +260,12 @@ GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty,
     const std::int64_t row = grid.size().x, layer = grid.layerSize();
     // The 7x7 windows of EMPTY cells in the grain's layer (paths) and the layers below (targets,
     // columns) as bit masks, bit (dz + 3) * 7 + (dx + 3); cells outside the grid count as taken.
-    auto emptyRow = [&](int dz, int dy) -> std::uint64_t { return empty.span(x - kGranularReach, y + dy, z + dz, kWindow); };
     auto emptyWindow = [&](int dy) { return empty.window<kGranularReach>(x, y + dy, z); };
     // Every path starts in one of the 8 cells around the grain: when all are taken (inside the
-    // bulk), nothing can slide and the rest of the window need not be read.
-    std::uint64_t emptyHere = 0;
-    for (int dz = -1; dz <= 1; ++dz) emptyHere |= emptyRow(dz, 0) << ((dz + kGranularReach) * kWindow);
+    // bulk), nothing can slide and the layer below need not be read.
+    const std::uint64_t emptyHere = emptyWindow(0);
     constexpr std::uint64_t kAround = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x14} << 21) | (std::uint64_t{0x1c} << 28);
     if (!(emptyHere & kAround)) return {};
-    emptyHere = emptyWindow(0);
     const std::uint64_t emptyBelow = emptyWindow(-1);
     // The slides open at the grain's level (no taken cell on the path, 7 look-ups) that end over an
     // EMPTY cell, as bit k for offset k (the window's centre has none: bits above it shift down).

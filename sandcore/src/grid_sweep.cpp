@@ -248,7 +248,7 @@ void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
     if (y > 0) wakeGrainsAround(x, y, z, 0); // layer 0 only falls or transitions
     const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
     for (int layer = y + 1; layer <= top; ++layer) {
-        if (grid.at(x, layer, z) != kEmpty) {
+        if (!empty_.isEmpty(x, layer, z)) { // the kept bits: a column of cells lies 60 kB a layer apart
             if (layer == y + 1 && grid.at(x, layer, z) >= 0) wakeAt(x, layer, z);
             break;
         }
