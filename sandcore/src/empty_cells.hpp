@@ -1,7 +1,8 @@
 #pragma once
-// Which of 8 consecutive cells are EMPTY, as 8 bits. The granular slides and wakes read 7x7
-// windows of cells a row of 8 at a time; on x86-64 (SSE2 is part of it) a row is two compares of
-// 4 cells and one mask, elsewhere 8 compares. Private to sandcore.
+// Which cells are EMPTY, as bits: 8 consecutive cells at once (on x86-64, where SSE2 is part of
+// the architecture, two compares of 4 cells and one mask, elsewhere 8 compares), and a whole
+// grid's kept bits, from which the granular slides and wakes read their 7x7 and 9x9 windows.
+// Private to sandcore.
 
 #include "sandcore/cell_grid.hpp"
 

@@ -149,12 +149,11 @@ Window9 packed(const EmptyRows9& rows) {
     return bits;
 }
 
-// The 7x7 window (bit (dz + 3) * 7 + (dx + 3)) around the cell (dx, dz) away from the centre of
-// `rows`, |dx|, |dz| <= 1.
-std::uint64_t windowIn(const EmptyRows9& rows, int dx, int dz) {
+// The 7x7 window (bit (dz + 3) * 7 + (dx + 3)) at the centre of the 9 rows.
+std::uint64_t innerWindow(const EmptyRows9& rows) {
     std::uint64_t window = 0;
     for (int k = 0; k < kGranularWindow; ++k)
-        window |= std::uint64_t((rows[std::size_t(dz + k + 1)] >> (dx + 1)) & 0x7f) << (k * kGranularWindow);
+        window |= std::uint64_t((rows[std::size_t(k + 1)] >> 1) & 0x7f) << (k * kGranularWindow);
     return window;
 }
 
@@ -205,7 +204,7 @@ void GridSweep::wakeGrainsAround(int x, int y, int z, int layersAbove) {
         empty_.rowsAround<kGranularReach + 1>(x, y, z, here);
         empty_.rowsAround<kGranularReach + 1>(x, y - 1, z, below);
         const Window9 hereCells = packed(here), belowCells = packed(below);
-        clear = windowIn(here, 0, 0);
+        clear = innerWindow(here);
         clearRead = true;
         for (std::uint64_t near = woken & kWindowCentre; near; near &= near - 1) {
             const int bit = __builtin_ctzll(near);
