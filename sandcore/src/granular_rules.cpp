@@ -194,7 +194,7 @@ std::uint64_t carriesOf(const std::uint64_t (&dithers)[GranularRules::kOffsets /
     std::uint64_t notCarried = 0;
     for (int part = 0; part < 3; ++part) {
         const __m128i dither = _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + 16 * part));
-        const __m128i rest = _mm_load_si128(reinterpret_cast<const __m128i*>(restComplement.data() + 16 * part));
+        const __m128i rest = _mm_loadu_si128(reinterpret_cast<const __m128i*>(restComplement.data() + 16 * part));
         // dither - rest saturates at 0 exactly when dither <= rest: no carry
         const __m128i none = _mm_cmpeq_epi8(_mm_subs_epu8(dither, rest), _mm_setzero_si128());
         notCarried |= std::uint64_t(unsigned(_mm_movemask_epi8(none))) << (16 * part);

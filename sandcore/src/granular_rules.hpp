@@ -101,7 +101,7 @@ public:
     /// Of the grains two or three columns from an EMPTY cell c of their own layer (window bits as in
     /// wakeMask), those with a slide across c whose path is EMPTY from them up to c (some path of
     /// pathsThroughCentre inside `clear`, the EMPTY cells of the layer's window around c). Seven
-    /// look-ups find the blocked paths, fourteen the grains of those left.
+    /// look-ups find the blocked paths, sixteen the grains of those left.
     std::uint64_t grainsWithOpenPathThroughCentre(std::uint64_t clear) const {
         std::uint64_t blocked = 0;
         for (int r = 0; r < kWindow; ++r)
@@ -171,7 +171,7 @@ private:
     // part is d or more; wholeExactly_[d]: exactly d; restComplement_[k]: 255 minus the rest, so
     // the carry is dither > restComplement_[k].
     std::vector<std::uint64_t> wholeAtLeast_, wholeExactly_;
-    alignas(16) std::array<std::uint8_t, kOffsets> restComplement_{};
+    std::array<std::uint8_t, kOffsets> restComplement_{};
     double slope_ = 0;
     int maxDrop_ = 1;
     std::uint32_t gravity_ = 0;

@@ -128,6 +128,12 @@ inline void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
 }
 
+// Strips of one phase run on threads side by side. A granular visit writes cells and bits up to
+// kGranularReach rows from its own and reads them up to kGranularReach + 1 rows away (the 9x9
+// windows of a wake); a word of bits holds 64 cells of one row, so two strips must never come
+// within that of each other's rows.
+static_assert(kStripRows >= 2 * kGranularReach + 1, "strips of one phase would share rows");
+
 namespace {
 constexpr int kGranularWindow = 2 * kGranularReach + 1;
 // The 3x3 cells around the window's centre: a grain there has the emptied cell beside it.
@@ -247,7 +253,7 @@ void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
     if (y > 0) wakeGrainsAround(x, y, z, 0); // layer 0 only falls or transitions
     const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
     for (int layer = y + 1; layer <= top; ++layer) {
-        if (!empty_.isEmpty(x, layer, z)) { // the kept bits: a column of cells lies 60 kB a layer apart
+        if (!empty_.isEmpty(x, layer, z)) { // the kept bits: a column's cells lie a layer apart
             if (layer == y + 1 && grid.at(x, layer, z) >= 0) wakeAt(x, layer, z);
             break;
         }
@@ -440,7 +446,7 @@ inline bool GridSweep::visitGranular(const SweepContext& context, StripLog& log,
     words_[word].occupied &= ~bit; // every move goes down at least a layer: the cell it left is EMPTY
     const Int3 to = outcome.to;
     const std::uint32_t toCell = context.grid.index(to.x, to.y, to.z);
-    empty_.setEmpty(to.x, to.y, to.z, false); // the cell it left is marked EMPTY by wakeAroundEmptiedBy
+    empty_.setEmpty(to.x, to.y, to.z, false); // the cell it entered; the one it left: wakeAroundEmptiedBy
     record(context, log, {std::uint32_t(cells[toCell]), toCell, outcome.cameFrom, context.level});
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
     wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
@@ -461,7 +467,7 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
         const int z = zDown ? zBegin + zEnd - 1 - i : i;
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
         const std::uint32_t rowStart = row * std::uint32_t(size_.x); // cell (0, y, z)
-        auto visit = [&](int x, int) {
+        auto visit = [&](int x) {
             ++totals.visited;
             totals.moves += visitGranular(context, log, x, y, z, row, rowStart) ? 1 : 0;
         };
@@ -475,7 +481,7 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
                 for (std::uint64_t bits = wholeWord(w); bits;) {
                     const int bit = xDown ? 63 - __builtin_clzll(bits) : __builtin_ctzll(bits);
                     bits &= ~(std::uint64_t{1} << bit);
-                    visit(w * 64 + bit, z);
+                    visit(w * 64 + bit);
                 }
                 continue;
             }
@@ -487,7 +493,7 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
                     ahead = (std::uint64_t{1} << bit) - 1;
                 else
                     ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
-                visit(w * 64 + bit, z);
+                visit(w * 64 + bit);
             }
         }
         if (context.feed) context.feed->publishSome();

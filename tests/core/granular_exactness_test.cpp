@@ -1,5 +1,6 @@
 // PH5: the granular level is as exact as the classic one: sleeping == full sweep, any thread
 // count == one thread, exact conservation, recorded hashes; and PH1's settings.
+#include "sandcore/inside_mask.hpp"
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
 #include "support/thread_agreement.hpp"
@@ -45,7 +46,21 @@ void requireSameEveryStep(Scene& a, Scene& b, int steps, bool pour = false) {
         b.step();
         REQUIRE_MESSAGE(a.stateHash() == b.stateHash(), "states differ after step " << i + 1);
         REQUIRE(a.counters().movesLastStep == b.counters().movesLastStep);
+        // Both read their windows from the EMPTY cells their sweeps keep: a missed update would
+        // agree with itself, so the bits are compared with the grids too.
+        REQUIRE(a.sweepsMatchCells());
+        REQUIRE(b.sweepsMatchCells());
     }
+}
+
+// A slab of sand 72 cells long: its ends collapse where a window row crosses from one 64-bit
+// word of kept bits into the next and where it starts left of the grid.
+Scene granularSlab(std::uint64_t seed) {
+    InsideMask slab = InsideMask::empty({72, 6, 30});
+    for (int y = 0; y < 6; ++y)
+        for (int z = 0; z < 30; ++z)
+            for (int x = 0; x < 72; ++x) slab.set(x, y, z, true);
+    return makeSculptureScene(slab, granular(seed, 33.0f, 1.0f));
 }
 
 } // namespace
@@ -148,6 +163,27 @@ TEST_CASE("granular: recorded state hashes (classic's stay in determinism_test.c
     CHECK(sculpture.stateHash() == 0x5e90a64336fa5b95ull);
 }
 
+TEST_CASE("granular: a slab wider than a word of bits collapses alike on 1 and 3 threads and in a full sweep, "
+          "and the kept EMPTY cells stay those of the grids") {
+    Scene one = granularSlab(8), three = granularSlab(8), full = granularSlab(8);
+    three.setThreads(3);
+    full.setSleeping(false);
+    std::int64_t moves = 0;
+    for (int i = 0; i < 40; ++i) {
+        for (Scene* s : {&one, &three, &full}) {
+            s->step();
+            REQUIRE(s->sweepsMatchCells());
+        }
+        REQUIRE(one.stateHash() == three.stateHash());
+        REQUIRE(one.stateHash() == full.stateHash());
+        moves += one.counters().movesLastStep;
+    }
+    CHECK(moves > 2000); // the slab's sides slid down: the checks saw many moves
+    // The three above read the same kept bits, so a wrong read would agree with itself: this is the
+    // state the rules reached when they read the cells themselves (the build before the bits).
+    CHECK(one.stateHash() == 0x22c4d063a0ba162dull);
+}
+
 TEST_CASE("granular and classic differ, and switching the level mid-run takes effect") {
     StepSettings classic;
     classic.seed = 4;
@@ -162,7 +198,9 @@ TEST_CASE("granular and classic differ, and switching the level mid-run takes ef
     Scene c = makeSculptureScene(makeSphereMask(16), classic);
     for (int i = 0; i < 30; ++i) c.step();
     c.setPhysics(granular(4).physics);
+    CHECK(c.sweepsMatchCells());
     for (int i = 0; i < 30; ++i) c.step();
+    CHECK(c.sweepsMatchCells());
     CHECK(c.stateHash() != a.stateHash());
     CHECK(c.stateHash() != b.stateHash());
     CHECK(c.settings().physics.level == PhysicsLevel::Granular);
@@ -203,6 +241,7 @@ TEST_CASE("granular: a turned hourglass drains the other way, as a full sweep do
         sleeping.step();
         full.step();
         REQUIRE(sleeping.stateHash() == full.stateHash());
+        REQUIRE(sleeping.sweepsMatchCells()); // the turn builds new sweeps, which read the grids again
     }
     CHECK(sleeping.neckFlowRate() == doctest::Approx(rate)); // the neck row is the same row, turned
     CHECK(sleeping.grainCount() == grains);
