@@ -383,13 +383,18 @@ SceneSnapshot Scene::snapshot() const {
 }
 
 void Scene::restore(const SceneSnapshot& saved) {
-    if (saved.flipped != flipped_) {
+    // Checked before anything changes, so a snapshot of another scene leaves this one as it was:
+    // turned over, the upper grid takes the lower layout's size and the lower the upper's.
+    const bool turn = saved.flipped != flipped_;
+    const Int3 upperSize = turn ? lowerLayout_.size() : upperLayout_.size();
+    const Int3 lowerSize = turn ? upperLayout_.size() : lowerLayout_.size();
+    if (!(saved.upper.size() == upperSize) || !(saved.lower.size() == lowerSize))
+        throw std::invalid_argument("the snapshot belongs to a scene with other grids");
+    if (turn) {
         flipLayouts();
         upper_ = CellGrid(upperLayout_.size());
         lower_ = CellGrid(lowerLayout_.size());
     }
-    if (!(saved.upper.size() == upper_.size()) || !(saved.lower.size() == lower_.size()))
-        throw std::invalid_argument("the snapshot belongs to a scene with other grids");
     std::copy(saved.upper.cells().begin(), saved.upper.cells().end(), upper_.cells().begin());
     std::copy(saved.lower.cells().begin(), saved.lower.cells().end(), lower_.cells().begin());
     grains_ = saved.grains;

@@ -144,3 +144,22 @@ TEST_CASE("restore returns to a snapshot exactly, and the steps after it repeat"
     Scene other = makeCanvasScene();
     CHECK_THROWS(other.restore(saved));
 }
+
+TEST_CASE("restoring a turned hourglass's snapshot into another scene is refused and leaves it as it was") {
+    Scene turned = makeHourglassScene(makeHourglassMask({24, 1.5f, 0.0f}));
+    for (int i = 0; i < 20; ++i) turned.step();
+    REQUIRE(turned.flip());
+    const SceneSnapshot saved = turned.snapshot();
+    // Another hourglass, upright and of another height: the turn the snapshot asks for would
+    // change its layouts before the sizes are found to differ.
+    Scene other = makeHourglassScene(makeHourglassMask({32, 1.5f, 0.0f}));
+    for (int i = 0; i < 20; ++i) other.step();
+    const std::uint64_t before = other.stateHash();
+    const Int3 upperSize = other.grid(GridLevel::Upper).size();
+    CHECK_THROWS_AS(other.restore(saved), std::invalid_argument);
+    CHECK(other.stateHash() == before);
+    CHECK(other.grid(GridLevel::Upper).size() == upperSize);
+    CHECK_FALSE(other.flipped());
+    other.step(); // and it goes on stepping
+    CHECK(other.grainCount() == other.counters().grainsUpper + other.counters().grainsLower);
+}
