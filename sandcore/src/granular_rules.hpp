@@ -87,20 +87,10 @@ public:
     /// The grains that an EMPTY cell c may let move, `layersAbove` (0..maxDrop()) layers above c:
     /// bit (dz + 3) * 7 + (dx + 3) stands for the grain at c + (dx, dz) in that layer.
     std::uint64_t wakeMask(int layersAbove) const { return wakeMasks_[std::size_t(layersAbove)]; }
-    /// For the grain at window bit `bit` (as in wakeMask) around a column c: the cells its slide
-    /// into c's column crosses at its own level, as window bits around c's column.
-    std::uint64_t pathTowardsCentre(int bit) const { return pathsTowardsCentre_[std::size_t(bit)]; }
-    /// For the grain at window bit `bit` (as in wakeMask) around a cell c of its own layer, two or
-    /// three columns away: the paths of its slides that cross c, each cut after c (the cells from
-    /// the grain up to c, as window bits around c). c's emptying can open a slide only when every
-    /// cell of one of them is EMPTY.
-    std::span<const std::uint64_t> pathsThroughCentre(int bit) const {
-        const auto& [first, count] = throughCentreSpans_[std::size_t(bit)];
-        return {throughCentre_.data() + first, count};
-    }
     /// Of the grains two or three columns from an EMPTY cell c of their own layer (window bits as in
-    /// wakeMask), those with a slide across c whose path is EMPTY from them up to c (some path of
-    /// pathsThroughCentre inside `clear`, the EMPTY cells of the layer's window around c). Seven
+    /// wakeMask), those with a slide across c whose path is EMPTY from them up to c (one of the paths
+    /// through c, each cut after c, inside `clear`, the EMPTY cells of the layer's window around c):
+    /// c's emptying can open a slide for no other. Seven
     /// look-ups find the blocked paths, sixteen the grains of those left.
     std::uint64_t grainsWithOpenPathThroughCentre(std::uint64_t clear) const {
         std::uint64_t blocked = 0;
@@ -113,7 +103,7 @@ public:
         return grains;
     }
     /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
-    /// column crosses only EMPTY cells at their level (pathTowardsCentre inside `clear`, as above).
+    /// column crosses only EMPTY cells at their level (inside `clear`, as above).
     std::uint64_t grainsWithOpenPathTowardsCentre(std::uint64_t clear) const {
         std::uint64_t blocked = 0;
         for (int r = 0; r < kWindow; ++r)
@@ -176,15 +166,20 @@ private:
     int maxDrop_ = 1;
     std::uint32_t gravity_ = 0;
     std::vector<std::uint64_t> wakeMasks_;
+    // For the grain at window bit b around a column c: the cells its slide into c's column crosses
+    // at its own level, as window bits around c.
     std::array<std::uint64_t, kWindow * kWindow> pathsTowardsCentre_{};
-    std::vector<std::uint64_t> throughCentre_;                           // pathsThroughCentre, all bits
+    // For the grain at window bit b two or three columns from a cell c of its own layer: the paths
+    // of its slides that cross c, each cut after c (the cells from the grain up to c, as window bits
+    // around c), throughCentreSpans_[b] of them.
+    std::vector<std::uint64_t> throughCentre_;
     std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCentreSpans_{}; // first, count
     std::vector<std::uint8_t> throughCell_;                                                   // offsetsThrough, all bits
     std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCellSpans_{};   // first, count
-    // The paths of pathsThroughCentre, all grains, as bits 0..63 (there are 56): throughBlockedBy_[r]
+    // The paths of throughCentre_, all grains, as bits 0..63 (there are 56): throughBlockedBy_[r]
     // [taken] those crossing a taken cell of window row r, grainsOfThroughPaths_[i][n] the grains
-    // of the paths 4i..4i+3 that n holds. towardsBlockedBy_[r][taken]: the grains whose
-    // pathTowardsCentre crosses a taken cell of row r.
+    // of the paths 4i..4i+3 that n holds. towardsBlockedBy_[r][taken]: the grains whose path of
+    // pathsTowardsCentre_ crosses a taken cell of row r.
     std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow> throughBlockedBy_{}, towardsBlockedBy_{};
     std::array<std::array<std::uint64_t, 16>, 16> grainsOfThroughPaths_{};
     std::vector<NearSlide> nearSlides_;                                                         // nearSlidesThroughCentre, all bits

@@ -67,15 +67,20 @@ void GridSweep::grainEntered(int x, int y, int z) {
     if (y > 0 || bottomIsOutlet_) wakeAt(x, y, z);
 }
 
-void GridSweep::grainEntered(std::uint32_t cell) {
+Int3 GridSweep::coordinateOf(std::uint32_t cell) const {
     const std::uint32_t x = cell % std::uint32_t(size_.x), rest = cell / std::uint32_t(size_.x);
-    grainEntered(int(x), int(rest / std::uint32_t(size_.z)), int(rest % std::uint32_t(size_.z)));
+    return {int(x), int(rest / std::uint32_t(size_.z)), int(rest % std::uint32_t(size_.z))};
+}
+
+void GridSweep::grainEntered(std::uint32_t cell) {
+    const Int3 c = coordinateOf(cell);
+    grainEntered(c.x, c.y, c.z);
 }
 
 void GridSweep::cellBlocked(std::uint32_t cell) {
     if (!granular_) return;
-    const std::uint32_t x = cell % std::uint32_t(size_.x), rest = cell / std::uint32_t(size_.x);
-    empty_.setEmpty(int(x), int(rest / std::uint32_t(size_.z)), int(rest % std::uint32_t(size_.z)), false);
+    const Int3 c = coordinateOf(cell);
+    empty_.setEmpty(c.x, c.y, c.z, false);
 }
 
 void GridSweep::markInMotion(int x, int y, int z) {
@@ -93,10 +98,9 @@ void GridSweep::wakeAt(int x, int y, int z) {
 }
 
 void GridSweep::wake(std::uint32_t cell) {
-    const std::uint32_t x = cell % std::uint32_t(size_.x), rest = cell / std::uint32_t(size_.x);
-    const int y = int(rest / std::uint32_t(size_.z));
-    if (y == 0 && !bottomIsOutlet_) return; // the floor has nothing below it: never visited
-    wakeAt(int(x), y, int(rest % std::uint32_t(size_.z)));
+    const Int3 c = coordinateOf(cell);
+    if (c.y == 0 && !bottomIsOutlet_) return; // the floor has nothing below it: never visited
+    wakeAt(c.x, c.y, c.z);
 }
 
 // Sets the awake bits x0..x1 (at most 63 apart) of one row that may hold a grain, with one or
