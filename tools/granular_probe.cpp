@@ -5,6 +5,7 @@
 //   granular_probe drain NECK [HEIGHT] [g]    discharge of a granular hourglass
 //   granular_probe cost HEIGHT THREADS        ms per step, classic vs granular drain
 //   granular_probe cost-in-turns HEIGHT THREADS  the same, both drains stepped in turns
+#include "bench/granular_report.hpp"
 #include "sandcore/pile_slopes.hpp"
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
@@ -114,36 +115,17 @@ int cost(int height, int threads) {
     return 0;
 }
 
-// Both levels' drains in one process, stepped in turns so that both drain alike over the run
-// (after each block of granular steps, classic steps until it has passed as large a share of its
-// sand): a busy machine slows both alike, and the ratio holds where one-after-the-other does not.
+// Both levels' drains in one process, stepped in turns (sandbench::drainCostInTurns, the bench
+// report's cost measure), so a busy machine slows both alike.
 int costInTurns(int height, int threads) {
-    auto make = [&](PhysicsLevel level) {
-        StepSettings step;
-        step.threads = threads;
-        step.physics.level = level;
-        return makeHourglassScene(makeHourglassMask({height, defaultNeckRadius(height), 0.0f}), {}, step);
-    };
-    Scene classic = make(PhysicsLevel::Classic), granular = make(PhysicsLevel::Granular);
-    const double total = double(classic.grainCount());
-    auto drained = [&](const Scene& s) { return double(s.counters().grainsLower) / total; };
-    double seconds[2] = {0, 0};
-    auto run = [&](Scene& s, int index) {
-        const auto start = std::chrono::steady_clock::now();
-        s.step();
-        seconds[index] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    };
-    while (!classic.settled() || !granular.settled()) {
-        for (int i = 0; i < 100 && !granular.settled(); ++i) run(granular, 1);
-        while (!classic.settled() && (granular.settled() || drained(classic) <= drained(granular))) run(classic, 0);
-    }
-    const double classicMs = 1000.0 * seconds[0] / double(classic.counters().stepsDone);
-    const double granularMs = 1000.0 * seconds[1] / double(granular.counters().stepsDone);
-    std::printf("classic: %llu steps, %.3f ms/step, hash %016llx\ngranular: %llu steps, %.3f ms/step, hash %016llx\n"
-                "granular / classic: %.2fx\n",
-                (unsigned long long)classic.counters().stepsDone, classicMs, (unsigned long long)classic.stateHash(),
-                (unsigned long long)granular.counters().stepsDone, granularMs, (unsigned long long)granular.stateHash(),
-                granularMs / classicMs);
+    StepSettings step;
+    step.threads = threads;
+    const auto costs = sandbench::drainCostInTurns(height, step);
+    for (std::size_t i = 0; i < costs.size(); ++i)
+        std::printf("%s: %llu steps, %.3f ms/step, %.0f moves/step, hash %016llx%s\n", i ? "granular" : "classic",
+                    (unsigned long long)costs[i].steps, costs[i].msPerStep, costs[i].movesPerStep,
+                    (unsigned long long)costs[i].hash, costs[i].conserved ? "" : " (grains lost)");
+    std::printf("granular / classic: %.2fx\n", costs[1].msPerStep / costs[0].msPerStep);
     return 0;
 }
 

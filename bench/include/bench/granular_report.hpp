@@ -3,8 +3,11 @@
 // against measured in 16 directions, fall time against sqrt(2h/g), the discharge over several
 // necks with its fitted Beverloo exponent, and its cost against classic.
 
+#include "bench/plausibility.hpp"
 #include "bench/speed_error_report.hpp"
 
+#include <array>
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 
@@ -15,6 +18,25 @@ struct GranularSection {
     std::string markdown; ///< the section's text, tables and plot links
     bool passed = true;   ///< conservation held and every plot was drawn
 };
+
+/// One level's drain in a cost comparison.
+struct DrainCost {
+    std::int64_t grains = 0;       ///< grains in the scene (kept throughout when conserved)
+    bool conserved = false;        ///< the scene still holds every grain at the end
+    std::uint64_t steps = 0;       ///< steps until nothing moved
+    double msPerStep = 0;          ///< mean over the drain, time in Scene::step only
+    double movesPerStep = 0;       ///< mean over the drain
+    std::uint64_t hash = 0;        ///< Scene::stateHash at the end
+    double neckModelRate = 0;      ///< grains a step the neck-flow model asks (granular), else 0
+    DischargeSeries discharge;     ///< grains into the lower grid, step by step
+};
+
+/// PH6: the procedural hourglass of this height drained until nothing moves under the classic
+/// rules ([0]) and the granular ones ([1]), `step`'s other settings for both, in one process and
+/// in turns: after each 100 granular steps, classic steps until it has passed as large a share of
+/// its sand. A busy machine then slows both alike, which one drain after the other does not
+/// (their ratio moved from 2.8x to 6.5x within hours on a shared machine).
+std::array<DrainCost, 2> drainCostInTurns(int height, const sandcore::StepSettings& step);
 
 /// Measures the granular level and writes repose.csv, fall_time.csv, necks.csv, cost.csv and
 /// their plots into options.outDir; progress goes to log.
