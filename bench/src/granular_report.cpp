@@ -8,6 +8,7 @@
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ostream>
