@@ -188,8 +188,8 @@ std::string costPart(const ReportOptions& options, std::ostream& log, bool& pass
            "moves, " + std::to_string(options.step.threads) + " threads, sleeping grains skipped, both levels in "
            "this one process and in turns (after each 100 granular steps, classic steps until it has passed as "
            "large a share of its sand), so load from elsewhere slows both alike; the time is that of the steps "
-           "alone. At the default gravity this neck asks more than the slides around it bring, so the granular "
-           "drain runs at the rate of that supply, below the neck model's.\n\n" +
+           "alone. At the default gravity the granular drain runs below the neck model's rate: a grain of the neck "
+           "row passes only where the cell below it, in the stream under the neck, is free.\n\n" +
            toMarkdown(table) + "\n";
 }
 
