@@ -186,8 +186,8 @@ std::string costPart(const ReportOptions& options, std::ostream& log, bool& pass
     writeCsv(table, options.outDir / "cost.csv");
     return "Cost (PH6): the procedural hourglass of height " + std::to_string(height) + " drained until nothing "
            "moves, " + std::to_string(options.step.threads) + " threads, sleeping grains skipped, both levels in "
-           "this one process and in turns (after each 100 granular steps, classic steps until it has passed as "
-           "large a share of its sand), so load from elsewhere slows both alike; the time is that of the steps "
+           "this one process and in turns (after each " + std::to_string(kGranularStepsPerTurn) + " granular steps, "
+           "classic steps until it has passed as large a share of its sand), so load from elsewhere slows both alike; the time is that of the steps "
            "alone. At the default gravity the granular drain runs below the neck model's rate: a grain of the neck "
            "row passes only where the cell below it, in the stream under the neck, is free.\n\n" +
            toMarkdown(table) + "\n";
@@ -228,7 +228,7 @@ std::array<DrainCost, 2> drainCostInTurns(int height, const sandcore::StepSettin
     Drain& classic = drains[0];
     Drain& granular = drains[1];
     while (!done(classic) || !done(granular)) {
-        for (int i = 0; i < 100 && !done(granular); ++i) stepOnce(granular);
+        for (int i = 0; i < kGranularStepsPerTurn && !done(granular); ++i) stepOnce(granular);
         while (!done(classic) && (done(granular) || drained(classic) <= drained(granular))) stepOnce(classic);
     }
     std::array<DrainCost, 2> costs;

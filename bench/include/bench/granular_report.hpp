@@ -31,10 +31,13 @@ struct DrainCost {
     DischargeSeries discharge;     ///< grains into the lower grid, step by step
 };
 
+/// Granular steps in one turn of drainCostInTurns.
+inline constexpr int kGranularStepsPerTurn = 100;
+
 /// PH6: the procedural hourglass of this height drained until nothing moves under the classic
 /// rules ([0]) and the granular ones ([1]), `step`'s other settings for both, in one process and
-/// in turns: after each 100 granular steps, classic steps until it has passed as large a share of
-/// its sand. A busy machine then slows both alike, which one drain after the other does not
+/// in turns: after each kGranularStepsPerTurn granular steps, classic steps until it has passed as
+/// large a share of its sand. A busy machine then slows both alike, which one drain after the other does not
 /// (their ratio moved from 2.8x to 6.5x within hours on a shared machine).
 std::array<DrainCost, 2> drainCostInTurns(int height, const sandcore::StepSettings& step);
 
