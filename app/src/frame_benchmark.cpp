@@ -19,10 +19,10 @@ namespace {
 const char* onOff(bool value) { return value ? "on" : "off"; }
 
 void writeRow(std::ostream& out, const BenchmarkRow& row) {
-    char figures[160];
-    std::snprintf(figures, sizeof figures, "%.1f\t%.0f\t%.0f\t%.2f\t%.2f\t%.3f", row.framesPerSecond(),
+    char figures[192];
+    std::snprintf(figures, sizeof figures, "%.1f\t%.0f\t%.0f\t%.2f\t%.2f\t%.3f\t%.2f", row.framesPerSecond(),
                   row.uploadBytesPerFrame, row.movesPerStep, row.cpuMillisecondsPerFrame, row.appCpuMillisecondsPerFrame,
-                  row.upkeepMillisecondsPerStep);
+                  row.upkeepMillisecondsPerStep, row.gpuMillisecondsPerFrame);
     out << onOff(row.simulation) << '\t' << onOff(row.gui) << '\t' << renderModeShortName(row.setup.mode) << '\t'
         << row.setup.grainsPerCell << '\t' << row.filledCells << '\t' << onOff(row.setup.lighting) << '\t'
         << (row.setup.innerGrains ? "yes" : "no") << '\t' << figures << '\n';
@@ -39,7 +39,7 @@ void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& r
         out << "Framebuffer: " << report.width << "x" << report.height << " pixels\n";
         for (bool inner : {true, false}) {
             out << (inner ? "\nWith inner grains:\n\n" : "\nWithout inner grains:\n\n");
-            out << "Sim\tGui\tMode\tPpC\tfilled\tLight\tinner\tFPS\tB/frame\tmoves\tCPU ms\tapp ms\tupkeep\n";
+            out << "Sim\tGui\tMode\tPpC\tfilled\tLight\tinner\tFPS\tB/frame\tmoves\tCPU ms\tapp ms\tupkeep\tGPU ms\n";
             for (const BenchmarkRow& row : report.rows)
                 if (row.setup.innerGrains == inner) writeRow(out, row);
         }
@@ -48,14 +48,16 @@ void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& r
            "BB (billboards), PBB (pseudo-billboards), PpC = grains drawn per cell, filled = filled cells,\n"
            "Light = lighting from estimated normals, inner = inner grains drawn, FPS = frames per second,\n"
            "B/frame = grain bytes uploaded per frame, moves = grains moved per step, CPU ms = main-thread CPU\n"
-           "time per frame without the steps (with a software GL it includes vertex processing), app ms = the part\n"
-           "of CPU ms outside the draw calls (the application's own work), upkeep = ms per step of inner-flag and\n"
-           "normal upkeep plus grain upload.\n";
+           "time per frame without the steps and the buffer swap (with a software GL it includes vertex processing),\n"
+           "app ms = the part of CPU ms outside the draw calls (the application's own work), upkeep = ms per step\n"
+           "of inner-flag and normal upkeep plus grain upload, GPU ms = GPU time per frame of the scene's drawing,\n"
+           "from the grain upload to the last draw call (timer queries; a GPU-bound frame takes about this long).\n";
 }
 
 void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& reports) {
     out << "scene,gl_renderer,gl_version,width,height,sim,gui,mode,grains_per_cell,filled_cells,light,inner,frames,"
-           "seconds,fps,upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step\n";
+           "seconds,fps,upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step,"
+           "gpu_ms_per_frame\n";
     auto quoted = [](const std::string& text) {
         std::string result = "\"";
         for (char c : text) result += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -63,10 +65,10 @@ void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& re
     };
     for (const BenchmarkReport& report : reports)
         for (const BenchmarkRow& row : report.rows) {
-            char numbers[192];
-            std::snprintf(numbers, sizeof numbers, "%d,%.4f,%.2f,%.1f,%.1f,%.3f,%.3f,%.4f", row.frames, row.seconds,
+            char numbers[224];
+            std::snprintf(numbers, sizeof numbers, "%d,%.4f,%.2f,%.1f,%.1f,%.3f,%.3f,%.4f,%.4f", row.frames, row.seconds,
                           row.framesPerSecond(), row.uploadBytesPerFrame, row.movesPerStep, row.cpuMillisecondsPerFrame,
-                          row.appCpuMillisecondsPerFrame, row.upkeepMillisecondsPerStep);
+                          row.appCpuMillisecondsPerFrame, row.upkeepMillisecondsPerStep, row.gpuMillisecondsPerFrame);
             out << quoted(report.scene) << ',' << quoted(report.glRenderer) << ',' << quoted(report.glVersion) << ','
                 << report.width << ',' << report.height << ',' << onOff(row.simulation) << ',' << onOff(row.gui) << ','
                 << renderModeName(row.setup.mode) << ',' << row.setup.grainsPerCell << ',' << row.filledCells << ','

@@ -33,8 +33,9 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         const double cpuStart = threadCpuMilliseconds();
         app.renderHostFrame(host, render, true, std::chrono::duration<double>(now - last).count());
         last = now;
-        app.finishFrame();
+        // The swap is left out: a driver waits there for the GPU (GPU ms says how long it works).
         cpuMilliseconds += threadCpuMilliseconds() - cpuStart;
+        app.finishFrame();
         uploadBytes += double(app.renderer().stats().uploadBytes);
         uploadMilliseconds += app.renderer().stats().uploadMilliseconds;
         drawCallMilliseconds += app.renderer().stats().drawCallCpuMilliseconds;
@@ -43,10 +44,15 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
     // The window shows which row runs and that Esc stops it (the key callback sets the request).
     Application::BenchmarkProgress& progress = app.benchmarkProgress();
     progress = {true, false, 0, int(cases.size())};
+    app.renderer().timeGpu(true);
     struct EndProgress { // also when building the scene or a frame throws
+        Application& app;
         Application::BenchmarkProgress& progress;
-        ~EndProgress() { progress = {}; }
-    } endProgress{progress};
+        ~EndProgress() {
+            progress = {};
+            app.renderer().timeGpu(false);
+        }
+    } endProgress{app, progress};
     for (const BenchmarkCase& setup : cases) {
         if (progress.cancelRequested) break;
         render.mode = setup.mode;
@@ -61,6 +67,7 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         row.setup = setup;
         host.takeStepTally();
         cpuMilliseconds = drawCallMilliseconds = uploadBytes = uploadMilliseconds = 0.0;
+        app.renderer().takeGpuTime(); // the warm-up frames' time is no part of the row
         const auto start = Clock::now();
         double elapsed = 0.0;
         while (!progress.cancelRequested &&
@@ -80,11 +87,13 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         row.appCpuMillisecondsPerFrame =
             std::max(0.0, cpuMilliseconds - tally.stepMilliseconds - drawCallMilliseconds) / row.frames;
         row.upkeepMillisecondsPerStep = tally.steps > 0 ? (tally.upkeepMilliseconds + uploadMilliseconds) / steps : 0.0;
+        row.gpuMillisecondsPerFrame = app.renderer().takeGpuTime().perFrame();
         report.rows.push_back(row);
-        std::printf("%-4s %2d grains/cell, light %-3s, inner %-3s: %8.1f fps, %10.0f B/frame, %7.2f CPU ms/frame\n",
+        std::printf("%-4s %2d grains/cell, light %-3s, inner %-3s: %8.1f fps, %10.0f B/frame, %7.2f CPU ms/frame, "
+                    "%7.2f GPU ms/frame\n",
                     renderModeShortName(setup.mode), setup.grainsPerCell, setup.lighting ? "on" : "off",
                     setup.innerGrains ? "yes" : "no", row.framesPerSecond(), row.uploadBytesPerFrame,
-                    row.cpuMillisecondsPerFrame);
+                    row.cpuMillisecondsPerFrame, row.gpuMillisecondsPerFrame);
         std::fflush(stdout);
         ++progress.rowsDone;
     }

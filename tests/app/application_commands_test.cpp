@@ -144,6 +144,10 @@ TEST_CASE("application: the benchmark leaves the user's scene as it was (state h
     timing.maxSeconds = 5.0;
     const BenchmarkReport report = runFrameBenchmark(*app, {{RenderMode::Points, 1, false, true}, {RenderMode::PseudoBillboards, 4, true, false}}, timing);
     REQUIRE(report.rows.size() == 2);
+    for (const BenchmarkRow& row : report.rows) { // B1: every row timed on the GPU too
+        CHECK(row.gpuMillisecondsPerFrame > 0.0);
+        CHECK(row.cpuMillisecondsPerFrame >= row.appCpuMillisecondsPerFrame);
+    }
     CHECK(app->scene().stateHash() == before);
     CHECK(app->scene().counters().stepsDone == stepsBefore);
     CHECK(app->state().render.mode == renderBefore.mode);

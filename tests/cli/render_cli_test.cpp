@@ -95,7 +95,8 @@ TEST_CASE("cli: render --frames reports upload bytes, moves, CPU and upkeep time
         INFO(run.err);
         REQUIRE(run.exitCode == 0);
         for (const char* key : {"\"upload_bytes_per_frame\":", "\"moves_per_step\":", "\"cpu_ms_per_frame\":",
-                                "\"app_cpu_ms_per_frame\":", "\"upkeep_ms_per_step\":", "\"steps\":14"}) {
+                                "\"app_cpu_ms_per_frame\":", "\"upkeep_ms_per_step\":", "\"gpu_ms_per_frame\":",
+                                "\"gpu_frame_ms\":", "\"steps\":14"}) {
             CAPTURE(key);
             CHECK(run.out.find(key) != std::string::npos);
         }
@@ -103,6 +104,9 @@ TEST_CASE("cli: render --frames reports upload bytes, moves, CPU and upkeep time
         const nlohmann::json report = nlohmann::json::parse(run.out);
         CHECK(report["app_cpu_ms_per_frame"].get<double>() >= 0.0);
         CHECK(report["app_cpu_ms_per_frame"].get<double>() <= report["cpu_ms_per_frame"].get<double>());
+        // The GPU's time of the drawing, from timer queries: some, for the still and the stepped frames.
+        CHECK(report["gpu_ms_per_frame"].get<double>() > 0.0);
+        CHECK(report["gpu_frame_ms"].get<double>() > 0.0);
         // Sand flows at step 10: both paths upload something, and moves are counted.
         CHECK(run.out.find("\"upload_bytes_per_frame\":0.0") == std::string::npos);
         CHECK(run.out.find("\"moves_per_step\":0.0") == std::string::npos);

@@ -111,6 +111,7 @@ public:
     const sandcore::Scene& scene() const { return host_.scene(); } ///< the running scene
     const CanvasController& canvas() const { return canvas_; }    ///< strokes, draft and undo
     const SceneRenderer& renderer() const { return renderer_; }   ///< what the last frame drew
+    SceneRenderer& renderer() { return renderer_; }               ///< as above, to switch GPU timing on
     OrbitCamera& camera() { return camera_; }                     ///< the view
     std::int64_t framesDrawn() const { return framesDrawn_; }     ///< frames since start
     const Window& window() const { return window_; }              ///< the window and its context

@@ -35,9 +35,12 @@ struct BenchmarkRow {
     double seconds = 0.0;           ///< wall time of those frames
     double uploadBytesPerFrame = 0.0; ///< V8: grain bytes sent to the GPU per frame (mean)
     double movesPerStep = 0.0;      ///< grains moved per step while timed
-    double cpuMillisecondsPerFrame = 0.0; ///< main-thread CPU time per frame, the steps' time taken out
+    /// Main-thread CPU time per frame, the steps' time and the buffer swap taken out (a driver
+    /// waits for the GPU in the swap, some spinning, which is no work of the frame's).
+    double cpuMillisecondsPerFrame = 0.0;
     double appCpuMillisecondsPerFrame = 0.0; ///< of which outside the draw calls (the application's own work)
     double upkeepMillisecondsPerStep = 0.0; ///< surface upkeep and grain upload per step, ms
+    double gpuMillisecondsPerFrame = 0.0;   ///< GPU time of the scene's drawing per frame (timer queries)
     double framesPerSecond() const { return seconds > 0.0 ? double(frames) / seconds : 0.0; } ///< FPS
 };
 
@@ -62,7 +65,7 @@ struct BenchmarkTiming {
 /// The thesis's table form, grouped by inner grains drawn / skipped.
 void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& reports, const std::string& command);
 /// One line per row: scene,gl_renderer,gl_version,width,height,sim,gui,mode,grains_per_cell,filled_cells,light,inner,frames,seconds,fps,
-/// upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step.
+/// upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step,gpu_ms_per_frame.
 void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& reports);
 /// Writes folder/benchmark.txt and folder/benchmark.csv (creating the folder); throws std::runtime_error.
 void writeBenchmarkFiles(const std::filesystem::path& folder, const std::vector<BenchmarkReport>& reports,

@@ -37,6 +37,7 @@ struct SteppedFrames {
     double movesPerStep = 0.0;
     double cpuMillisecondsPerFrame = 0.0; // the frame on the main thread, step excluded
     double appCpuMillisecondsPerFrame = 0.0; // of which outside the draw calls: the application's own work
+    double gpuMillisecondsPerFrame = 0.0; // GPU time of the scene's drawing (timer queries)
     double frameMilliseconds = 0.0;       // wall time of the frame, step excluded
     double stepMilliseconds = 0.0;        // wall time of the step itself
     double upkeepMillisecondsPerStep = 0.0; // surface upkeep + the frame's grain upload, per step
@@ -49,6 +50,7 @@ SteppedFrames drawSteppedFrames(Application& application, int frames) {
     result.frames = frames;
     if (frames <= 0) return result;
     application.host().takeStepTally(); // only the steps below count
+    application.renderer().takeGpuTime();
     double uploadBytes = 0.0, uploadMilliseconds = 0.0, cpu = 0.0, drawCalls = 0.0, wall = 0.0, stepWall = 0.0;
     for (int i = 0; i < frames; ++i) {
         const auto stepStart = Clock::now();
@@ -56,8 +58,8 @@ SteppedFrames drawSteppedFrames(Application& application, int frames) {
         const auto frameStart = Clock::now();
         const double cpuStart = threadCpuMilliseconds();
         application.renderFrame(0.0);
+        cpu += threadCpuMilliseconds() - cpuStart; // not the wait below, which some drivers spend spinning
         glFinish();
-        cpu += threadCpuMilliseconds() - cpuStart;
         wall += std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
         stepWall += std::chrono::duration<double, std::milli>(frameStart - stepStart).count();
         const RenderStats& stats = application.renderer().stats();
@@ -71,6 +73,7 @@ SteppedFrames drawSteppedFrames(Application& application, int frames) {
     result.movesPerStep = double(tally.moves) / steps;
     result.cpuMillisecondsPerFrame = cpu / frames;
     result.appCpuMillisecondsPerFrame = std::max(0.0, cpu - drawCalls) / frames;
+    result.gpuMillisecondsPerFrame = application.renderer().takeGpuTime().perFrame();
     result.frameMilliseconds = wall / frames;
     result.stepMilliseconds = stepWall / frames - tally.upkeepMilliseconds / steps;
     result.upkeepMillisecondsPerStep = (tally.upkeepMilliseconds + uploadMilliseconds) / steps;
@@ -92,7 +95,9 @@ int runRender(const RenderOptions& options) {
     glFinish();
     writePng(options.out, application.captureFrame());
 
-    // The same frame again a few times: the time it takes to draw this view.
+    // The same frame again a few times: the time it takes to draw this view, and the GPU's part.
+    application.renderer().timeGpu(true);
+    application.renderer().takeGpuTime();
     const auto start = Clock::now();
     for (int i = 0; i < options.timedFrames; ++i) {
         application.renderFrame(0.0);
@@ -101,12 +106,14 @@ int runRender(const RenderOptions& options) {
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     const double frameMilliseconds = options.timedFrames > 0 ? 1000.0 * seconds / options.timedFrames : 0.0;
     const double framesPerSecond = frameMilliseconds > 0.0 ? 1000.0 / frameMilliseconds : 0.0;
+    const double gpuFrameMilliseconds = application.renderer().takeGpuTime().perFrame();
     const SteppedFrames stepped = drawSteppedFrames(application, options.steppedFrames);
     const RenderSettings& render = application.state().render;
     if (options.json) {
         nlohmann::ordered_json out;
         out["fps"] = framesPerSecond;
         out["frame_ms"] = frameMilliseconds;
+        out["gpu_frame_ms"] = gpuFrameMilliseconds;
         out["out"] = options.out;
         out["scene"] = options.view.scene.scene;
         out["mode"] = renderModeName(render.mode);
@@ -124,6 +131,7 @@ int runRender(const RenderOptions& options) {
             out["moves_per_step"] = stepped.movesPerStep;
             out["cpu_ms_per_frame"] = stepped.cpuMillisecondsPerFrame;
             out["app_cpu_ms_per_frame"] = stepped.appCpuMillisecondsPerFrame;
+            out["gpu_ms_per_frame"] = stepped.gpuMillisecondsPerFrame;
             out["upkeep_ms_per_step"] = stepped.upkeepMillisecondsPerStep;
             out["surface_upkeep_ms_per_step"] = stepped.surfaceMillisecondsPerStep;
             out["stepped_frame_ms"] = stepped.frameMilliseconds;
@@ -133,11 +141,13 @@ int runRender(const RenderOptions& options) {
     } else {
         std::cout << "wrote " << options.out << ": " << application.scene().grainCount() << " grains, "
                   << renderModeName(render.mode) << ", " << frameMilliseconds << " ms per frame (" << framesPerSecond
-                  << " fps) on " << application.state().glRenderer << "\n";
+                  << " fps, " << gpuFrameMilliseconds << " ms of it on the GPU) on " << application.state().glRenderer
+                  << "\n";
         if (stepped.frames > 0)
             std::cout << stepped.frames << " stepped frames: " << stepped.uploadBytesPerFrame << " bytes uploaded per frame, "
                       << stepped.movesPerStep << " moves per step, " << stepped.cpuMillisecondsPerFrame
                       << " CPU ms per frame (" << stepped.appCpuMillisecondsPerFrame << " outside the draw calls), "
+                      << stepped.gpuMillisecondsPerFrame << " GPU ms per frame, "
                       << stepped.upkeepMillisecondsPerStep << " upkeep ms per step\n";
     }
     return 0;

@@ -248,6 +248,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     glClearColor(background, background, background, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (width <= 0 || height <= 0) return;
+    if (timeGpu_) gpuTimer_.begin(); // from the upload to the last draw call
 
     if (settings.palette != patternPalette_) uploadPatternColors(settings.palette);
     // Past what this GL's buffer textures hold, the grains go the earlier way.
@@ -281,6 +282,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     });
     glBindVertexArray(0);
     glUseProgram(0);
+    if (timeGpu_) gpuTimer_.end();
 }
 
 void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera& camera,

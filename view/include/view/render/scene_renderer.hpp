@@ -6,6 +6,7 @@
 #include "view/camera.hpp"
 #include "view/render/draft_overlay.hpp"
 #include "view/render/gl_objects.hpp"
+#include "view/render/gpu_frame_timer.hpp"
 #include "view/render/grain_gpu_store.hpp"
 #include "view/render/grain_instances.hpp"
 #include "view/render/model_surfaces.hpp"
@@ -73,6 +74,10 @@ public:
               const OrbitCamera& camera, int width, int height, float pixelScale);
 
     const RenderStats& stats() const { return stats_; } ///< what the last draw did
+    /// Times every later draw() on the GPU (timer queries), until switched off; the benchmarks do.
+    void timeGpu(bool on) { timeGpu_ = on; }
+    /// The GPU time of the draws timed since the last call (waits for those still running).
+    GpuTime takeGpuTime() { return gpuTimer_.take(); }
     /// The grain instances in the GPU buffer now, as the last upload sent them.
     std::span<const GrainInstance> uploadedInstances() const { return builder_.lastBuilt(); }
 
@@ -111,6 +116,8 @@ private:
     bool grainsStale_ = true;
     RenderSettings uploadedWith_;
     RenderStats stats_;
+    GpuFrameTimer gpuTimer_;
+    bool timeGpu_ = false;
 };
 
 } // namespace sandglass
