@@ -17,19 +17,30 @@ std::vector<sandcore::Vec3> SceneRenderer::captureGpuPositions(const sandcore::S
 
 std::vector<sandcore::Vec3> SceneRenderer::readBackGpuPositions(const sandcore::Scene& scene, float stepFraction,
                                                                 const RenderSettings& settings) const {
+    const std::int64_t count = gpuStore_.grainCount();
+    std::vector<sandcore::Vec3> positions(static_cast<std::size_t>(count));
+    if (count == 0) return positions;
+
+    GlBuffer captured(newBuffer());
+    glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, captured.get());
+    glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, GLsizeiptr(std::size_t(count) * sizeof(sandcore::Vec3)), nullptr,
+                 GL_STREAM_READ);
+    glUseProgram(grainGpuProgram_.get());
     RenderSettings everyGrain = settings;
     everyGrain.innerGrains = true; // a hidden grain still has a position
-    const std::int64_t count = runGrainPass(scene, stepFraction, everyGrain);
-    std::vector<sandcore::Vec3> positions(static_cast<std::size_t>(count));
-    if (count > 0) {
-        // The pass keeps x, y, z and a fourth float per grain.
-        std::vector<float> captured(static_cast<std::size_t>(count) * 4);
-        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, passCentres_.get());
-        glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, GLsizeiptr(captured.size() * sizeof(float)), captured.data());
-        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
-        for (std::size_t i = 0; i < positions.size(); ++i)
-            positions[i] = {captured[4 * i], captured[4 * i + 1], captured[4 * i + 2]};
-    }
+    setGpuUniforms(scene, stepFraction, everyGrain);
+    glUniform1i(glGetUniformLocation(grainGpuProgram_.get(), "mode"), 0); // points: one vertex per grain
+    glUniform1f(glGetUniformLocation(grainGpuProgram_.get(), "cellSize"), settings.cellSize); // setGpuUniforms bound the grains
+    glEnable(GL_RASTERIZER_DISCARD);
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captured.get());
+    glBeginTransformFeedback(GL_POINTS);
+    glDrawArraysInstanced(GL_POINTS, 0, 1, GLsizei(count));
+    glEndTransformFeedback();
+    glDisable(GL_RASTERIZER_DISCARD);
+    glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, GLsizeiptr(positions.size() * sizeof(sandcore::Vec3)),
+                       positions.data());
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+    glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
     glBindVertexArray(0);
     glUseProgram(0);
     return positions;

@@ -34,7 +34,6 @@ void hullAttributes(GLuint vertexArray, GLuint buffer) {
 // Texture units of the GPU path (0 and 1 hold the patterns).
 constexpr int kColumnNormalsUnit = 2;
 constexpr int kGrainTexturesUnit = 3; // places, looks, jitters, gradient normals, cell bits, normal table
-constexpr int kPassTexturesUnit = 9;  // the per-grain pass's positions and shades
 
 // Display settings whose change invalidates the uploaded grains even when nothing moved.
 bool sameGrainInputs(const RenderSettings& a, const RenderSettings& b) {
@@ -46,14 +45,11 @@ bool sameGrainInputs(const RenderSettings& a, const RenderSettings& b) {
 
 SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
     : grainProgram_(loadShaderProgram(shaderFolder / "grain.vert", shaderFolder / "grain.frag")),
-      grainGpuProgram_(loadShaderProgram(shaderFolder / "grain_gpu.vert", shaderFolder / "grain.frag")),
-      grainPassProgram_(loadTransformFeedbackProgram(shaderFolder / "grain_gpu_prepass.vert", {"displayPosition", "grainShade"})),
+      grainGpuProgram_(loadShaderProgram(shaderFolder / "grain_gpu.vert", shaderFolder / "grain.frag", "displayPosition")),
       hullProgram_(loadShaderProgram(shaderFolder / "hull.vert", shaderFolder / "hull.frag")),
       grainArray_(newVertexArray()), hullArray_(newVertexArray()), lineArray_(newVertexArray()),
       grainBuffer_(newBuffer()), hullBuffer_(newBuffer()), lineBuffer_(newBuffer()), quadCorners_(newBuffer()),
-      passCentres_(newBuffer()), passShades_(newBuffer()), passCentresTexture_(newTexture()),
-      passShadesTexture_(newTexture()), model_(shaderFolder), patternOffsets_(newTexture()),
-      patternColors_(newTexture()), draft_(shaderFolder) {
+      model_(shaderFolder), patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
     // Per-instance attributes; the vertex shader needs no per-vertex data (it uses gl_VertexID).
     glBindVertexArray(grainArray_.get());
     glBindBuffer(GL_ARRAY_BUFFER, grainBuffer_.get());
@@ -102,26 +98,10 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
         glUniform1i(uniform(*program, "patternColors"), 1);
         glUniform1i(uniform(*program, "patternCount"), GLint(patterns.size()));
     }
-    glUniform1i(uniform(grainGpuProgram_, "grainLooks"), kGrainTexturesUnit + 1);
-    glUniform1i(uniform(grainGpuProgram_, "grainCentres"), kPassTexturesUnit);
-    glUniform1i(uniform(grainGpuProgram_, "grainShades"), kPassTexturesUnit + 1);
-    glUseProgram(grainPassProgram_.get());
-    glUniform1i(uniform(grainPassProgram_, "columnNormals"), kColumnNormalsUnit);
+    glUniform1i(uniform(grainGpuProgram_, "columnNormals"), kColumnNormalsUnit);
     const char* grainTextures[] = {"grainPlaces", "grainLooks", "grainJitters", "grainNormals", "cellBits", "gradientNormalTable"};
-    for (int i = 0; i < 6; ++i) glUniform1i(uniform(grainPassProgram_, grainTextures[i]), kGrainTexturesUnit + i);
+    for (int i = 0; i < 6; ++i) glUniform1i(uniform(grainGpuProgram_, grainTextures[i]), kGrainTexturesUnit + i);
     glUseProgram(0);
-    // The draw reads the pass's output through buffer textures (the buffers get their size at
-    // the first pass; a texture follows its buffer's new storage).
-    glBindBuffer(GL_TEXTURE_BUFFER, passCentres_.get());
-    glBufferData(GL_TEXTURE_BUFFER, 16, nullptr, GL_DYNAMIC_COPY);
-    glBindBuffer(GL_TEXTURE_BUFFER, passShades_.get());
-    glBufferData(GL_TEXTURE_BUFFER, 4, nullptr, GL_DYNAMIC_COPY);
-    glBindBuffer(GL_TEXTURE_BUFFER, 0);
-    glBindTexture(GL_TEXTURE_BUFFER, passCentresTexture_.get());
-    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, passCentres_.get());
-    glBindTexture(GL_TEXTURE_BUFFER, passShadesTexture_.get());
-    glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, passShades_.get());
-    glBindTexture(GL_TEXTURE_BUFFER, 0);
 }
 
 void SceneRenderer::uploadPatternColors(SandPalette palette) {
@@ -237,10 +217,9 @@ void SceneRenderer::uploadGpuGrains(const sandcore::Scene& scene, const RenderSe
     stats_.uploadMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::int64_t SceneRenderer::runGrainPass(const sandcore::Scene& scene, float stepFraction,
-                                         const RenderSettings& settings) const {
-    const GlProgram& program = grainPassProgram_;
-    glUseProgram(program.get());
+std::int64_t SceneRenderer::setGpuUniforms(const sandcore::Scene& scene, float stepFraction,
+                                           const RenderSettings& settings) const {
+    const GlProgram& program = grainGpuProgram_;
     const sandcore::Int3 lower = scene.grid(sandcore::GridLevel::Lower).size();
     const sandcore::Int3 upper = scene.grid(sandcore::GridLevel::Upper).size();
     const sandcore::Int3 origin = scene.gridOrigin(sandcore::GridLevel::Upper);
@@ -250,8 +229,6 @@ std::int64_t SceneRenderer::runGrainPass(const sandcore::Scene& scene, float ste
     glUniform1ui(uniform(program, "currentStep"), GLuint(std::uint32_t(scene.counters().stepsDone)));
     // The same expression as grainDisplayPosition's, so both get the same float.
     glUniform1f(uniform(program, "stepRemaining"), stepFraction < 1.0f ? 1.0f - stepFraction : 0.0f);
-    glUniform1f(uniform(program, "cellSize"), settings.cellSize);
-    glUniform1i(uniform(program, "lighting"), settings.lighting ? 1 : 0);
     glUniform1i(uniform(program, "showInner"), settings.innerGrains ? 1 : 0);
     const bool fromBits = gpuStore_.flagsFromBits();
     const bool gradient = settings.normals == sandcore::NormalMethod::OccupancyGradient;
@@ -260,30 +237,8 @@ std::int64_t SceneRenderer::runGrainPass(const sandcore::Scene& scene, float ste
     const std::array<std::int32_t, 4>& offsets = gpuStore_.cellBitsOffsets();
     glUniform4i(uniform(program, "cellBitsOffsets"), offsets[0], offsets[1], offsets[2], offsets[3]);
     gpuStore_.bind(kGrainTexturesUnit, kColumnNormalsUnit);
-    // Every grain an instance (from the bits the pass marks inner ones), or the visible list's.
-    const std::int64_t instances =
-        settings.innerGrains || fromBits ? gpuStore_.grainCount() : gpuStore_.visibleCount();
-    if (instances > passCapacity_) {
-        // Room for every grain, so hiding and showing inner grains never reallocates.
-        const std::int64_t room = std::max(instances, gpuStore_.grainCount());
-        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, passCentres_.get());
-        glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, GLsizeiptr(room * 16), nullptr, GL_DYNAMIC_COPY);
-        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, passShades_.get());
-        glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, GLsizeiptr(room * 4), nullptr, GL_DYNAMIC_COPY);
-        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
-        passCapacity_ = room;
-    }
-    if (instances == 0) return 0;
-    glEnable(GL_RASTERIZER_DISCARD);
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, passCentres_.get());
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 1, passShades_.get());
-    glBeginTransformFeedback(GL_POINTS);
-    glDrawArraysInstanced(GL_POINTS, 0, 1, GLsizei(instances)); // one point per instance, in order
-    glEndTransformFeedback();
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 1, 0);
-    glDisable(GL_RASTERIZER_DISCARD);
-    return instances;
+    // Every grain an instance (from the bits the shader drops inner ones), or the visible list's.
+    return settings.innerGrains || fromBits ? gpuStore_.grainCount() : gpuStore_.visibleCount();
 }
 
 void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
@@ -303,10 +258,8 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     uploadGrains(scene, stepFraction, settings);
     const glm::mat4 viewProjection = camera.projection(float(width) / float(height)) * camera.view();
     if (path_ == GrainPath::GpuInterpolated) {
-        instanceCount_ = runGrainPass(scene, stepFraction, settings);
         glUseProgram(grainGpuProgram_.get());
-        glUniform1i(uniform(grainGpuProgram_, "showInner"), settings.innerGrains ? 1 : 0);
-        glUniform1i(uniform(grainGpuProgram_, "flagsFromBits"), gpuStore_.flagsFromBits() ? 1 : 0);
+        instanceCount_ = setGpuUniforms(scene, stepFraction, settings);
     }
     // The draw calls are timed apart from the application's own work (see RenderStats).
     stats_.drawCallCpuMilliseconds = 0.0;
@@ -370,14 +323,9 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, patternColors_.get());
     glActiveTexture(GL_TEXTURE0);
-    if (path_ == GrainPath::GpuInterpolated) {
+    if (path_ == GrainPath::GpuInterpolated)
         gpuStore_.bind(kGrainTexturesUnit, kColumnNormalsUnit);
-        glActiveTexture(GLenum(GL_TEXTURE0 + kPassTexturesUnit));
-        glBindTexture(GL_TEXTURE_BUFFER, passCentresTexture_.get());
-        glActiveTexture(GLenum(GL_TEXTURE0 + kPassTexturesUnit + 1));
-        glBindTexture(GL_TEXTURE_BUFFER, passShadesTexture_.get());
-        glActiveTexture(GL_TEXTURE0);
-    } else
+    else
         glBindVertexArray(grainArray_.get());
     const bool quads = settings.mode == RenderMode::Billboards || settings.mode == RenderMode::PseudoBillboards;
     if (quads) {

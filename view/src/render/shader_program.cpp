@@ -48,19 +48,6 @@ std::filesystem::path shaderDirectory() {
     return std::filesystem::path(SANDGLASS_SOURCE_DIR) / "shaders";
 }
 
-namespace {
-void link(const GlProgram& program, const std::string& files) {
-    glLinkProgram(program.get());
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        std::vector<char> log(1024);
-        glGetProgramInfoLog(program.get(), GLsizei(log.size()), nullptr, log.data());
-        throw std::runtime_error("linking " + files + ": " + firstLine(log.data()));
-    }
-}
-} // namespace
-
 GlProgram loadShaderProgram(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
                             const char* capturedVarying) {
     const GLuint vertex = compile(GL_VERTEX_SHADER, vertexFile);
@@ -75,21 +62,17 @@ GlProgram loadShaderProgram(const std::filesystem::path& vertexFile, const std::
     glAttachShader(program.get(), vertex);
     glAttachShader(program.get(), fragment);
     if (capturedVarying != nullptr) glTransformFeedbackVaryings(program.get(), 1, &capturedVarying, GL_INTERLEAVED_ATTRIBS);
+    glLinkProgram(program.get());
     glDeleteShader(vertex); // flagged for deletion; freed with the program
     glDeleteShader(fragment);
-    link(program, vertexFile.filename().string() + " + " + fragmentFile.filename().string());
-    return program;
-}
-
-GlProgram loadTransformFeedbackProgram(const std::filesystem::path& vertexFile,
-                                       std::initializer_list<const char*> capturedVaryings) {
-    const GLuint vertex = compile(GL_VERTEX_SHADER, vertexFile);
-    GlProgram program(glCreateProgram());
-    glAttachShader(program.get(), vertex);
-    glTransformFeedbackVaryings(program.get(), GLsizei(capturedVaryings.size()), capturedVaryings.begin(),
-                                GL_SEPARATE_ATTRIBS);
-    glDeleteShader(vertex);
-    link(program, vertexFile.filename().string());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        std::vector<char> log(1024);
+        glGetProgramInfoLog(program.get(), GLsizei(log.size()), nullptr, log.data());
+        throw std::runtime_error("linking " + vertexFile.filename().string() + " + " +
+                                 fragmentFile.filename().string() + ": " + firstLine(log.data()));
+    }
     return program;
 }
 

@@ -89,24 +89,17 @@ public:
 private:
     void uploadGrains(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings);
     void uploadGpuGrains(const sandcore::Scene& scene, const RenderSettings& settings);
-    /// The GPU path's per-grain pass (grain_gpu_prepass.vert): each instance's display position,
-    /// normal and inner flag into the pass buffers, once per frame; returns the instances.
-    std::int64_t runGrainPass(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings) const;
+    /// Sets the GPU path's uniforms, binds its grains; returns the instances to draw.
+    std::int64_t setGpuUniforms(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings) const;
     void drawGrains(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection,
                     float pixelScale);
     void drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection);
     void uploadPatternColors(SandPalette palette); // S12: the pattern colours of a palette
 
-    GlProgram grainProgram_, grainGpuProgram_, grainPassProgram_, hullProgram_;
+    GlProgram grainProgram_, grainGpuProgram_, hullProgram_;
     GlVertexArray grainArray_, hullArray_, lineArray_;
     GlBuffer grainBuffer_, hullBuffer_, lineBuffer_;
     GlBuffer quadCorners_; // indices of the quads' triangles: 0 1 2, 0 2 3 per sub-grain
-    // What the per-grain pass writes, one entry per instance (display position RGBA32F; packed
-    // normal and inner flag R32UI), and the buffer textures the draw reads them through.
-    // Scratch of a frame: a read-back of positions may rewrite them.
-    mutable GlBuffer passCentres_, passShades_;
-    GlTexture passCentresTexture_, passShadesTexture_;
-    mutable std::int64_t passCapacity_ = 0; // instances the pass buffers hold
     ModelSurfaces model_; // S10: the model as modelled
     GlTexture patternOffsets_, patternColors_;
     GrainInstanceBuilder builder_;

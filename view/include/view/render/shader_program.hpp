@@ -5,7 +5,6 @@
 #include "view/render/gl_objects.hpp"
 
 #include <filesystem>
-#include <initializer_list>
 #include <string>
 
 namespace sandglass {
@@ -18,11 +17,5 @@ std::filesystem::path shaderDirectory();
 /// capturedVarying: a vertex output that transform feedback records (tests read positions back).
 GlProgram loadShaderProgram(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
                             const char* capturedVarying = nullptr);
-
-/// A vertex shader alone whose outputs transform feedback records, each into its own buffer
-/// (binding 0, 1, ... in the order given): a pass that computes and draws nothing. Throws as
-/// loadShaderProgram.
-GlProgram loadTransformFeedbackProgram(const std::filesystem::path& vertexFile,
-                                       std::initializer_list<const char*> capturedVaryings);
 
 } // namespace sandglass
