@@ -169,8 +169,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::IsMember({"gpu", "cpu"}))
         ->capture_default_str();
     cmd->add_flag("--json", options->json,
-                  "print one JSON object (fps, frame_ms, ...; with --frames also upload_bytes_per_frame, moves_per_step, "
-                  "cpu_ms_per_frame, app_cpu_ms_per_frame, upkeep_ms_per_step)");
+                  "print one JSON object (fps, frame_ms, gpu_frame_ms, ...; with --frames also upload_bytes_per_frame, "
+                  "moves_per_step, cpu_ms_per_frame, app_cpu_ms_per_frame, gpu_ms_per_frame, upkeep_ms_per_step)");
     cmd->callback([options, &exitCode] { exitCode = runRender(*options); });
 }
 
