@@ -166,10 +166,41 @@ TEST_CASE("V8: a software GL draws hidden inner grains from the per-grain flags,
         REQUIRE(app);
         app->renderFrame(0.0);
         const GrainGpuStore& store = app->renderer().gpuStore();
-        // The tests draw with Mesa's llvmpipe; on a GPU the cell bits serve both.
+        // The tests draw with Mesa's llvmpipe; on a GPU the cell bits serve both at few vertices a grain.
+        CHECK(store.flagsFromBits() == !hiddenInnerGrainsFromList(store.softwareRenderer(), app->state().render));
         CHECK(store.flagsFromBits() == (inner || !store.softwareRenderer()));
         app->runSteps(3);
         app->renderFrame(0.0);
         CHECK(!app->renderer().stats().fullUpload);
+    }
+}
+
+TEST_CASE("V8: with inner grains hidden, a GPU draws from the visible list once a grain costs 8 vertex runs") {
+    RenderSettings render;
+    render.innerGrains = true;
+    for (bool software : {false, true}) CHECK_FALSE(hiddenInnerGrainsFromList(software, render)); // shown: the bits
+    render.innerGrains = false;
+    render.mode = RenderMode::Points;
+    render.grainsPerCell = 1;
+    CHECK(hiddenInnerGrainsFromList(true, render)); // a software GL: always the list
+    struct Case {
+        RenderMode mode;
+        int grainsPerCell;
+        int vertices;
+        bool fromList;
+    };
+    const Case cases[] = {{RenderMode::Points, 1, 1, false},          {RenderMode::Points, 4, 4, false},
+                          {RenderMode::Sprites, 7, 7, false},         {RenderMode::Points, 8, 8, true},
+                          {RenderMode::Points, 20, 20, true},         {RenderMode::Billboards, 1, 4, false},
+                          {RenderMode::Billboards, 2, 8, true},       {RenderMode::PseudoBillboards, 20, 80, true},
+                          {RenderMode::Points, 0, 1, false},          {RenderMode::PseudoBillboards, 100, 128, true}};
+    for (const Case& c : cases) {
+        CAPTURE(int(c.mode));
+        CAPTURE(c.grainsPerCell);
+        render.mode = c.mode;
+        render.grainsPerCell = c.grainsPerCell; // out of 1..32: clamped as the renderer clamps it
+        CHECK(verticesPerGrain(render) == c.vertices);
+        CHECK(hiddenInnerGrainsFromList(false, render) == c.fromList);
+        CHECK(hiddenInnerGrainsFromList(true, render));
     }
 }

@@ -143,9 +143,20 @@ bool isSoftwareRenderer(std::string_view glRenderer) {
     return false;
 }
 
+int verticesPerGrain(const RenderSettings& settings) {
+    const int perCell = std::clamp(settings.grainsPerCell, 1, kMaxGrainsPerCell);
+    const bool quads = settings.mode == RenderMode::Billboards || settings.mode == RenderMode::PseudoBillboards;
+    return quads ? 4 * perCell : perCell;
+}
+
+bool hiddenInnerGrainsFromList(bool softwareRenderer, const RenderSettings& settings) {
+    return !settings.innerGrains && (softwareRenderer || verticesPerGrain(settings) >= kVisibleListVertices);
+}
+
 bool GrainGpuStore::usesCellBits(const sandcore::Scene& scene, const RenderSettings& settings) const {
     if (cellBitsChoice_ == CellBitsChoice::Never) return false;
-    if (cellBitsChoice_ == CellBitsChoice::ByRenderer && softwareRenderer_ && !settings.innerGrains) return false;
+    if (cellBitsChoice_ == CellBitsChoice::ByRenderer && hiddenInnerGrainsFromList(softwareRenderer_, settings))
+        return false;
     std::int64_t words = 0;
     for (sandcore::GridLevel level : kLevels) words += 2 * cellBitWordsOf(scene.grid(level));
     return holds(scene) && words <= maxTexels_;

@@ -40,6 +40,20 @@ namespace sandglass {
 /// and swrast, SwiftShader, and the "Software Rasterizer" / "GDI Generic" fallbacks.
 bool isSoftwareRenderer(std::string_view glRenderer);
 
+/// The vertex shader's runs per grain drawn: one per sub-grain, four (the corners) for quads.
+int verticesPerGrain(const RenderSettings& settings);
+
+/// Vertices per grain from which a GPU draws hidden inner grains faster from the visible list
+/// than from the cell bits, dearer upkeep included (docs/rendering.md, "Which path draws").
+inline constexpr int kVisibleListVertices = 8;
+
+/// True when, with inner grains hidden, the visible list (per-grain flags) should serve rather
+/// than the cell bits: always on a software GL, whose vertex work runs on the CPU; on a GPU when
+/// a grain costs kVisibleListVertices vertex runs or more. From the bits every grain is an
+/// instance and runs the vertex shader to find out it is inner (at a million grains 9 in 10
+/// are); from the list only the visible ones are instances, but the CPU keeps their flags.
+bool hiddenInnerGrainsFromList(bool softwareRenderer, const RenderSettings& settings);
+
 /// A grain's place as the vertex shader reads it (RGBA32UI).
 struct GrainPlace {
     std::uint32_t cell = 0;      ///< cell index in its grid
@@ -73,11 +87,9 @@ public:
     bool holds(const sandcore::Scene& scene) const { return std::int64_t(scene.grains().size()) <= maxTexels_; }
     /// True when the grains are drawn from the occupancy bits under these settings (then a
     /// surface without per-grain flags will do): the bits of the scene's grids fit in one buffer
-    /// texture of this GL, and the GL's vertex work runs on a GPU or inner grains are drawn. A
-    /// software GL (llvmpipe and its kind) runs the vertex shader on the CPU: with inner grains
-    /// hidden, the visible list of the per-grain path draws a tenth of the instances at a million
-    /// grains, and that outweighs its dearer upkeep. SANDGLASS_GPU_CELL_BITS=0 or 1 in the
-    /// environment when the store is made forces either path (to compare them).
+    /// texture of this GL, and inner grains are drawn or hiddenInnerGrainsFromList says the bits
+    /// serve. SANDGLASS_GPU_CELL_BITS=0 or 1 in the environment when the store is made forces
+    /// either path (to compare them).
     bool usesCellBits(const sandcore::Scene& scene, const RenderSettings& settings) const;
     /// True when GL_RENDERER names a renderer that rasterizes on the CPU.
     bool softwareRenderer() const { return softwareRenderer_; }
