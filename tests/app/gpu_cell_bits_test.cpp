@@ -82,7 +82,8 @@ void fillEdgesAndSeam(sandcore::Scene& scene) {
 // uploads only changes on the GPU path.
 std::vector<RgbImage> picturesOf(Path path, bool light, bool inner, bool canvas, int steps, std::int64_t* innerGrains) {
     const GrainFlagsSwitch perGrain(path == Path::GpuGrainFlags);
-    ApplicationOptions options = canvas ? testing::canvasOptions(200, 160, 16, "cell bits on the GPU")
+    // Canvas rows of 20 cells: the 32-bit words of the cell bits begin and end inside rows too.
+    ApplicationOptions options = canvas ? testing::canvasOptions(200, 160, 20, "cell bits on the GPU")
                                         : testing::proceduralHourglassOptions(160, 160, 24, "cell bits on the GPU");
     options.initial.render = renderSettings(path, light, inner);
     options.initial.simulationRunning = false;
