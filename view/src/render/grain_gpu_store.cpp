@@ -145,7 +145,7 @@ bool isSoftwareRenderer(std::string_view glRenderer) {
 
 int verticesPerGrain(const RenderSettings& settings) {
     const int perCell = std::clamp(settings.grainsPerCell, 1, kMaxGrainsPerCell);
-    const bool quads = settings.mode == RenderMode::Billboards || settings.mode == RenderMode::PseudoBillboards;
+    const bool quads = drawsQuads(settings.mode);
     return quads ? 4 * perCell : perCell;
 }
 

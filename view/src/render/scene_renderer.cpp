@@ -327,7 +327,7 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
         gpuStore_.bind(kGrainTexturesUnit, kColumnNormalsUnit);
     else
         glBindVertexArray(grainArray_.get());
-    const bool quads = settings.mode == RenderMode::Billboards || settings.mode == RenderMode::PseudoBillboards;
+    const bool quads = drawsQuads(settings.mode);
     if (quads) {
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, quadCorners_.get()); // kept by the bound vertex array
         glDrawElementsInstanced(GL_TRIANGLES, 6 * perCell, GL_UNSIGNED_SHORT, nullptr, GLsizei(instanceCount_));

@@ -20,6 +20,9 @@ enum class RenderMode : std::uint8_t {
     PseudoBillboards ///< quads sharing one orientation from the camera's rotation, set once per frame
 };
 
+/// True for the modes that draw each sub-grain as a quad (4 corners, 2 triangles).
+constexpr bool drawsQuads(RenderMode mode) { return mode == RenderMode::Billboards || mode == RenderMode::PseudoBillboards; }
+
 /// Every render mode in panel order.
 inline constexpr RenderMode kRenderModes[] = {RenderMode::Points, RenderMode::Sprites, RenderMode::Billboards,
                                               RenderMode::PseudoBillboards};
