@@ -144,7 +144,7 @@ bool isSoftwareRenderer(std::string_view glRenderer) {
 }
 
 int verticesPerGrain(const RenderSettings& settings) {
-    const int perCell = std::clamp(settings.grainsPerCell, 1, kMaxGrainsPerCell);
+    const int perCell = drawnGrainsPerCell(settings);
     const bool quads = drawsQuads(settings.mode);
     return quads ? 4 * perCell : perCell;
 }

@@ -287,7 +287,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
 
 void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera& camera,
                                const float* viewProjection, float pixelScale) {
-    const int perCell = std::clamp(settings.grainsPerCell, 1, kMaxGrainsPerCell);
+    const int perCell = drawnGrainsPerCell(settings);
     // From the bits every grain is an instance and the shader drops the inner ones.
     const bool dropsInner = path_ == GrainPath::GpuInterpolated && gpuStore_.flagsFromBits() && !settings.innerGrains;
     stats_.grainsDrawn = dropsInner ? instanceCount_ - stats_.innerGrains : instanceCount_;

@@ -6,6 +6,7 @@
 
 #include "sandcore/normals.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -69,5 +70,10 @@ struct RenderSettings {
     sandcore::NormalMethod normals = sandcore::NormalMethod::OccupancyGradient; ///< R12 estimate used by V3; beyond the thesis (its method is ColumnHeights)
     GrainPath grainPath = GrainPath::GpuInterpolated; ///< V8 upload path; both draw the same picture
 };
+/// The sub-grains drawn per cell: grainsPerCell kept to 1..kMaxGrainsPerCell.
+inline int drawnGrainsPerCell(const RenderSettings& settings) {
+    return std::clamp(settings.grainsPerCell, 1, kMaxGrainsPerCell);
+}
+
 
 } // namespace sandglass
