@@ -75,5 +75,4 @@ inline int drawnGrainsPerCell(const RenderSettings& settings) {
     return std::clamp(settings.grainsPerCell, 1, kMaxGrainsPerCell);
 }
 
-
 } // namespace sandglass
