@@ -355,7 +355,13 @@ Int3 Scene::gridOrigin(GridLevel level) const {
     return level == GridLevel::Upper ? Int3{0, lower_.size().y - 1, 0} : Int3{0, 0, 0};
 }
 
-void Scene::setSeed(std::uint64_t seed) { settings_.seed = seed; }
+void Scene::setSeed(std::uint64_t seed) {
+    if (seed == settings_.seed) return;
+    settings_.seed = seed;
+    // The granular thresholds are dithered by the seed: a grain that could not slide may now.
+    // (A classic grain sleeps only where no move is open, whatever the seed picks among them.)
+    if (granular_) markEverythingAwake();
+}
 
 void Scene::setThreads(int threads) {
     if (threads < 1) throw std::invalid_argument("threads must be at least 1");

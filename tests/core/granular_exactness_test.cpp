@@ -138,6 +138,25 @@ TEST_CASE("granular: switching sleeping off and on mid-run keeps the result") {
     }
 }
 
+TEST_CASE("granular: a new seed wakes the grains at rest, whose thresholds it redraws") {
+    // A slide's threshold is dithered by a hash of the seed (granular_rules.hpp): a pile that
+    // stands under one seed may not under another, so a sleeping grain must look again. Piles
+    // settled under one seed, then stepped on under another, sleeping and in a full sweep.
+    for (std::uint64_t seed : {1ull, 2ull, 3ull}) {
+        CAPTURE(seed);
+        Scene sleeping = granularSculpture(seed, 24, 33.0f, 1.0f);
+        for (int i = 0; i < 4'000 && !sleeping.settled(); ++i) sleeping.step();
+        REQUIRE(sleeping.settled());
+        Scene full = granularSculpture(seed, 24, 33.0f, 1.0f);
+        full.restore(sleeping.snapshot());
+        full.setSleeping(false);
+        for (Scene* scene : {&sleeping, &full}) scene->setSeed(seed + 100);
+        requireSameEveryStep(sleeping, full, 1);
+        CHECK(full.counters().movesLastStep > 0); // the new thresholds let some grains go
+        requireSameEveryStep(sleeping, full, 60);
+    }
+}
+
 TEST_CASE("granular: a scene restored while grains fall goes on as the original") {
     // The restored sweeps must learn which grains are in motion (their speeds come from the
     // snapshot, not from a visit): a grain taken for resting would stop in mid-air.

@@ -100,7 +100,7 @@ public:
     Int3 gridOrigin(GridLevel level) const;
 
     const StepSettings& settings() const { return settings_; } ///< how steps run
-    void setSeed(std::uint64_t seed);   ///< changes the randomness of later steps
+    void setSeed(std::uint64_t seed);   ///< changes the randomness of later steps (granular: wakes every grain)
     void setThreads(int threads);       ///< 1 or more; the result does not change
     /// The threads its steps share, or null on one thread. Idle between steps: work that follows
     /// a step (the surface upkeep, a renderer's stores) may share them too, never during one.
