@@ -18,7 +18,21 @@ constexpr std::uint32_t kMaxFallSpeed = 4096u * kOneCell;
 // Stream of the fixed per-cell dither, apart from the per-step streams (the grid levels 0, 1).
 constexpr std::uint64_t kDitherStream = 0x3d;
 
+// The dithers of a cell: one hash of (seed, grid, cell), then 8 offsets' bytes to a draw.
+std::uint64_t ditherCellHash(std::uint64_t seed, std::uint64_t stream, std::uint32_t from) {
+    return mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
+}
+std::uint64_t ditherGroup(std::uint64_t cellHash, int group) { return mix64(cellHash + std::uint64_t(group) * 0x9e3779b97f4a7c15ull); }
+
 } // namespace
+
+bool GranularRules::needsDepth(std::uint64_t seed, std::uint64_t stream, std::uint32_t from, int k, int depth) const {
+    const std::uint32_t threshold = offsets_[std::size_t(k)].thresholdQ8;
+    const int whole = int(threshold >> 8);
+    if (whole != depth - 1) return whole >= depth;
+    const auto dither = (ditherGroup(ditherCellHash(seed, stream, from), k / 8) >> (k % 8 * 8)) & 0xffu;
+    return dither > restComplement_[std::size_t(k)];
+}
 
 // Measured: the mean angle of a cone of 40,000 grains poured at one column (granular_probe pour,
 // seed 1) for each slope T. Grains find the lowest of the thresholds around them, so the cone
@@ -279,10 +293,9 @@ GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty,
     // dither per cell and offset (8 bits each, 8 offsets to a draw). The slides that need d cells
     // are a mask; layer by layer down, those whose column ends above it drop out.
     if (!onVessel && (open & (wholeAtLeast_[2] | wholeExactly_[1]))) {
-        const std::uint64_t cellHash = mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
+        const std::uint64_t cellHash = ditherCellHash(seed, stream, from);
         std::uint64_t dithers[kOffsets / 8];
-        for (int group = 0; group < kOffsets / 8; ++group)
-            dithers[group] = mix64(cellHash + std::uint64_t(group) * 0x9e3779b97f4a7c15ull);
+        for (int group = 0; group < kOffsets / 8; ++group) dithers[group] = ditherGroup(cellHash, group);
         const std::uint64_t carry = carriesOf(dithers, restComplement_);
         std::uint64_t deep = ~std::uint64_t{0}; // columns EMPTY from layer y - 2 down to layer y - d
         for (int d = 2; d <= maxDrop_; ++d) {

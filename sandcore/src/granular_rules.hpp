@@ -129,6 +129,15 @@ public:
         const auto& [first, count] = nearSlideSpans_[std::size_t(bit)];
         return {nearSlides_.data() + first, count};
     }
+    /// True when the grain in cell `from` of grid `stream` (off the vessel) needs the column of
+    /// slide k at least `depth` >= 2 cells deep: the dither of its threshold is fixed per cell
+    /// and offset, so a wake can tell that a cell emptied deeper down is none of its business.
+    bool needsDepth(std::uint64_t seed, std::uint64_t stream, std::uint32_t from, int k, int depth) const;
+    /// The slide (index into offset()) to the column (dx, dz) away, both within kGranularReach.
+    static constexpr int offsetIndex(int dx, int dz) {
+        const int bit = (dz + kGranularReach) * kWindow + dx + kGranularReach;
+        return bit < kOffsets / 2 ? bit : bit - 1; // the window's centre has no slide
+    }
     /// g in cells per step squared, 16.16 fixed point.
     std::uint32_t gravity() const { return gravity_; }
     /// The slope T the thresholds use for the asked angle (after calibration).

@@ -176,13 +176,14 @@ std::uint64_t innerWindow(const EmptyRows9& rows) {
 // other grain gains nothing from (x, z) now, and whatever later opens such a slide (a cell of the
 // path or the target emptying, the column below deepening) wakes it then. In the layers above,
 // those whose sideways path towards (x, z)'s column is EMPTY at their level (the only one of their
-// options that (x, y, z) can widen); there the grains beside the column are always woken. Each
+// options that the emptied cell can widen) and whose slide looks as deep as the emptied cell
+// (deepEnoughForSlidesInto); the column above it is EMPTY up to layer y (wakeForGranular). Each
 // row's 7 bits are shifted into place and ANDed with the occupied bits, as wakeSpan does, so EMPTY
 // and INVALID cells stay asleep. That is exact: when this runs, during the sweep
 // of layer y or below, no grain can enter those cells before they are visited in this step
 // (grains only move down, and layer y and those above have not been swept yet), and one that
 // enters later is woken by its move.
-void GridSweep::wakeGrainsAround(int x, int y, int z, int layersAbove) {
+void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove) {
     constexpr int reach = kGranularReach, window = kGranularWindow;
     const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
     const std::size_t layerRow = std::size_t(y) * std::size_t(size_.z);
@@ -226,14 +227,18 @@ void GridSweep::wakeGrainsAround(int x, int y, int z, int layersAbove) {
             if (!gains) woken &= ~(std::uint64_t{1} << bit);
         }
     }
-    if (woken & ~kWindowCentre) {
+    if (layersAbove > 0) {
+        // In the layers above, a grain gains only when its sideways path towards the column is
+        // EMPTY, and only if its slide into the column looks as deep as (x, y - layersAbove, z).
+        if (!clearRead) clear = empty_.window<kGranularReach>(x, y, z);
+        woken &= granular_->grainsWithOpenPathTowardsCentre(clear);
+        if (woken) woken = deepEnoughForSlidesInto(grid, woken, x, y, z, layersAbove);
+    } else if (woken & ~kWindowCentre) {
         // A grain two or three columns away gains, in (x, z)'s layer, only through a path across
         // (x, z) that is EMPTY from it up to (x, z) (the rest of the path is its own business: when
-        // a cell of it empties later, that wakes it); in the layers above, only when its sideways
-        // path towards the column is EMPTY.
+        // a cell of it empties later, that wakes it).
         if (!clearRead) clear = empty_.window<kGranularReach>(x, y, z);
-        woken &= kWindowCentre | (layersAbove == 0 ? granular_->grainsWithOpenPathThroughCentre(clear)
-                                                   : granular_->grainsWithOpenPathTowardsCentre(clear));
+        woken &= kWindowCentre | granular_->grainsWithOpenPathThroughCentre(clear);
     }
     for (int zz = z0; zz <= z1; ++zz) {
         const std::uint64_t rowMask = ((woken >> ((zz - z + reach) * window)) & ((1u << window) - 1)) >> dropped;
@@ -245,6 +250,33 @@ void GridSweep::wakeGrainsAround(int x, int y, int z, int layersAbove) {
     }
 }
 
+// Of the grains `woken` (window bits around (x, z) in layer y) whose slide into (x, z)'s column
+// is open at their level, those that (x, y - layersAbove, z) emptying can let go. The slide's
+// need (how deep the column must be) is fixed per grain and slide (granular_rules.hpp), so:
+// with the cell layersAbove >= 2 down, only a grain that needs that depth gains (one that needs
+// less had the slide before, or lacks it for a cell above); with the cell right below its level
+// (layersAbove 1, the slide's target), a grain that needs two cells or more gains nothing while
+// the cell under the target is taken, unless it lies on the vessel (it needs one cell there). The
+// rest may gain and stay woken; what opens their slide later (the cell under the target
+// emptying, layersAbove 2 for them) wakes them then.
+std::uint64_t GridSweep::deepEnoughForSlidesInto(const CellGrid& grid, std::uint64_t woken, int x, int y, int z,
+                                                 int layersAbove) const {
+    if (layersAbove == 1 && y >= 2 && empty_.isEmpty(x, y - 2, z)) return woken; // the column may be deep enough
+    constexpr int reach = kGranularReach;
+    const auto stream = std::uint64_t(bottomIsOutlet_ ? GridLevel::Upper : GridLevel::Lower);
+    for (std::uint64_t grains = woken; grains; grains &= grains - 1) {
+        const int bit = __builtin_ctzll(grains);
+        const int dx = bit % kGranularWindow - reach, dz = bit / kGranularWindow - reach; // the grain, from (x, z)
+        const std::uint32_t from = grid.index(x + dx, y, z + dz);
+        const int slide = GranularRules::offsetIndex(-dx, -dz);
+        const bool gains = layersAbove >= 2 ? granular_->needsDepth(seed_, stream, from, slide, layersAbove)
+                                            : !granular_->needsDepth(seed_, stream, from, slide, 2) ||
+                                                  grid[from - grid.layerSize()] == kInvalid;
+        if (!gains) woken &= ~(std::uint64_t{1} << bit);
+    }
+    return woken;
+}
+
 // The grains whose granular options an EMPTY (x, y, z) can widen (granular_rules.hpp says what a
 // grain reads): in layer y, those within 3 columns whose sideways path may cross it; above it,
 // the grain right above, which may now fall; and in each layer up to maxDrop above, those whose
@@ -254,14 +286,14 @@ void GridSweep::wakeGrainsAround(int x, int y, int z, int layersAbove) {
 // the first cell of it that is not EMPTY ends the search (only the grain in it, when it lies right
 // above (x, y, z), can gain: it may fall).
 void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
-    if (y > 0) wakeGrainsAround(x, y, z, 0); // layer 0 only falls or transitions
+    if (y > 0) wakeGrainsAround(grid, x, y, z, 0); // layer 0 only falls or transitions
     const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
     for (int layer = y + 1; layer <= top; ++layer) {
         if (!empty_.isEmpty(x, layer, z)) { // the kept bits: a column's cells lie a layer apart
             if (layer == y + 1 && grid.at(x, layer, z) >= 0) wakeAt(x, layer, z);
             break;
         }
-        wakeGrainsAround(x, layer, z, layer - y);
+        wakeGrainsAround(grid, x, layer, z, layer - y);
     }
 }
 

@@ -63,6 +63,8 @@ public:
     /// The rules to apply: the granular ones (PH1), or the thesis's when null. Not owned. Every
     /// grain counts as at rest afterwards (the scene zeroes the fall states when the rules change).
     void setGranular(const GranularRules* granular);
+    /// The seed of the granular thresholds' dither (StepSettings::seed): the wakes read it.
+    void setSeed(std::uint64_t seed) { seed_ = seed; }
     /// Granular: the grain now in cell (x, y, z) may be in motion (its fall state is not zero).
     /// Whoever writes a fall state outside a sweep says so here; a cell whose bit is clear holds
     /// no grain in motion, so a visit need not read its state.
@@ -149,7 +151,8 @@ private:
     void prefetchFirstAwake(const CellGrid& grid, int y, int z) const;
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
-    void wakeGrainsAround(int x, int y, int z, int layersAbove);
+    void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove);
+    std::uint64_t deepEnoughForSlidesInto(const CellGrid& grid, std::uint64_t woken, int x, int y, int z, int layersAbove) const;
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
     int awakeRowsInLayer(int y) const;
 
@@ -157,6 +160,7 @@ private:
     bool bottomIsOutlet_;
     GridSweep* above_ = nullptr;
     const GranularRules* granular_ = nullptr;
+    std::uint64_t seed_ = 0;
     bool deferWakesAbove_ = false;
     std::vector<std::uint32_t> deferredWakesAbove_; // x + sizeX * z of the outlet cells to wake
     int rowWords_;                       // 64-bit words per row of awake bits

@@ -66,8 +66,10 @@ void Scene::configurePhysics() {
     neckFlow_ = granular && kind_ == SceneKind::Hourglass
                     ? std::make_unique<NeckFlow>(upperLayout_.openCellsOfBottomLayer(), double(physics.gravity))
                     : nullptr;
-    upperSweep_->setGranular(granular_.get());
-    lowerSweep_->setGranular(granular_.get());
+    for (GridSweep* sweep : {upperSweep_.get(), lowerSweep_.get()}) {
+        sweep->setGranular(granular_.get());
+        sweep->setSeed(settings_.seed);
+    }
 }
 
 void Scene::setPhysics(const PhysicsSettings& physics) {
@@ -358,6 +360,8 @@ Int3 Scene::gridOrigin(GridLevel level) const {
 void Scene::setSeed(std::uint64_t seed) {
     if (seed == settings_.seed) return;
     settings_.seed = seed;
+    upperSweep_->setSeed(seed);
+    lowerSweep_->setSeed(seed);
     // The granular thresholds are dithered by the seed: a grain that could not slide may now.
     // (A classic grain sleeps only where no move is open, whatever the seed picks among them.)
     if (granular_) markEverythingAwake();
