@@ -147,6 +147,7 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
                     if (o.pathMask >> cell & 1)
                         setBit9(slide.path, cell % kWindow - kGranularReach + gx, cell / kWindow - kGranularReach + gz);
                 setBit9(slide.target, o.dx + gx, o.dz + gz);
+                slide.offset = k;
                 nearSlides_.push_back(slide);
             }
         nearSlideSpans_[std::size_t(bit)].second = nearSlides_.size() - nearSlideSpans_[std::size_t(bit)].first;

@@ -211,18 +211,29 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         // along and ends over an EMPTY cell of the layer below (when the target or a cell of the
         // path empties later, or the column there deepens, that wakes it). Each such slide is two
         // masks of the 9x9 columns around (x, z) (GranularRules::nearSlidesThroughCentre).
-        EmptyRows9 here, below;
+        // A slide that needs its column two cells deep also needs the cell under its target EMPTY
+        // (the cell under it emptying later wakes the grain, as a layer above it), unless the grain
+        // lies on the vessel, where one cell is enough.
+        EmptyRows9 here, below, underTargets{};
         empty_.rowsAround<kGranularReach + 1>(x, y, z, here);
         empty_.rowsAround<kGranularReach + 1>(x, y - 1, z, below);
-        const Window9 hereCells = packed(here), belowCells = packed(below);
+        if (y >= 2) empty_.rowsAround<kGranularReach + 1>(x, y - 2, z, underTargets); // else never deep enough
+        const Window9 hereCells = packed(here), belowCells = packed(below), underCells = packed(underTargets);
         clear = innerWindow(here);
         clearRead = true;
         for (std::uint64_t near = woken & kWindowCentre; near; near &= near - 1) {
             const int bit = __builtin_ctzll(near);
+            const std::uint32_t from = grid.index(x + bit % window - reach, y, z + bit / window - reach);
+            int onVessel = -1; // read when first needed
             const auto slides = granular_->nearSlidesThroughCentre(bit);
             const bool gains = std::any_of(slides.begin(), slides.end(), [&](const GranularRules::NearSlide& slide) {
-                return !((slide.path[0] & ~hereCells[0]) | (slide.path[1] & ~hereCells[1])) &&
-                       ((slide.target[0] & belowCells[0]) | (slide.target[1] & belowCells[1]));
+                if ((slide.path[0] & ~hereCells[0]) | (slide.path[1] & ~hereCells[1])) return false;
+                if (!((slide.target[0] & belowCells[0]) | (slide.target[1] & belowCells[1]))) return false;
+                if ((slide.target[0] & underCells[0]) | (slide.target[1] & underCells[1])) return true;
+                const int whole = granular_->thresholdWholeCells(slide.offset);
+                if (whole == 0 || (whole == 1 && !granular_->needsDepth(seed_, stream(), from, slide.offset, 2))) return true;
+                if (onVessel < 0) onVessel = grid[from - grid.layerSize()] == kInvalid;
+                return onVessel == 1;
             });
             if (!gains) woken &= ~(std::uint64_t{1} << bit);
         }
@@ -263,14 +274,13 @@ std::uint64_t GridSweep::deepEnoughForSlidesInto(const CellGrid& grid, std::uint
                                                  int layersAbove) const {
     if (layersAbove == 1 && y >= 2 && empty_.isEmpty(x, y - 2, z)) return woken; // the column may be deep enough
     constexpr int reach = kGranularReach;
-    const auto stream = std::uint64_t(bottomIsOutlet_ ? GridLevel::Upper : GridLevel::Lower);
     for (std::uint64_t grains = woken; grains; grains &= grains - 1) {
         const int bit = __builtin_ctzll(grains);
         const int dx = bit % kGranularWindow - reach, dz = bit / kGranularWindow - reach; // the grain, from (x, z)
         const std::uint32_t from = grid.index(x + dx, y, z + dz);
         const int slide = GranularRules::offsetIndex(-dx, -dz);
-        const bool gains = layersAbove >= 2 ? granular_->needsDepth(seed_, stream, from, slide, layersAbove)
-                                            : !granular_->needsDepth(seed_, stream, from, slide, 2) ||
+        const bool gains = layersAbove >= 2 ? granular_->needsDepth(seed_, stream(), from, slide, layersAbove)
+                                            : !granular_->needsDepth(seed_, stream(), from, slide, 2) ||
                                                   grid[from - grid.layerSize()] == kInvalid;
         if (!gains) woken &= ~(std::uint64_t{1} << bit);
     }
