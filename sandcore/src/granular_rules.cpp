@@ -131,26 +131,28 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             if (offsets_[std::size_t(k)].pathMask >> bit & 1) throughCell_.push_back(std::uint8_t(k));
         throughCellSpans_[std::size_t(bit)].second = throughCell_.size() - throughCellSpans_[std::size_t(bit)].first;
     }
-    // The grains beside c, seen from c (bit of the 9x9 columns around it: (dz + 4) * 9 + (dx + 4)).
+    // The slides across c, seen from c (bit of the 9x9 columns around it: (dz + 4) * 9 + (dx + 4)).
     auto setBit9 = [](std::uint64_t (&bits)[2], int dx, int dz) {
+        if (std::max(std::abs(dx), std::abs(dz)) > kGranularReach + 1)
+            throw std::logic_error("granular rules: a slide across a cell leaves the 9x9 columns around it");
         const int bit = (dz + kGranularReach + 1) * (kWindow + 2) + dx + kGranularReach + 1;
         bits[bit >> 6] |= std::uint64_t{1} << (bit & 63);
     };
     for (int bit = 0; bit < kWindow * kWindow; ++bit) {
-        nearSlideSpans_[std::size_t(bit)].first = nearSlides_.size();
+        slidesThroughCentreSpans_[std::size_t(bit)].first = slidesThroughCentre_.size();
         const int gx = bit % kWindow - kGranularReach, gz = bit / kWindow - kGranularReach; // the grain, from c
-        if (std::max(std::abs(gx), std::abs(gz)) == 1)
+        if (gx != 0 || gz != 0)
             for (std::uint8_t k : offsetsThrough((kGranularReach - gz) * kWindow + (kGranularReach - gx))) {
                 const Offset& o = offsets_[k];
-                NearSlide slide;
+                SlideThroughCentre slide;
                 for (int cell = 0; cell < kWindow * kWindow; ++cell)
                     if (o.pathMask >> cell & 1)
                         setBit9(slide.path, cell % kWindow - kGranularReach + gx, cell / kWindow - kGranularReach + gz);
                 setBit9(slide.target, o.dx + gx, o.dz + gz);
                 slide.offset = k;
-                nearSlides_.push_back(slide);
+                slidesThroughCentre_.push_back(slide);
             }
-        nearSlideSpans_[std::size_t(bit)].second = nearSlides_.size() - nearSlideSpans_[std::size_t(bit)].first;
+        slidesThroughCentreSpans_[std::size_t(bit)].second = slidesThroughCentre_.size() - slidesThroughCentreSpans_[std::size_t(bit)].first;
     }
     for (const Offset& o : offsets_) {
         std::uint64_t path = 0;

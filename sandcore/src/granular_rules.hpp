@@ -116,21 +116,22 @@ public:
         const auto& [first, count] = throughCellSpans_[std::size_t(bit)];
         return {throughCell_.data() + first, count};
     }
-    /// A slide of a grain beside an EMPTY cell c whose path crosses c, seen from c: its path's
+    /// A slide of a grain near an EMPTY cell c whose path crosses c, seen from c: its path's
     /// cells and its target, as bits (dz + 4) * 9 + (dx + 4) of the 9x9 columns around c (81 bits:
-    /// two words, bits 64..80 in the second).
-    struct NearSlide {
+    /// two words, bits 64..80 in the second). A path across c ends within a cell of c's column,
+    /// so every such slide lies inside those 9x9 columns.
+    struct SlideThroughCentre {
         std::uint64_t path[2] = {0, 0}; ///< the cells of the grain's layer it crosses (c included)
         std::uint64_t target[2] = {0, 0}; ///< the cell of the layer below it ends in (one bit)
         int offset = 0; ///< which of the 48 slides (offset())
     };
     /// The whole cells of slide k's threshold T|e|: its need is that, or one more with a carry.
     int thresholdWholeCells(int k) const { return int(offsets_[std::size_t(k)].thresholdQ8 >> 8); }
-    /// The slides of the grain at window bit `bit` (as in wakeMask, one of the 8 around c) whose
-    /// path crosses c: offsetsThrough seen from c, so a wake tests each with two masks.
-    std::span<const NearSlide> nearSlidesThroughCentre(int bit) const {
-        const auto& [first, count] = nearSlideSpans_[std::size_t(bit)];
-        return {nearSlides_.data() + first, count};
+    /// The slides of the grain at window bit `bit` (as in wakeMask) whose path crosses c:
+    /// offsetsThrough seen from c, so a wake tests each with two masks.
+    std::span<const SlideThroughCentre> slidesThroughCentre(int bit) const {
+        const auto& [first, count] = slidesThroughCentreSpans_[std::size_t(bit)];
+        return {slidesThroughCentre_.data() + first, count};
     }
     /// True when the grain in cell `from` of grid `stream` (off the vessel) needs the column of
     /// slide k at least `depth` >= 2 cells deep: the dither of its threshold is fixed per cell
@@ -194,8 +195,8 @@ private:
     // pathsTowardsCentre_ crosses a taken cell of row r.
     std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow> throughBlockedBy_{}, towardsBlockedBy_{};
     std::array<std::array<std::uint64_t, 16>, 16> grainsOfThroughPaths_{};
-    std::vector<NearSlide> nearSlides_;                                                         // nearSlidesThroughCentre, all bits
-    std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> nearSlideSpans_{};     // first, count
+    std::vector<SlideThroughCentre> slidesThroughCentre_;                                       // all bits
+    std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> slidesThroughCentreSpans_{}; // first, count
 };
 
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.

@@ -204,29 +204,28 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
     }
     std::uint64_t woken = granular_->wakeMask(layersAbove) & grains;
     if (!woken) return; // most calls: every grain around is awake already, or none is there
-    std::uint64_t clear = 0; // the EMPTY cells of this layer's window around (x, z), once read
-    bool clearRead = false;
-    if (layersAbove == 0 && (woken & kWindowCentre)) {
-        // A grain beside (x, z) gains only through a slide whose path crosses (x, z), is EMPTY all
-        // along and ends over an EMPTY cell of the layer below (when the target or a cell of the
-        // path empties later, or the column there deepens, that wakes it). Each such slide is two
-        // masks of the 9x9 columns around (x, z) (GranularRules::nearSlidesThroughCentre).
-        // A slide that needs its column two cells deep also needs the cell under its target EMPTY
-        // (the cell under it emptying later wakes the grain, as a layer above it), unless the grain
-        // lies on the vessel, where one cell is enough.
+    if (layersAbove == 0) {
+        // In (x, z)'s layer a grain gains only through a slide whose path crosses (x, z), is EMPTY
+        // all along and ends over an EMPTY cell of the layer below; a slide that needs its column
+        // two cells deep also needs the cell under its target EMPTY, unless the grain lies on the
+        // vessel, where one cell is enough. Whatever opens such a slide later (a cell of the path
+        // or the target emptying, the column deepening) wakes the grain then. The slides across
+        // (x, z) stay within the 9x9 columns around it, and each is two masks there
+        // (GranularRules::slidesThroughCentre). First the grains two or three columns away whose
+        // path is blocked before it reaches (x, z): a table look-up for all of them at once.
         EmptyRows9 here, below, underTargets{};
         empty_.rowsAround<kGranularReach + 1>(x, y, z, here);
+        if (woken & ~kWindowCentre) woken &= kWindowCentre | granular_->grainsWithOpenPathThroughCentre(innerWindow(here));
+        if (!woken) return;
         empty_.rowsAround<kGranularReach + 1>(x, y - 1, z, below);
         if (y >= 2) empty_.rowsAround<kGranularReach + 1>(x, y - 2, z, underTargets); // else never deep enough
         const Window9 hereCells = packed(here), belowCells = packed(below), underCells = packed(underTargets);
-        clear = innerWindow(here);
-        clearRead = true;
-        for (std::uint64_t near = woken & kWindowCentre; near; near &= near - 1) {
-            const int bit = __builtin_ctzll(near);
+        for (std::uint64_t candidates = woken; candidates; candidates &= candidates - 1) {
+            const int bit = __builtin_ctzll(candidates);
             const std::uint32_t from = grid.index(x + bit % window - reach, y, z + bit / window - reach);
             int onVessel = -1; // read when first needed
-            const auto slides = granular_->nearSlidesThroughCentre(bit);
-            const bool gains = std::any_of(slides.begin(), slides.end(), [&](const GranularRules::NearSlide& slide) {
+            const auto slides = granular_->slidesThroughCentre(bit);
+            const bool gains = std::any_of(slides.begin(), slides.end(), [&](const GranularRules::SlideThroughCentre& slide) {
                 if ((slide.path[0] & ~hereCells[0]) | (slide.path[1] & ~hereCells[1])) return false;
                 if (!((slide.target[0] & belowCells[0]) | (slide.target[1] & belowCells[1]))) return false;
                 if ((slide.target[0] & underCells[0]) | (slide.target[1] & underCells[1])) return true;
@@ -237,19 +236,11 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
             });
             if (!gains) woken &= ~(std::uint64_t{1} << bit);
         }
-    }
-    if (layersAbove > 0) {
+    } else {
         // In the layers above, a grain gains only when its sideways path towards the column is
         // EMPTY, and only if its slide into the column looks as deep as (x, y - layersAbove, z).
-        if (!clearRead) clear = empty_.window<kGranularReach>(x, y, z);
-        woken &= granular_->grainsWithOpenPathTowardsCentre(clear);
+        woken &= granular_->grainsWithOpenPathTowardsCentre(empty_.window<kGranularReach>(x, y, z));
         if (woken) woken = deepEnoughForSlidesInto(grid, woken, x, y, z, layersAbove);
-    } else if (woken & ~kWindowCentre) {
-        // A grain two or three columns away gains, in (x, z)'s layer, only through a path across
-        // (x, z) that is EMPTY from it up to (x, z) (the rest of the path is its own business: when
-        // a cell of it empties later, that wakes it).
-        if (!clearRead) clear = empty_.window<kGranularReach>(x, y, z);
-        woken &= kWindowCentre | granular_->grainsWithOpenPathThroughCentre(clear);
     }
     for (int zz = z0; zz <= z1; ++zz) {
         const std::uint64_t rowMask = ((woken >> ((zz - z + reach) * window)) & ((1u << window) - 1)) >> dropped;
