@@ -170,11 +170,11 @@ std::uint64_t innerWindow(const EmptyRows9& rows) {
 } // namespace
 
 // Wakes the grains of layer y at the cells of `mask` (GranularRules::wakeMask) around (x, z) that
-// may gain. In the emptied cell's own layer (layersAbove 0): a grain beside it when one of its
-// slides crosses (x, z) on a path EMPTY all along to an EMPTY cell of the layer below; one two or
-// three columns away when a path of its slides across (x, z) is EMPTY from it up to (x, z). Any
-// other grain gains nothing from (x, z) now, and whatever later opens such a slide (a cell of the
-// path or the target emptying, the column below deepening) wakes it then. In the layers above,
+// may gain. In the emptied cell's own layer (layersAbove 0): a grain within 3 columns when one of
+// its slides crosses (x, z) on a path EMPTY all along to an EMPTY cell of the layer below, deep
+// enough for it (or the grain lies on the vessel). Any other grain gains nothing from (x, z) now,
+// and whatever later opens such a slide (a cell of the path or the target emptying, the column
+// below deepening) wakes it then. In the layers above,
 // those whose sideways path towards (x, z)'s column is EMPTY at their level (the only one of their
 // options that the emptied cell can widen) and whose slide looks as deep as the emptied cell
 // (deepEnoughForSlidesInto); the column above it is EMPTY up to layer y (wakeForGranular). Each
