@@ -254,25 +254,30 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
 
 // Of the grains `woken` (window bits around (x, z) in layer y) whose slide into (x, z)'s column
 // is open at their level, those that (x, y - layersAbove, z) emptying can let go. The slide's
-// need (how deep the column must be) is fixed per grain and slide (granular_rules.hpp), so:
-// with the cell layersAbove >= 2 down, only a grain that needs that depth gains (one that needs
-// less had the slide before, or lacks it for a cell above); with the cell right below its level
-// (layersAbove 1, the slide's target), a grain that needs two cells or more gains nothing while
-// the cell under the target is taken, unless it lies on the vessel (it needs one cell there). The
-// rest may gain and stay woken; what opens their slide later (the cell under the target
-// emptying, layersAbove 2 for them) wakes them then.
+// need (how deep the column must be) is fixed per grain and slide (granular_rules.hpp), so only
+// a grain whose need reaches that deep gains (one that needs less had the slide before, or lacks
+// it for a cell above), and while the cell under the emptied one is taken, only one whose need
+// ends there; a grain on the vessel needs one cell, so only the target (layersAbove 1) matters to
+// it. The rest may gain and stay woken; what opens their slide later (the cell under the emptied
+// one emptying, a layer further down for them) wakes them then.
 std::uint64_t GridSweep::deepEnoughForSlidesInto(const CellGrid& grid, std::uint64_t woken, int x, int y, int z,
                                                  int layersAbove) const {
-    if (layersAbove == 1 && y >= 2 && empty_.isEmpty(x, y - 2, z)) return woken; // the column may be deep enough
+    // Under the emptied cell: when EMPTY too, a grain that needs more may gain as well.
+    const int under = y - layersAbove - 1;
+    const bool deeperEmpty = under >= 0 && empty_.isEmpty(x, under, z);
+    if (layersAbove == 1 && deeperEmpty) return woken;
     constexpr int reach = kGranularReach;
     for (std::uint64_t grains = woken; grains; grains &= grains - 1) {
         const int bit = __builtin_ctzll(grains);
         const int dx = bit % kGranularWindow - reach, dz = bit / kGranularWindow - reach; // the grain, from (x, z)
         const std::uint32_t from = grid.index(x + dx, y, z + dz);
         const int slide = GranularRules::offsetIndex(-dx, -dz);
-        const bool gains = layersAbove >= 2 ? granular_->needsDepth(seed_, stream(), from, slide, layersAbove)
-                                            : !granular_->needsDepth(seed_, stream(), from, slide, 2) ||
-                                                  grid[from - grid.layerSize()] == kInvalid;
+        // It gains when its need reaches the emptied cell and, unless the cell under it is EMPTY,
+        // ends there; on the vessel a grain needs one cell, so only the target can matter to it.
+        const bool needsMore = granular_->needsDepth(seed_, stream(), from, slide, layersAbove + 1);
+        const bool gains = layersAbove >= 2 ? granular_->needsDepth(seed_, stream(), from, slide, layersAbove) &&
+                                                  (deeperEmpty || !needsMore)
+                                            : !needsMore || grid[from - grid.layerSize()] == kInvalid;
         if (!gains) woken &= ~(std::uint64_t{1} << bit);
     }
     return woken;
