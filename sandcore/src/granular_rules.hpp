@@ -125,8 +125,6 @@ public:
         std::uint64_t target[2] = {0, 0}; ///< the cell of the layer below it ends in (one bit)
         int offset = 0; ///< which of the 48 slides (offset())
     };
-    /// The whole cells of slide k's threshold T|e|: its need is that, or one more with a carry.
-    int thresholdWholeCells(int k) const { return int(offsets_[std::size_t(k)].thresholdQ8 >> 8); }
     /// The slides of the grain at window bit `bit` (as in wakeMask) whose path crosses c:
     /// offsetsThrough seen from c, so a wake tests each with two masks.
     std::span<const SlideThroughCentre> slidesThroughCentre(int bit) const {

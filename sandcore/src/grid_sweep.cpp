@@ -229,8 +229,7 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
                 if ((slide.path[0] & ~hereCells[0]) | (slide.path[1] & ~hereCells[1])) return false;
                 if (!((slide.target[0] & belowCells[0]) | (slide.target[1] & belowCells[1]))) return false;
                 if ((slide.target[0] & underCells[0]) | (slide.target[1] & underCells[1])) return true;
-                const int whole = granular_->thresholdWholeCells(slide.offset);
-                if (whole == 0 || (whole == 1 && !granular_->needsDepth(seed_, stream(), from, slide.offset, 2))) return true;
+                if (!granular_->needsDepth(seed_, stream(), from, slide.offset, 2)) return true;
                 if (onVessel < 0) onVessel = grid[from - grid.layerSize()] == kInvalid;
                 return onVessel == 1;
             });
