@@ -32,28 +32,35 @@ inline unsigned emptyBitsOf8(const CellValue* cells) {
 #endif
 }
 
-/// One bit per cell of a grid, set while the cell is EMPTY, in rows of 64-bit words (row y * sizeZ + z)
-/// with a spare word after each row: a window row of up to 16 cells is two words and shifts, where
-/// reading the cells is 16 to 36 bytes per row, rows a kilobyte apart. Whoever changes a cell's
+/// One bit per cell of a grid, set while the cell is EMPTY, in rows of 64-bit words: a window row
+/// of up to 16 cells is two words and shifts, where reading the cells is 16 to 36 bytes per row,
+/// rows a kilobyte apart. The rows carry a margin of cells that read as taken (kMarginX cells
+/// before x = 0 and a spare word after each row, kMarginZ rows on either side, kMarginBelow layers
+/// under y = 0), so a window near the grid's sides needs no bounds tests. Whoever changes a cell's
 /// content says so here (GridSweep keeps them for the granular rules, which read 7x7 windows).
 class EmptyCellBits {
 public:
+    static constexpr int kMarginX = 16, kMarginZ = 3, kMarginBelow = 2;
+
     /// Sized for `size`, every cell taken.
     void resize(Int3 size) {
         size_ = size;
-        stride_ = (size.x + 63) / 64 + 1;
-        words_.assign(std::size_t(size.y) * std::size_t(size.z) * std::size_t(stride_), 0);
+        stride_ = (kMarginX + size.x + 63) / 64 + 1;
+        rowsPerLayer_ = size.z + 2 * kMarginZ;
+        words_.assign(std::size_t(size.y + kMarginBelow) * std::size_t(rowsPerLayer_) * std::size_t(stride_), 0);
     }
     /// Reads every cell of grid (of this size).
     void read(const CellGrid& grid) {
         for (int y = 0; y < size_.y; ++y)
             for (int z = 0; z < size_.z; ++z) {
                 const CellValue* cells = grid.cells().data() + grid.index(0, y, z);
-                std::uint64_t* words = words_.data() + std::size_t(y * size_.z + z) * std::size_t(stride_);
+                std::uint64_t* words = rowWords(y, z);
                 std::fill(words, words + stride_, 0);
                 int x = 0;
-                for (; x + 8 <= size_.x; x += 8) words[x >> 6] |= std::uint64_t(emptyBitsOf8(cells + x)) << (x & 63);
-                for (; x < size_.x; ++x) words[x >> 6] |= std::uint64_t(cells[x] == kEmpty) << (x & 63);
+                static_assert(kMarginX % 8 == 0, "8 cells' bits lie in one word");
+                for (; x + 8 <= size_.x; x += 8)
+                    words[(kMarginX + x) >> 6] |= std::uint64_t(emptyBitsOf8(cells + x)) << ((kMarginX + x) & 63);
+                for (; x < size_.x; ++x) setEmpty(x, y, z, cells[x] == kEmpty);
             }
     }
     /// True when the bits say what grid holds.
@@ -64,60 +71,37 @@ public:
                     if (isEmpty(x, y, z) != (grid.at(x, y, z) == kEmpty)) return false;
         return true;
     }
-    bool isEmpty(int x, int y, int z) const { return (row(y, z)[x >> 6] >> (x & 63)) & 1u; }
+    /// (x, y, z) in the grid.
+    bool isEmpty(int x, int y, int z) const {
+        const int at = kMarginX + x;
+        return (row(y, z)[at >> 6] >> (at & 63)) & 1u;
+    }
+    /// (x, y, z) in the grid.
     void setEmpty(int x, int y, int z, bool empty) {
-        std::uint64_t& word = words_[std::size_t(y * size_.z + z) * std::size_t(stride_) + std::size_t(x >> 6)];
-        const std::uint64_t bit = std::uint64_t{1} << (x & 63);
+        const int at = kMarginX + x;
+        std::uint64_t& word = rowWords(y, z)[at >> 6];
+        const std::uint64_t bit = std::uint64_t{1} << (at & 63);
         word = empty ? word | bit : word & ~bit;
     }
-    /// Bit i for cell (x0 + i, y, z), i < width <= 16, x0 >= -16, x0 < size.x: set when EMPTY;
-    /// cells outside the grid read as taken.
+    /// Bit i for cell (x0 + i, y, z), i < width <= 16, anywhere: set when EMPTY; cells outside the
+    /// grid read as taken.
     unsigned span(int x0, int y, int z, int width) const {
+        unsigned bits = 0;
         if (y < 0 || y >= size_.y || z < 0 || z >= size_.z) return 0;
-        const std::uint64_t* words = row(y, z);
-        std::uint64_t bits;
-        if (x0 < 0) {
-            bits = words[0] << -x0;
-        } else {
-            const int offset = x0 & 63;
-            bits = words[x0 >> 6] >> offset;
-            if (offset + width > 64) bits |= words[(x0 >> 6) + 1] << (64 - offset);
-        }
-        return unsigned(bits) & ((1u << width) - 1);
-    }
-
-    /// The rows z - Reach .. z + Reach of layer y around column x, as span(x - Reach, y, z', 2 Reach + 1)
-    /// each: away from the grid's sides with one address and no bounds tests.
-    template <int Reach> void rowsAround(int x, int y, int z, std::uint16_t (&rows)[2 * Reach + 1]) const {
-        constexpr int width = 2 * Reach + 1;
-        const int x0 = x - Reach;
-        if (y < 0 || y >= size_.y || z < Reach || z + Reach >= size_.z || x0 < 0) {
-            for (int r = 0; r < width; ++r) rows[r] = std::uint16_t(span(x0, y, z - Reach + r, width));
-            return;
-        }
-        const std::uint64_t* words = row(y, z - Reach) + (x0 >> 6);
-        const int offset = x0 & 63;
-        if (offset + width > 64) {
-            for (int r = 0; r < width; ++r, words += stride_)
-                rows[r] = std::uint16_t(((words[0] >> offset) | (words[1] << (64 - offset))) & ((1u << width) - 1));
-        } else {
-            for (int r = 0; r < width; ++r, words += stride_) rows[r] = std::uint16_t((words[0] >> offset) & ((1u << width) - 1));
-        }
+        for (int i = 0; i < width; ++i)
+            if (x0 + i >= 0 && x0 + i < size_.x && isEmpty(x0 + i, y, z)) bits |= 1u << i;
+        return bits;
     }
     /// The (2 Reach + 1)^2 cells around column x in layer y (Reach <= 3), bit (dz + Reach) * (2 Reach
-    /// + 1) + (dx + Reach) set when EMPTY.
+    /// + 1) + (dx + Reach) set when EMPTY; cells outside the grid read as taken. x and z in the
+    /// grid, y from -kMarginBelow to the grid's top layer.
     template <int Reach> std::uint64_t window(int x, int y, int z) const {
-        static_assert(Reach <= 3);
+        static_assert(Reach <= kMarginZ && Reach <= kMarginX);
         constexpr int width = 2 * Reach + 1;
         constexpr std::uint64_t rowMask = (std::uint64_t{1} << width) - 1;
-        const int x0 = x - Reach;
+        const int at = kMarginX + x - Reach, offset = at & 63;
+        const std::uint64_t* words = row(y, z - Reach) + (at >> 6);
         std::uint64_t bits = 0;
-        if (y < 0 || y >= size_.y || z < Reach || z + Reach >= size_.z || x0 < 0) {
-            for (int r = 0; r < width; ++r) bits |= std::uint64_t(span(x0, y, z - Reach + r, width)) << (r * width);
-            return bits;
-        }
-        const std::uint64_t* words = row(y, z - Reach) + (x0 >> 6);
-        const int offset = x0 & 63;
         if (offset + width > 64) {
             for (int r = 0; r < width; ++r, words += stride_)
                 bits |= (((words[0] >> offset) | (words[1] << (64 - offset))) & rowMask) << (r * width);
@@ -128,10 +112,16 @@ public:
     }
 
 private:
-    const std::uint64_t* row(int y, int z) const { return words_.data() + std::size_t(y * size_.z + z) * std::size_t(stride_); }
+    // Row (y, z) with its margins: y >= -kMarginBelow, z from -kMarginZ to size.z + kMarginZ - 1.
+    const std::uint64_t* row(int y, int z) const {
+        return words_.data() + (std::size_t(y + kMarginBelow) * std::size_t(rowsPerLayer_) + std::size_t(z + kMarginZ)) *
+                                   std::size_t(stride_);
+    }
+    std::uint64_t* rowWords(int y, int z) { return const_cast<std::uint64_t*>(row(y, z)); }
 
     Int3 size_{};
-    int stride_ = 1; // words per row, the spare one included
+    int stride_ = 1;       // words per row, margins and the spare one included
+    int rowsPerLayer_ = 0; // size.z and the margins
     std::vector<std::uint64_t> words_;
 };
 

@@ -57,6 +57,18 @@ double calibratedThresholdSlope(double reposeDegrees) {
     return a.slope + (reposeDegrees - a.degrees) * (b.slope - a.slope) / (b.degrees - a.degrees);
 }
 
+namespace {
+
+// Set bits of a word, without a library call on CPUs the build does not assume to have POPCNT.
+int setBitCount(std::uint64_t v) {
+    v -= (v >> 1) & 0x5555555555555555ull;
+    v = (v & 0x3333333333333333ull) + ((v >> 2) & 0x3333333333333333ull);
+    v = (v + (v >> 4)) & 0x0f0f0f0f0f0f0f0full;
+    return int((v * 0x0101010101010101ull) >> 56);
+}
+
+} // namespace
+
 GranularRules::GranularRules(const PhysicsSettings& physics) {
     validatePhysics(physics);
     slope_ = calibratedThresholdSlope(physics.reposeDegrees);
@@ -70,7 +82,6 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
     const double shallowStiffening = std::clamp(0.52 * (0.80 - slope_), 0.0, 0.08);
     const double diagonalStiffening = steepStiffening + shallowStiffening;
     int n = 0;
-    std::array<std::vector<std::uint64_t>, kWindow * kWindow> throughCentreLists;
     for (int dz = -kGranularReach; dz <= kGranularReach; ++dz)
         for (int dx = -kGranularReach; dx <= kGranularReach; ++dx) {
             if (dx == 0 && dz == 0) continue;
@@ -93,25 +104,8 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
                 if (std::find(path.begin(), path.end(), cell) == path.end()) path.push_back(cell);
                 o.pathMask |= std::uint64_t{1} << ((cell[1] + kGranularReach) * kWindow + cell[0] + kGranularReach);
             }
-            // Seen from each cell r of the path two or three columns out (a cell c that empties),
-            // the grain lies at -r: the path up to r, as window bits around r, goes to its list.
-            for (std::size_t k = 0; k < path.size(); ++k) {
-                const auto [rx, rz] = path[k];
-                if (std::max(std::abs(rx), std::abs(rz)) < 2) continue;
-                std::uint64_t prefix = 0;
-                for (std::size_t j = 0; j <= k; ++j)
-                    prefix |= std::uint64_t{1} << ((path[j][1] - rz + kGranularReach) * kWindow + path[j][0] - rx + kGranularReach);
-                throughCentreLists[std::size_t((kGranularReach - rz) * kWindow + kGranularReach - rx)].push_back(prefix);
-            }
             maxDrop_ = std::max(maxDrop_, int((o.thresholdQ8 + 255) >> 8));
         }
-    for (std::size_t bit = 0; bit < throughCentreLists.size(); ++bit) {
-        std::vector<std::uint64_t>& list = throughCentreLists[bit];
-        std::sort(list.begin(), list.end());
-        list.erase(std::unique(list.begin(), list.end()), list.end());
-        throughCentreSpans_[bit] = {throughCentre_.size(), list.size()};
-        throughCentre_.insert(throughCentre_.end(), list.begin(), list.end());
-    }
     wholeAtLeast_.assign(std::size_t(maxDrop_) + 2, 0);
     wholeExactly_.assign(std::size_t(maxDrop_) + 2, 0);
     for (int k = 0; k < kOffsets; ++k) {
@@ -125,35 +119,39 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             for (int k = 0; k < kOffsets; ++k)
                 if ((offsets_[std::size_t(k)].pathMask >> (r * kWindow)) & taken)
                     blockedBy_[std::size_t(r)][taken] |= std::uint64_t{1} << k;
-    for (int bit = 0; bit < kWindow * kWindow; ++bit) {
-        throughCellSpans_[std::size_t(bit)].first = throughCell_.size();
-        for (int k = 0; k < kOffsets; ++k)
-            if (offsets_[std::size_t(k)].pathMask >> bit & 1) throughCell_.push_back(std::uint8_t(k));
-        throughCellSpans_[std::size_t(bit)].second = throughCell_.size() - throughCellSpans_[std::size_t(bit)].first;
-    }
-    // The slides across c, seen from c (bit of the 9x9 columns around it: (dz + 4) * 9 + (dx + 4)).
-    auto setBit9 = [](std::uint64_t (&bits)[2], int dx, int dz) {
-        if (std::max(std::abs(dx), std::abs(dz)) > kGranularReach + 1)
-            throw std::logic_error("granular rules: a slide across a cell leaves the 9x9 columns around it");
-        const int bit = (dz + kGranularReach + 1) * (kWindow + 2) + dx + kGranularReach + 1;
-        bits[bit >> 6] |= std::uint64_t{1} << (bit & 63);
-    };
-    for (int bit = 0; bit < kWindow * kWindow; ++bit) {
-        slidesThroughCentreSpans_[std::size_t(bit)].first = slidesThroughCentre_.size();
-        const int gx = bit % kWindow - kGranularReach, gz = bit / kWindow - kGranularReach; // the grain, from c
-        if (gx != 0 || gz != 0)
-            for (std::uint8_t k : offsetsThrough((kGranularReach - gz) * kWindow + (kGranularReach - gx))) {
-                const Offset& o = offsets_[k];
-                SlideThroughCentre slide;
-                for (int cell = 0; cell < kWindow * kWindow; ++cell)
-                    if (o.pathMask >> cell & 1)
-                        setBit9(slide.path, cell % kWindow - kGranularReach + gx, cell / kWindow - kGranularReach + gz);
-                setBit9(slide.target, o.dx + gx, o.dz + gz);
-                slide.offset = k;
-                slidesThroughCentre_.push_back(slide);
+    // The slides across a cell c, by the column t around c's they end in: the grain at b (from c)
+    // slides by t - b, and its path, moved to b, crosses c. Every slide whose path crosses c is one
+    // of them: the paths run straight from the grain to its target column, c lies on the way.
+    int slidesAcross = 0;
+    for (int t = 0; t < kAcrossWindow * kAcrossWindow; ++t) {
+        const int tx = t % kAcrossWindow - kAcrossReach, tz = t / kAcrossWindow - kAcrossReach;
+        for (int bit = 0; bit < kWindow * kWindow; ++bit) {
+            const int bx = bit % kWindow - kGranularReach, bz = bit / kWindow - kGranularReach;
+            const int dx = tx - bx, dz = tz - bz;
+            if ((bx == 0 && bz == 0) || (dx == 0 && dz == 0) || std::max(std::abs(dx), std::abs(dz)) > kGranularReach) continue;
+            const Offset& o = offsets_[std::size_t(offsetIndex(dx, dz))];
+            if (!(o.pathMask >> ((kGranularReach - bz) * kWindow + kGranularReach - bx) & 1)) continue; // misses c
+            ++slidesAcross;
+            std::uint64_t path = 0; // as window bits around c
+            for (int cell = 0; cell < kWindow * kWindow; ++cell) {
+                if (!(o.pathMask >> cell & 1)) continue;
+                const int px = cell % kWindow - kGranularReach + bx, pz = cell / kWindow - kGranularReach + bz;
+                if (std::max(std::abs(px), std::abs(pz)) > kGranularReach)
+                    throw std::logic_error("granular rules: a path across a cell leaves the 7x7 columns around it");
+                path |= std::uint64_t{1} << ((pz + kGranularReach) * kWindow + px + kGranularReach);
             }
-        slidesThroughCentreSpans_[std::size_t(bit)].second = slidesThroughCentre_.size() - slidesThroughCentreSpans_[std::size_t(bit)].first;
+            slidesAcrossCentreTo_[std::size_t(t)] |= std::uint64_t{1} << bit;
+            for (int r = 0; r < kWindow; ++r)
+                for (unsigned taken = 0; taken < (1u << kWindow); ++taken)
+                    if ((path >> (r * kWindow)) & taken)
+                        acrossCentreBlockedBy_[std::size_t(t)][std::size_t(r)][taken] |= std::uint64_t{1} << bit;
+        }
     }
+    // Each cell of each path is a slide across that cell: all of them must lie in the tables.
+    int slidesCrossing = 0;
+    for (const Offset& o : offsets_) slidesCrossing += setBitCount(o.pathMask);
+    if (slidesCrossing != slidesAcross)
+        throw std::logic_error("granular rules: a slide across a cell ends beyond the columns the wakes look at");
     for (const Offset& o : offsets_) {
         std::uint64_t path = 0;
         for (int bit = 0; bit < kWindow * kWindow; ++bit)
@@ -163,17 +161,8 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             }
         pathsTowardsCentre_[std::size_t((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx)] = path;
     }
-    // The same paths as tables of whole windows (grainsWithOpenPathThroughCentre, ...TowardsCentre).
-    if (throughCentre_.size() > 64) throw std::logic_error("granular rules: more than 64 paths through a cell");
+    // The paths towards a column as a table of whole windows (grainsWithOpenPathTowardsCentre).
     for (int bit = 0; bit < kWindow * kWindow; ++bit) {
-        const auto [first, count] = throughCentreSpans_[std::size_t(bit)];
-        for (std::size_t path = first; path < first + count; ++path) {
-            for (unsigned n = 0; n < 16; ++n)
-                if (n >> (path % 4) & 1) grainsOfThroughPaths_[path / 4][n] |= std::uint64_t{1} << bit;
-            for (int r = 0; r < kWindow; ++r)
-                for (unsigned taken = 0; taken < (1u << kWindow); ++taken)
-                    if ((throughCentre_[path] >> (r * kWindow)) & taken) throughBlockedBy_[std::size_t(r)][taken] |= std::uint64_t{1} << path;
-        }
         for (int r = 0; r < kWindow; ++r)
             for (unsigned taken = 0; taken < (1u << kWindow); ++taken)
                 if ((pathsTowardsCentre_[std::size_t(bit)] >> (r * kWindow)) & taken)
@@ -191,14 +180,6 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
 }
 
 namespace {
-
-// Set bits of a word, without a library call on CPUs the build does not assume to have POPCNT.
-int setBitCount(std::uint64_t v) {
-    v -= (v >> 1) & 0x5555555555555555ull;
-    v = (v & 0x3333333333333333ull) + ((v >> 2) & 0x3333333333333333ull);
-    v = (v + (v >> 4)) & 0x0f0f0f0f0f0f0f0full;
-    return int((v * 0x0101010101010101ull) >> 56);
-}
 
 // Bit k: offset k's dither (byte k of dithers) carries past the rest of its threshold, dither >
 // restComplement[k].

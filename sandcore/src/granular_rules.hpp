@@ -87,20 +87,20 @@ public:
     /// The grains that an EMPTY cell c may let move, `layersAbove` (0..maxDrop()) layers above c:
     /// bit (dz + 3) * 7 + (dx + 3) stands for the grain at c + (dx, dz) in that layer.
     std::uint64_t wakeMask(int layersAbove) const { return wakeMasks_[std::size_t(layersAbove)]; }
-    /// Of the grains two or three columns from an EMPTY cell c of their own layer (window bits as in
-    /// wakeMask), those with a slide across c whose path is EMPTY from them up to c (one of the paths
-    /// through c, each cut after c, inside `clear`, the EMPTY cells of the layer's window around c):
-    /// c's emptying can open a slide for no other. Seven
-    /// look-ups find the blocked paths, sixteen the grains of those left.
-    std::uint64_t grainsWithOpenPathThroughCentre(std::uint64_t clear) const {
+    /// Cells of the layer below a cell c that a slide across c may end in: every path across c
+    /// ends within kAcrossReach columns of c's (it runs on from c towards its target).
+    static constexpr int kAcrossReach = kGranularReach - 1;
+    static constexpr int kAcrossWindow = 2 * kAcrossReach + 1;
+    /// Of the grains around c (window bits as in wakeMask), those with a slide across c into the
+    /// column t = (tdz + 2) * 5 + (tdx + 2) around it whose path at their level is EMPTY (inside
+    /// `clear`, the EMPTY cells of the layer's 7x7 window around c, where all such paths lie): a
+    /// grain has at most one slide into a given column. Seven look-ups.
+    std::uint64_t grainsWithOpenSlideAcrossCentreTo(int t, std::uint64_t clear) const {
+        const auto& blockedBy = acrossCentreBlockedBy_[std::size_t(t)];
         std::uint64_t blocked = 0;
         for (int r = 0; r < kWindow; ++r)
-            blocked |= throughBlockedBy_[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
-        const std::uint64_t open = ~blocked;
-        std::uint64_t grains = 0;
-        for (int nibble = 0; nibble < 16; ++nibble)
-            grains |= grainsOfThroughPaths_[std::size_t(nibble)][(open >> (4 * nibble)) & 15];
-        return grains;
+            blocked |= blockedBy[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
+        return slidesAcrossCentreTo_[std::size_t(t)] & ~blocked;
     }
     /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
     /// column crosses only EMPTY cells at their level (inside `clear`, as above).
@@ -109,27 +109,6 @@ public:
         for (int r = 0; r < kWindow; ++r)
             blocked |= towardsBlockedBy_[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
         return ~blocked & ((std::uint64_t{1} << (kWindow * kWindow)) - 1);
-    }
-    /// The slides whose path at the grain's level crosses window cell `bit` (as in wakeMask, seen
-    /// from the grain): their indices into offset().
-    std::span<const std::uint8_t> offsetsThrough(int bit) const {
-        const auto& [first, count] = throughCellSpans_[std::size_t(bit)];
-        return {throughCell_.data() + first, count};
-    }
-    /// A slide of a grain near an EMPTY cell c whose path crosses c, seen from c: its path's
-    /// cells and its target, as bits (dz + 4) * 9 + (dx + 4) of the 9x9 columns around c (81 bits:
-    /// two words, bits 64..80 in the second). A path across c ends within a cell of c's column,
-    /// so every such slide lies inside those 9x9 columns.
-    struct SlideThroughCentre {
-        std::uint64_t path[2] = {0, 0}; ///< the cells of the grain's layer it crosses (c included)
-        std::uint64_t target[2] = {0, 0}; ///< the cell of the layer below it ends in (one bit)
-        int offset = 0; ///< which of the 48 slides (offset())
-    };
-    /// The slides of the grain at window bit `bit` (as in wakeMask) whose path crosses c:
-    /// offsetsThrough seen from c, so a wake tests each with two masks.
-    std::span<const SlideThroughCentre> slidesThroughCentre(int bit) const {
-        const auto& [first, count] = slidesThroughCentreSpans_[std::size_t(bit)];
-        return {slidesThroughCentre_.data() + first, count};
     }
     /// True when the grain in cell `from` of grid `stream` (off the vessel) needs the column of
     /// slide k at least `depth` >= 2 cells deep: the dither of its threshold is fixed per cell
@@ -180,21 +159,14 @@ private:
     // For the grain at window bit b around a column c: the cells its slide into c's column crosses
     // at its own level, as window bits around c.
     std::array<std::uint64_t, kWindow * kWindow> pathsTowardsCentre_{};
-    // For the grain at window bit b two or three columns from a cell c of its own layer: the paths
-    // of its slides that cross c, each cut after c (the cells from the grain up to c, as window bits
-    // around c), throughCentreSpans_[b] of them.
-    std::vector<std::uint64_t> throughCentre_;
-    std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCentreSpans_{}; // first, count
-    std::vector<std::uint8_t> throughCell_;                                                   // offsetsThrough, all bits
-    std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> throughCellSpans_{};   // first, count
-    // The paths of throughCentre_, all grains, as bits 0..63 (there are 56): throughBlockedBy_[r]
-    // [taken] those crossing a taken cell of window row r, grainsOfThroughPaths_[i][n] the grains
-    // of the paths 4i..4i+3 that n holds. towardsBlockedBy_[r][taken]: the grains whose path of
-    // pathsTowardsCentre_ crosses a taken cell of row r.
-    std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow> throughBlockedBy_{}, towardsBlockedBy_{};
-    std::array<std::array<std::uint64_t, 16>, 16> grainsOfThroughPaths_{};
-    std::vector<SlideThroughCentre> slidesThroughCentre_;                                       // all bits
-    std::array<std::pair<std::size_t, std::size_t>, kWindow * kWindow> slidesThroughCentreSpans_{}; // first, count
+    // towardsBlockedBy_[r][taken]: the grains whose path of pathsTowardsCentre_ crosses a taken
+    // cell of window row r.
+    std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow> towardsBlockedBy_{};
+    // For each column t of the 5x5 under a cell c: the grains with a slide across c into t, and
+    // [t][r][taken] those of them whose path crosses a taken cell of window row r around c.
+    std::array<std::uint64_t, kAcrossWindow * kAcrossWindow> slidesAcrossCentreTo_{};
+    std::array<std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow>, kAcrossWindow * kAcrossWindow>
+        acrossCentreBlockedBy_{};
 };
 
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.

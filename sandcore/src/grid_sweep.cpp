@@ -9,6 +9,7 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <utility>
 
 namespace sandcore {
 
@@ -140,32 +141,6 @@ static_assert(kStripRows >= 2 * kGranularReach + 1, "strips of one phase would s
 
 namespace {
 constexpr int kGranularWindow = 2 * kGranularReach + 1;
-// The 3x3 cells around the window's centre: a grain there has the emptied cell beside it.
-constexpr std::uint64_t kWindowCentre = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x1c} << 21) | (std::uint64_t{0x1c} << 28);
-
-// 9 rows of 9: the 7x7 window of each grain beside (x, z) lies inside.
-using EmptyRows9 = std::uint16_t[9];
-
-// The 9 rows as one mask of 81 bits, bit r * 9 + i for bit i of row r (bits 64..80 in the second word).
-using Window9 = std::array<std::uint64_t, 2>;
-Window9 packed(const EmptyRows9& rows) {
-    Window9 bits{};
-    for (int r = 0; r < 9; ++r) {
-        const int at = r * 9;
-        const auto row = std::uint64_t(rows[std::size_t(r)]);
-        if (at < 64) bits[0] |= row << at; // row 7 spills over, row 8 lies in the second word
-        if (at + 9 > 64) bits[1] |= at >= 64 ? row << (at - 64) : row >> (64 - at);
-    }
-    return bits;
-}
-
-// The 7x7 window (bit (dz + 3) * 7 + (dx + 3)) at the centre of the 9 rows.
-std::uint64_t innerWindow(const EmptyRows9& rows) {
-    std::uint64_t window = 0;
-    for (int k = 0; k < kGranularWindow; ++k)
-        window |= std::uint64_t((rows[std::size_t(k + 1)] >> 1) & 0x7f) << (k * kGranularWindow);
-    return window;
-}
 
 } // namespace
 
@@ -184,70 +159,103 @@ std::uint64_t innerWindow(const EmptyRows9& rows) {
 // (grains only move down, and layer y and those above have not been swept yet), and one that
 // enters later is woken by its move.
 void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove) {
-    constexpr int reach = kGranularReach, window = kGranularWindow;
-    const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
-    const std::size_t layerRow = std::size_t(y) * std::size_t(size_.z);
-    // Bit i of a row's mask stands for x - reach + i; columns left of 0 are shifted out, those
-    // right of the grid meet occupied bits that are never set.
-    const int first = std::max(x - reach, 0), dropped = first - (x - reach);
-    const int word = first >> 6, offset = first & 63;
-    const bool spills = offset + window - dropped > 64 && word + 1 < rowWords_;
-    auto rowWords = [&](int zz) { return (layerRow + std::size_t(zz)) * std::size_t(rowWords_) + std::size_t(word); };
-    // The grains in the window not yet awake, as a window mask: waking an awake one changes nothing.
-    std::uint64_t grains = 0;
-    for (int zz = z0; zz <= z1; ++zz) {
-        const std::size_t at = rowWords(zz);
-        const RowWord* row = words_.data() + at;
-        std::uint64_t bits = (row[0].occupied & ~row[0].awake) >> offset;
-        if (spills) bits |= (row[1].occupied & ~row[1].awake) << (64 - offset);
-        grains |= ((bits << dropped) & ((1u << window) - 1)) << ((zz - z + reach) * window);
-    }
-    std::uint64_t woken = granular_->wakeMask(layersAbove) & grains;
+    // The grains in the window not yet awake: waking an awake one changes nothing.
+    std::uint64_t woken = granular_->wakeMask(layersAbove) & sleepingGrainsAround(x, y, z);
     if (!woken) return; // most calls: every grain around is awake already, or none is there
     if (layersAbove == 0) {
         // In (x, z)'s layer a grain gains only through a slide whose path crosses (x, z), is EMPTY
         // all along and ends over an EMPTY cell of the layer below; a slide that needs its column
         // two cells deep also needs the cell under its target EMPTY, unless the grain lies on the
         // vessel, where one cell is enough. Whatever opens such a slide later (a cell of the path
-        // or the target emptying, the column deepening) wakes the grain then. The slides across
-        // (x, z) stay within the 9x9 columns around it, and each is two masks there
-        // (GranularRules::slidesThroughCentre). First the grains two or three columns away whose
-        // path is blocked before it reaches (x, z): a table look-up for all of them at once.
-        EmptyRows9 here, below, underTargets{};
-        empty_.rowsAround<kGranularReach + 1>(x, y, z, here);
-        if (woken & ~kWindowCentre) woken &= kWindowCentre | granular_->grainsWithOpenPathThroughCentre(innerWindow(here));
-        if (!woken) return;
-        empty_.rowsAround<kGranularReach + 1>(x, y - 1, z, below);
-        if (y >= 2) empty_.rowsAround<kGranularReach + 1>(x, y - 2, z, underTargets); // else never deep enough
-        const Window9 hereCells = packed(here), belowCells = packed(below), underCells = packed(underTargets);
-        for (std::uint64_t candidates = woken; candidates; candidates &= candidates - 1) {
-            const int bit = __builtin_ctzll(candidates);
-            const std::uint32_t from = grid.index(x + bit % window - reach, y, z + bit / window - reach);
-            int onVessel = -1; // read when first needed
-            const auto slides = granular_->slidesThroughCentre(bit);
-            const bool gains = std::any_of(slides.begin(), slides.end(), [&](const GranularRules::SlideThroughCentre& slide) {
-                if ((slide.path[0] & ~hereCells[0]) | (slide.path[1] & ~hereCells[1])) return false;
-                if (!((slide.target[0] & belowCells[0]) | (slide.target[1] & belowCells[1]))) return false;
-                if ((slide.target[0] & underCells[0]) | (slide.target[1] & underCells[1])) return true;
-                if (!granular_->needsDepth(seed_, stream(), from, slide.offset, 2)) return true;
-                if (onVessel < 0) onVessel = grid[from - grid.layerSize()] == kInvalid;
-                return onVessel == 1;
-            });
-            if (!gains) woken &= ~(std::uint64_t{1} << bit);
+        // or the target emptying, the column deepening) wakes the grain then. Such slides end in
+        // the 5x5 columns around (x, z): target by target, seven look-ups find the grains whose
+        // path to it is open (GranularRules::grainsWithOpenSlideAcrossCentreTo). Outside the grid
+        // the windows read as taken; under layer 1 the column is never deep enough.
+        constexpr int across = GranularRules::kAcrossReach;
+        auto targets = std::uint32_t(empty_.window<across>(x, y - 1, z));
+        if (!targets) return;
+        const std::uint64_t here = empty_.window<kGranularReach>(x, y, z);
+        std::uint64_t deepTargets = ~std::uint64_t{0}; // the EMPTY cells under the targets, read when first needed
+        std::uint64_t gaining = 0;
+        for (; targets; targets &= targets - 1) {
+            const int t = __builtin_ctz(targets);
+            const std::uint64_t open = granular_->grainsWithOpenSlideAcrossCentreTo(t, here) & woken & ~gaining;
+            if (!open) continue;
+            if (deepTargets == ~std::uint64_t{0}) deepTargets = empty_.window<across>(x, y - 2, z);
+            if (deepTargets >> t & 1) {
+                gaining |= open;
+                continue;
+            }
+            for (std::uint64_t grains = open; grains; grains &= grains - 1) {
+                const int bit = __builtin_ctzll(grains);
+                const int dx = bit % kGranularWindow - kGranularReach, dz = bit / kGranularWindow - kGranularReach;
+                const std::uint32_t from = grid.index(x + dx, y, z + dz);
+                const int slide = GranularRules::offsetIndex(t % (2 * across + 1) - across - dx, t / (2 * across + 1) - across - dz);
+                if (grid[from - grid.layerSize()] == kInvalid || !granular_->needsDepth(seed_, stream(), from, slide, 2))
+                    gaining |= std::uint64_t{1} << bit;
+            }
         }
+        woken = gaining;
     } else {
         // In the layers above, a grain gains only when its sideways path towards the column is
         // EMPTY, and only if its slide into the column looks as deep as (x, y - layersAbove, z).
         woken &= granular_->grainsWithOpenPathTowardsCentre(empty_.window<kGranularReach>(x, y, z));
         if (woken) woken = deepEnoughForSlidesInto(grid, woken, x, y, z, layersAbove);
     }
+    if (woken) wakeWindow(x, y, z, woken);
+}
+
+// The 7x7 cells around (x, z) of layer y (bit (dz + 3) * 7 + (dx + 3)) that hold a grain and are
+// not awake. Away from the grid's sides, where the 7 cells of a row lie in one word, a row is a
+// load and two shifts.
+std::uint64_t GridSweep::sleepingGrainsAround(int x, int y, int z) const {
+    constexpr int reach = kGranularReach, window = kGranularWindow;
+    constexpr std::uint64_t rowMask = (std::uint64_t{1} << window) - 1;
+    const int x0 = x - reach, offset = x0 & 63;
+    const std::size_t stride = std::size_t(rowWords_);
+    std::uint64_t grains = 0;
+    if (x0 >= 0 && offset + window <= 64 && z >= reach && z + reach < size_.z) {
+        const RowWord* row = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z - reach)) * stride +
+                             std::size_t(x0 >> 6);
+        // Spelled out row by row: each row's place in the window is then a constant.
+        return [&]<std::size_t... r>(std::index_sequence<r...>) {
+            return ((((row[r * stride].occupied & ~row[r * stride].awake) >> offset & rowMask) << (r * window)) | ...);
+        }(std::make_index_sequence<window>{});
+    }
+    // Near a side: columns left of 0 are shifted out, those right of the grid meet occupied bits
+    // that are never set, rows outside the grid are skipped.
+    const int first = std::max(x0, 0), dropped = first - x0;
+    const int word = first >> 6, firstOffset = first & 63;
+    const bool spills = firstOffset + window - dropped > 64 && word + 1 < rowWords_;
+    const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
     for (int zz = z0; zz <= z1; ++zz) {
-        const std::uint64_t rowMask = ((woken >> ((zz - z + reach) * window)) & ((1u << window) - 1)) >> dropped;
-        if (!rowMask) continue;
-        RowWord* words = words_.data() + rowWords(zz);
-        words[0].awake |= rowMask << offset;
-        if (spills) words[1].awake |= rowMask >> (64 - offset);
-        rowAwake_[layerRow + std::size_t(zz)] = 1;
+        const RowWord* row = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(zz)) * stride + std::size_t(word);
+        std::uint64_t bits = (row[0].occupied & ~row[0].awake) >> firstOffset;
+        if (spills) bits |= (row[1].occupied & ~row[1].awake) << (64 - firstOffset);
+        grains |= ((bits << dropped) & rowMask) << ((zz - z + reach) * window);
+    }
+    return grains;
+}
+
+// Sets the awake bits of the cells `woken` (window bits around (x, z) of layer y, as
+// sleepingGrainsAround gives them, so each lies inside the grid) and their rows' flags.
+void GridSweep::wakeWindow(int x, int y, int z, std::uint64_t woken) {
+    constexpr int reach = kGranularReach, window = kGranularWindow;
+    constexpr std::uint64_t rowMask = (std::uint64_t{1} << window) - 1;
+    const int x0 = x - reach;
+    const int first = std::max(x0, 0), dropped = first - x0;
+    const int word = first >> 6, offset = first & 63;
+    const bool spills = offset + window - dropped > 64 && word + 1 < rowWords_;
+    const std::size_t layerRow = std::size_t(y) * std::size_t(size_.z);
+    while (woken) {
+        const int r = __builtin_ctzll(woken) / window; // the next row with a grain to wake
+        const std::uint64_t rowBits = ((woken >> (r * window)) & rowMask) >> dropped;
+        woken &= ~(rowMask << (r * window));
+        const std::size_t row = layerRow + std::size_t(z - reach + r);
+        RowWord* words = words_.data() + row * std::size_t(rowWords_) + std::size_t(word);
+        words[0].awake |= rowBits << offset;
+        if (spills) words[1].awake |= rowBits >> (64 - offset);
+        rowAwake_[row] = 1;
     }
 }
 

@@ -152,6 +152,8 @@ private:
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
     void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove);
+    std::uint64_t sleepingGrainsAround(int x, int y, int z) const;
+    void wakeWindow(int x, int y, int z, std::uint64_t woken);
     std::uint64_t deepEnoughForSlidesInto(const CellGrid& grid, std::uint64_t woken, int x, int y, int z, int layersAbove) const;
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
     int awakeRowsInLayer(int y) const;
