@@ -9,6 +9,7 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <span>
 #include <utility>
 
 namespace sandcore {
@@ -451,54 +452,70 @@ inline void GridSweep::record(const SweepContext& context, StripLog& log, const 
     (context.movedList ? *context.movedList : log.moved).push_back(move);
 }
 
+// What every granular visit of a strip reads, read once per strip: held in locals, the values
+// stay in registers, where members and the context would be loaded again after each store.
+struct GridSweep::GranularStrip {
+    CellGrid& grid;
+    CellValue* cells;
+    std::span<FallState> falls;
+    std::uint64_t seed, step, stream;
+    std::uint32_t layerSize;
+    std::size_t layerWords; // words of awake and in-motion bits per layer
+    RowWord* words;
+    std::uint64_t* inMotion;
+    std::uint8_t* rowAwake;
+    int sizeY, sizeZ;
+};
+
 // row: y * sizeZ + z; rowStart: the index of cell (0, y, z). The strip loop has both.
-inline bool GridSweep::visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z, std::uint32_t row,
-                                     std::uint32_t rowStart) {
+inline bool GridSweep::visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x, int y,
+                                     int z, std::uint32_t row, std::uint32_t rowStart) {
     // The occupied bits are kept as the classic visit keeps them, so the granular wakes can AND
     // with them instead of reading cells.
-    const std::size_t layerWords = std::size_t(size_.z) * std::size_t(rowWords_);
     const std::size_t word = std::size_t(row) * std::size_t(rowWords_) + std::size_t(x >> 6);
     const std::uint64_t bit = std::uint64_t{1} << (x & 63);
     const std::uint32_t from = rowStart + std::uint32_t(x);
-    const CellValue* cells = context.grid.cells().data();
+    const CellValue* cells = strip.cells;
+    RowWord* words = strip.words;
+    std::uint64_t* inMotion = strip.inMotion;
     if (cells[from] < 0) {
-        words_[word].occupied &= ~bit;
+        words[word].occupied &= ~bit;
         return false;
     }
     // The grain below is in the same column of the layer below: the same bit, one layer's words back.
-    const MotionHints hints{(inMotion_[word] & bit) != 0, (inMotion_[word - layerWords] & bit) != 0};
-    const GranularOutcome outcome =
-        granular_->visit(context.grid, empty_, context.grains.fall[std::size_t(context.level)], context.seed, context.step,
-                         std::uint64_t(context.level), bottomIsOutlet_, x, y, z, from, hints);
+    const MotionHints hints{(inMotion[word] & bit) != 0, (inMotion[word - strip.layerWords] & bit) != 0};
+    const GranularOutcome outcome = granular_->visit(strip.grid, empty_, strip.falls, strip.seed, strip.step, strip.stream,
+                                                     bottomIsOutlet_, x, y, z, from, hints);
     // The bit follows the grain's state: cleared where it was, set where it is when in motion.
     if (outcome.kind == GranularOutcome::Moved) {
-        inMotion_[word] &= ~bit;
+        inMotion[word] &= ~bit;
         if (outcome.inMotion) markInMotion(outcome.to.x, outcome.to.y, outcome.to.z);
     } else if (outcome.inMotion != hints.grain) {
-        inMotion_[word] ^= bit;
+        inMotion[word] ^= bit;
     }
     if (outcome.kind == GranularOutcome::Waiting || outcome.stopped) {
         if (outcome.kind == GranularOutcome::Waiting) { // in motion: visited again next step
-            words_[word].awake |= bit;
-            words_[word].occupied |= bit;
-            rowAwake_[row] = 1;
+            words[word].awake |= bit;
+            words[word].occupied |= bit;
+            strip.rowAwake[row] = 1;
         }
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
-        // speed changed without a cell emptying, so the grain above must look again.
-        if (y + 1 < size_.y && cells[from + context.grid.layerSize()] >= 0) {
-            words_[word + layerWords].awake |= bit;
-            words_[word + layerWords].occupied |= bit;
-            rowAwake_[row + std::uint32_t(size_.z)] = 1;
+        // speed changed without a cell emptying, so the grain above must look again. The occupied
+        // bit says whether the cell above may hold one: it is never clear under a grain, and
+        // reading it spares a cache miss on the cell (an EMPTY cell woken is visited and left).
+        if (y + 1 < strip.sizeY && (words[word + strip.layerWords].occupied & bit)) {
+            words[word + strip.layerWords].awake |= bit;
+            strip.rowAwake[row + std::uint32_t(strip.sizeZ)] = 1;
         }
     }
     if (outcome.kind != GranularOutcome::Moved) return false;
-    words_[word].occupied &= ~bit; // every move goes down at least a layer: the cell it left is EMPTY
+    words[word].occupied &= ~bit; // every move goes down at least a layer: the cell it left is EMPTY
     const Int3 to = outcome.to;
-    const std::uint32_t toCell = context.grid.index(to.x, to.y, to.z);
+    const std::uint32_t toCell = strip.grid.index(to.x, to.y, to.z);
     empty_.setEmpty(to.x, to.y, to.z, false); // the cell it entered; the one it left: wakeAroundEmptiedBy
     record(context, log, {std::uint32_t(cells[toCell]), toCell, outcome.cameFrom, context.level});
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
-    wakeAroundEmptiedBy<true>(context.grid, x, y, z);          // the cell it left is free
+    wakeAroundEmptiedBy<true>(strip.grid, x, y, z);            // the cell it left is free
     return true;
 }
 
@@ -511,6 +528,24 @@ inline bool GridSweep::visitGranular(const SweepContext& context, StripLog& log,
 // full sweep in the same order would see the change.
 SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd) {
     SweepResult totals;
+    // Only this strip's visits wake its rows (strips of one phase keep apart): with none awake now,
+    // none will be.
+    if (context.sleeping && std::none_of(rowAwake_.begin() + std::ptrdiff_t(y * size_.z + zBegin),
+                                         rowAwake_.begin() + std::ptrdiff_t(y * size_.z + zEnd), [](std::uint8_t f) { return f; }))
+        return totals;
+    const GranularStrip strip{context.grid,
+                              context.grid.cells().data(),
+                              context.grains.fall[std::size_t(context.level)],
+                              context.seed,
+                              context.step,
+                              std::uint64_t(context.level),
+                              context.grid.layerSize(),
+                              std::size_t(size_.z) * std::size_t(rowWords_),
+                              words_.data(),
+                              inMotion_.data(),
+                              rowAwake_.data(),
+                              size_.y,
+                              size_.z};
     const bool xDown = (context.step & 1) != 0, zDown = (context.step & 2) != 0;
     for (int i = zBegin; i < zEnd; ++i) {
         const int z = zDown ? zBegin + zEnd - 1 - i : i;
@@ -518,7 +553,7 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
         const std::uint32_t rowStart = row * std::uint32_t(size_.x); // cell (0, y, z)
         auto visit = [&](int x) {
             ++totals.visited;
-            totals.moves += visitGranular(context, log, x, y, z, row, rowStart) ? 1 : 0;
+            totals.moves += visitGranular(context, strip, log, x, y, z, row, rowStart) ? 1 : 0;
         };
         if (context.sleeping && !rowAwake_[row]) continue;
         rowAwake_[row] = 0;

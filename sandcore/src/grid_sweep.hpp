@@ -142,8 +142,9 @@ private:
     template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
     // classic rules; true when a grain moved
     bool visitCell(const SweepContext& context, StripLog& log, int x, int y, int z);
-    bool visitGranular(const SweepContext& context, StripLog& log, int x, int y, int z, std::uint32_t row,
-                       std::uint32_t rowStart);
+    struct GranularStrip;
+    bool visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x, int y, int z,
+                       std::uint32_t row, std::uint32_t rowStart);
     void record(const SweepContext& context, StripLog& log, const GrainMove& move);
     SweepResult sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd);
     void clearRow(std::uint32_t row);
