@@ -528,11 +528,7 @@ inline bool GridSweep::visitGranular(const SweepContext& context, const Granular
 // full sweep in the same order would see the change.
 SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd) {
     SweepResult totals;
-    // Only this strip's visits wake its rows (strips of one phase keep apart): with none awake now,
-    // none will be.
-    if (context.sleeping && std::none_of(rowAwake_.begin() + std::ptrdiff_t(y * size_.z + zBegin),
-                                         rowAwake_.begin() + std::ptrdiff_t(y * size_.z + zEnd), [](std::uint8_t f) { return f; }))
-        return totals;
+    if (context.sleeping && !anyRowAwake(y, zBegin, zEnd)) return totals;
     const GranularStrip strip{context.grid,
                               context.grid.cells().data(),
                               context.grains.fall[std::size_t(context.level)],
@@ -600,6 +596,14 @@ void GridSweep::prefetchFirstAwake(const CellGrid& grid, int y, int z) const {
     }
 }
 
+// Whether a row z0..z1-1 of layer y may hold awake cells. Only a strip's own visits wake its rows
+// (strips of one phase keep apart, and classic visits wake no row of their own layer), so a strip
+// with none awake when its turn comes is skipped whole: most strips of a busy layer are idle.
+bool GridSweep::anyRowAwake(int y, int z0, int z1) const {
+    const auto first = rowAwake_.begin() + std::ptrdiff_t(std::size_t(y) * std::size_t(size_.z));
+    return std::any_of(first + z0, first + z1, [](std::uint8_t flag) { return flag != 0; });
+}
+
 // The strip loop, instantiated once per rule set: the classic one is main's loop exactly (each
 // word's awake bits taken at once), with no test of the rule set per word or per grain.
 template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip) {
@@ -608,6 +612,7 @@ template <bool Granular> SweepResult GridSweep::sweepStrip(const SweepContext& c
     const int zEnd = std::min((strip + 1) * kStripRows, size.z);
     StripLog& log = logs_[std::size_t(strip)];
     if constexpr (Granular) return sweepGranularStrip(context, log, y, strip * kStripRows, zEnd);
+    if (context.sleeping && !anyRowAwake(y, strip * kStripRows, zEnd)) return totals;
     for (int z = strip * kStripRows; z < zEnd; ++z) {
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size.z) + std::uint32_t(z);
         if (context.sleeping && !rowAwake_[row]) continue;

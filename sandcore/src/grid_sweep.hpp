@@ -158,6 +158,7 @@ private:
     std::uint64_t deepEnoughForSlidesInto(const CellGrid& grid, std::uint64_t woken, int x, int y, int z, int layersAbove) const;
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
     int awakeRowsInLayer(int y) const;
+    bool anyRowAwake(int y, int z0, int z1) const;
     // The grid's stream of random draws (SweepContext::level): the upper grid is the one with an outlet.
     std::uint64_t stream() const { return std::uint64_t(bottomIsOutlet_ ? GridLevel::Upper : GridLevel::Lower); }
 
