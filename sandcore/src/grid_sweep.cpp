@@ -519,6 +519,22 @@ inline bool GridSweep::visitGranular(const SweepContext& context, const Granular
     return true;
 }
 
+// A grain in motion reads its fall state, by id: a cache miss after the miss on its cell. The
+// awake cells that follow in this word (`next`, in visiting order) are asked for ahead: the cell
+// after next, and for the next one, whose cell was asked for one visit earlier, its fall state
+// when it is in motion. Hints only: a visit may wake more cells or change these. Inlined at once:
+// a function that only asks ahead has no effect the compiler sees, and a call to it is dropped.
+[[gnu::always_inline]] inline void GridSweep::askAheadForFallStates(const GranularStrip& strip, std::uint64_t next, bool xDown,
+                                             std::uint32_t wordStart, std::size_t word) const {
+    if (!next) return;
+    const int first = xDown ? 63 - __builtin_clzll(next) : __builtin_ctzll(next);
+    next &= ~(std::uint64_t{1} << first);
+    if (next) __builtin_prefetch(strip.cells + wordStart + std::uint32_t(xDown ? 63 - __builtin_clzll(next) : __builtin_ctzll(next)));
+    if (!(strip.inMotion[word] >> first & 1)) return;
+    const CellValue grain = strip.cells[wordStart + std::uint32_t(first)];
+    if (grain >= 0) __builtin_prefetch(strip.falls.data() + grain);
+}
+
 // The granular strip loop. Granular moves also wake cells of their own layer (the paths), and a
 // grain visited later sees the cells emptied by one visited earlier, so a fixed order lets grains
 // run one way more easily than the other and cones lean (PH2). The order therefore turns with the
@@ -573,6 +589,7 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
                     ahead = (std::uint64_t{1} << bit) - 1;
                 else
                     ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
+                askAheadForFallStates(strip, bits & ahead, xDown, rowStart + std::uint32_t(w * 64), row * std::size_t(rowWords_) + std::size_t(w));
                 visit(w * 64 + bit);
             }
         }

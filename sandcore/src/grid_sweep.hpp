@@ -145,6 +145,8 @@ private:
     struct GranularStrip;
     bool visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x, int y, int z,
                        std::uint32_t row, std::uint32_t rowStart);
+    void askAheadForFallStates(const GranularStrip& strip, std::uint64_t next, bool xDown, std::uint32_t wordStart,
+                               std::size_t word) const;
     void record(const SweepContext& context, StripLog& log, const GrainMove& move);
     SweepResult sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd);
     void clearRow(std::uint32_t row);
