@@ -1,7 +1,7 @@
 #pragma once
 // Which cells are EMPTY, as bits: 8 consecutive cells at once (on x86-64, where SSE2 is part of
 // the architecture, two compares of 4 cells and one mask, elsewhere 8 compares), and a whole
-// grid's kept bits, from which the granular slides and wakes read their 7x7 and 9x9 windows.
+// grid's kept bits, from which the granular slides and wakes read their 5x5 and 7x7 windows.
 // Private to sandcore.
 
 #include "sandcore/cell_grid.hpp"
@@ -82,15 +82,6 @@ public:
         std::uint64_t& word = rowWords(y, z)[at >> 6];
         const std::uint64_t bit = std::uint64_t{1} << (at & 63);
         word = empty ? word | bit : word & ~bit;
-    }
-    /// Bit i for cell (x0 + i, y, z), i < width <= 16, anywhere: set when EMPTY; cells outside the
-    /// grid read as taken.
-    unsigned span(int x0, int y, int z, int width) const {
-        unsigned bits = 0;
-        if (y < 0 || y >= size_.y || z < 0 || z >= size_.z) return 0;
-        for (int i = 0; i < width; ++i)
-            if (x0 + i >= 0 && x0 + i < size_.x && isEmpty(x0 + i, y, z)) bits |= 1u << i;
-        return bits;
     }
     /// The (2 Reach + 1)^2 cells around column x in layer y (Reach <= 3), bit (dz + Reach) * (2 Reach
     /// + 1) + (dx + Reach) set when EMPTY; cells outside the grid read as taken. x and z in the

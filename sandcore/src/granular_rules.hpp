@@ -32,7 +32,6 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <utility>
 #include <vector>
 
 namespace sandcore {
@@ -91,16 +90,19 @@ public:
     /// ends within kAcrossReach columns of c's (it runs on from c towards its target).
     static constexpr int kAcrossReach = kGranularReach - 1;
     static constexpr int kAcrossWindow = 2 * kAcrossReach + 1;
-    /// Of the grains around c (window bits as in wakeMask), those with a slide across c into the
-    /// column t = (tdz + 2) * 5 + (tdx + 2) around it whose path at their level is EMPTY (inside
-    /// `clear`, the EMPTY cells of the layer's 7x7 window around c, where all such paths lie): a
-    /// grain has at most one slide into a given column. Seven look-ups.
-    std::uint64_t grainsWithOpenSlideAcrossCentreTo(int t, std::uint64_t clear) const {
+    /// Of the grains `among` around c (window bits as in wakeMask), those with a slide across c
+    /// into the column t = (tdz + 2) * 5 + (tdx + 2) around it whose path at their level is EMPTY
+    /// (inside `clear`, the EMPTY cells of the layer's 7x7 window around c, where all such paths
+    /// lie): a grain has at most one slide into a given column. Seven look-ups, none when no grain
+    /// of `among` has such a slide.
+    std::uint64_t grainsWithOpenSlideAcrossCentreTo(int t, std::uint64_t among, std::uint64_t clear) const {
+        const std::uint64_t grains = slidesAcrossCentreTo_[std::size_t(t)] & among;
+        if (!grains) return 0;
         const auto& blockedBy = acrossCentreBlockedBy_[std::size_t(t)];
         std::uint64_t blocked = 0;
         for (int r = 0; r < kWindow; ++r)
             blocked |= blockedBy[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
-        return slidesAcrossCentreTo_[std::size_t(t)] & ~blocked;
+        return grains & ~blocked;
     }
     /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
     /// column crosses only EMPTY cells at their level (inside `clear`, as above).

@@ -134,10 +134,9 @@ inline void GridSweep::wakePredecessorsOf(int x, int y, int z) {
     for (int zz = z0; zz <= z1; ++zz) wakeSpan(layerRow + std::size_t(zz), x0, x1);
 }
 
-// Strips of one phase run on threads side by side. A granular visit writes cells and bits up to
-// kGranularReach rows from its own and reads them up to kGranularReach + 1 rows away (the 9x9
-// windows of a wake); a word of bits holds 64 cells of one row, so two strips must never come
-// within that of each other's rows.
+// Strips of one phase run on threads side by side. A granular visit reads and writes cells and
+// bits up to kGranularReach rows from its own (the 7x7 windows of its slides and wakes); a word of
+// bits holds 64 cells of one row, so two strips must never come within that of each other's rows.
 static_assert(kStripRows >= 2 * kGranularReach + 1, "strips of one phase would share rows");
 
 namespace {
@@ -180,7 +179,7 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         std::uint64_t gaining = 0;
         for (; targets; targets &= targets - 1) {
             const int t = __builtin_ctz(targets);
-            const std::uint64_t open = granular_->grainsWithOpenSlideAcrossCentreTo(t, here) & woken & ~gaining;
+            const std::uint64_t open = granular_->grainsWithOpenSlideAcrossCentreTo(t, woken & ~gaining, here);
             if (!open) continue;
             if (deepTargets == ~std::uint64_t{0}) deepTargets = empty_.window<across>(x, y - 2, z);
             if (deepTargets >> t & 1) {
@@ -459,7 +458,6 @@ struct GridSweep::GranularStrip {
     CellValue* cells;
     std::span<FallState> falls;
     std::uint64_t seed, step, stream;
-    std::uint32_t layerSize;
     std::size_t layerWords; // words of awake and in-motion bits per layer
     RowWord* words;
     std::uint64_t* inMotion;
@@ -551,7 +549,6 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
                               context.seed,
                               context.step,
                               std::uint64_t(context.level),
-                              context.grid.layerSize(),
                               std::size_t(size_.z) * std::size_t(rowWords_),
                               words_.data(),
                               inMotion_.data(),
@@ -613,9 +610,10 @@ void GridSweep::prefetchFirstAwake(const CellGrid& grid, int y, int z) const {
     }
 }
 
-// Whether a row z0..z1-1 of layer y may hold awake cells. Only a strip's own visits wake its rows
-// (strips of one phase keep apart, and classic visits wake no row of their own layer), so a strip
-// with none awake when its turn comes is skipped whole: most strips of a busy layer are idle.
+// Whether a row z0..z1-1 of layer y may hold awake cells. A strip none of whose rows is awake when
+// its turn comes has nothing to visit, and while it would run nothing else can wake its rows (the
+// strips running beside it keep apart, the layers below are done, and a strip of the other phase
+// runs before or after it), so it is skipped whole: most strips of a busy layer are idle.
 bool GridSweep::anyRowAwake(int y, int z0, int z1) const {
     const auto first = rowAwake_.begin() + std::ptrdiff_t(std::size_t(y) * std::size_t(size_.z));
     return std::any_of(first + z0, first + z1, [](std::uint8_t flag) { return flag != 0; });

@@ -5,8 +5,7 @@
 // Canonical visiting order, the same for every thread count: layers from the bottom up; within
 // a layer, strips of kStripRows rows in two phases (even strips, then odd strips); within a strip,
 // rows by ascending z and cells by ascending x. A grain in row z only reads and writes rows
-// z-1..z+1 of the layers next to it (granular: writes z-3..z+3, reads z-4..z+4, still less than
-// a strip), so strips of one phase never touch each other's cells or bits and may run on
+// z-1..z+1 of the layers next to it (granular: z-3..z+3, still less than a strip), so strips of one phase never touch each other's cells or bits and may run on
 // different threads in any order.
 
 #include "empty_cells.hpp"
