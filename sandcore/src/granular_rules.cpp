@@ -67,6 +67,13 @@ int setBitCount(std::uint64_t v) {
     return int((v * 0x0101010101010101ull) >> 56);
 }
 
+// Enters path `path` (window bits) as bit `bit` of every row pattern of `table` it crosses.
+void addPath(GranularRules::RowBlockTable& table, std::uint64_t path, int bit) {
+    for (int r = 0; r < GranularRules::kWindow; ++r)
+        for (unsigned taken = 0; taken < (1u << GranularRules::kWindow); ++taken)
+            if ((path >> (r * GranularRules::kWindow)) & taken) table[std::size_t(r)][taken] |= std::uint64_t{1} << bit;
+}
+
 } // namespace
 
 GranularRules::GranularRules(const PhysicsSettings& physics) {
@@ -96,13 +103,9 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             // target column included, each rounded half away from zero so the path is symmetric
             // under every mirror of the grid.
             const int samples = 4 * std::max(std::abs(dx), std::abs(dz));
-            std::vector<std::array<int, 2>> path; // its cells in the order the line meets them
             for (int i = 1; i <= samples; ++i) {
-                const std::array<int, 2> cell{int(std::lround(double(dx) * i / samples)),
-                                              int(std::lround(double(dz) * i / samples))};
-                if (cell == std::array<int, 2>{0, 0}) continue;
-                if (std::find(path.begin(), path.end(), cell) == path.end()) path.push_back(cell);
-                o.pathMask |= std::uint64_t{1} << ((cell[1] + kGranularReach) * kWindow + cell[0] + kGranularReach);
+                const int cx = int(std::lround(double(dx) * i / samples)), cz = int(std::lround(double(dz) * i / samples));
+                if (cx != 0 || cz != 0) o.pathMask |= std::uint64_t{1} << ((cz + kGranularReach) * kWindow + cx + kGranularReach);
             }
             maxDrop_ = std::max(maxDrop_, int((o.thresholdQ8 + 255) >> 8));
         }
@@ -114,11 +117,7 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
         wholeExactly_[threshold >> 8] |= std::uint64_t{1} << k;
         restComplement_[std::size_t(k)] = std::uint8_t(255 - (threshold & 255));
     }
-    for (int r = 0; r < kWindow; ++r)
-        for (unsigned taken = 0; taken < (1u << kWindow); ++taken)
-            for (int k = 0; k < kOffsets; ++k)
-                if ((offsets_[std::size_t(k)].pathMask >> (r * kWindow)) & taken)
-                    blockedBy_[std::size_t(r)][taken] |= std::uint64_t{1} << k;
+    for (int k = 0; k < kOffsets; ++k) addPath(blockedBy_, offsets_[std::size_t(k)].pathMask, k);
     // The slides across a cell c, by the column t around c's they end in: the grain at b (from c)
     // slides by t - b, and its path, moved to b, crosses c. Every slide whose path crosses c is one
     // of them: the paths run straight from the grain to its target column, c lies on the way.
@@ -141,10 +140,7 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
                 path |= std::uint64_t{1} << ((pz + kGranularReach) * kWindow + px + kGranularReach);
             }
             slidesAcrossCentreTo_[std::size_t(t)] |= std::uint64_t{1} << bit;
-            for (int r = 0; r < kWindow; ++r)
-                for (unsigned taken = 0; taken < (1u << kWindow); ++taken)
-                    if ((path >> (r * kWindow)) & taken)
-                        acrossCentreBlockedBy_[std::size_t(t)][std::size_t(r)][taken] |= std::uint64_t{1} << bit;
+            addPath(acrossCentreBlockedBy_[std::size_t(t)], path, bit);
         }
     }
     // Each cell of each path is a slide across that cell: all of them must lie in the tables.
@@ -162,12 +158,7 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
         pathsTowardsCentre_[std::size_t((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx)] = path;
     }
     // The paths towards a column as a table of whole windows (grainsWithOpenPathTowardsCentre).
-    for (int bit = 0; bit < kWindow * kWindow; ++bit) {
-        for (int r = 0; r < kWindow; ++r)
-            for (unsigned taken = 0; taken < (1u << kWindow); ++taken)
-                if ((pathsTowardsCentre_[std::size_t(bit)] >> (r * kWindow)) & taken)
-                    towardsBlockedBy_[std::size_t(r)][taken] |= std::uint64_t{1} << bit;
-    }
+    for (int bit = 0; bit < kWindow * kWindow; ++bit) addPath(towardsBlockedBy_, pathsTowardsCentre_[std::size_t(bit)], bit);
     // Who may gain from an EMPTY cell c, by layer above c (see wakeMask): in c's layer and the one
     // above, every grain of the window; d layers above c, only a grain whose deepest possible
     // need towards c's column reaches d cells, since c lies d cells down that column.
@@ -268,9 +259,7 @@ GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty,
     // The slides open at the grain's level (no taken cell on the path, 7 look-ups) that end over an
     // EMPTY cell, as bit k for offset k (the window's centre has none: bits above it shift down).
     constexpr std::uint64_t kBelowCentre = (std::uint64_t{1} << (kOffsets / 2)) - 1;
-    std::uint64_t blocked = 0;
-    for (int r = 0; r < kWindow; ++r)
-        blocked |= blockedBy_[std::size_t(r)][~(emptyHere >> (r * kWindow)) & ((1u << kWindow) - 1)];
+    const std::uint64_t blocked = blockedIn(blockedBy_, emptyHere);
     std::uint64_t open = ((emptyBelow & kBelowCentre) | ((emptyBelow >> 1) & ~kBelowCentre)) & ~blocked;
     // On the glass (smoother than the sand) one free cell down is enough; on sand the column under
     // the path's end must be `need` deep, need = max(1, floor((T|e| + dither) / 256)) with a fixed

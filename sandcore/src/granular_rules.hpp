@@ -67,6 +67,9 @@ struct MotionHints {
 /// The tables the granular rules need, computed once from PhysicsSettings.
 class GranularRules {
 public:
+    /// Cells per side of the window a slide looks at.
+    static constexpr int kWindow = 2 * kGranularReach + 1;
+
     explicit GranularRules(const PhysicsSettings& physics);
 
     /// Applies the rules to the grain at (x, y, z), y >= 1, of `grid`, for step `step`; `stream`
@@ -86,6 +89,17 @@ public:
     /// The grains that an EMPTY cell c may let move, `layersAbove` (0..maxDrop()) layers above c:
     /// bit (dz + 3) * 7 + (dx + 3) stands for the grain at c + (dx, dz) in that layer.
     std::uint64_t wakeMask(int layersAbove) const { return wakeMasks_[std::size_t(layersAbove)]; }
+    /// Paths in a 7x7 window as a table: [r][taken] holds the paths (one bit each) that cross one of
+    /// the cells `taken` (7 bits) of window row r, so a window's blocked paths are 7 look-ups.
+    using RowBlockTable = std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow>;
+    /// The paths of `table` that cross a cell outside `clear` (a window's EMPTY cells).
+    static std::uint64_t blockedIn(const RowBlockTable& table, std::uint64_t clear) {
+        std::uint64_t blocked = 0;
+        for (int r = 0; r < kWindow; ++r)
+            blocked |= table[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
+        return blocked;
+    }
+
     /// Cells of the layer below a cell c that a slide across c may end in: every path across c
     /// ends within kAcrossReach columns of c's (it runs on from c towards its target).
     static constexpr int kAcrossReach = kGranularReach - 1;
@@ -97,20 +111,12 @@ public:
     /// of `among` has such a slide.
     std::uint64_t grainsWithOpenSlideAcrossCentreTo(int t, std::uint64_t among, std::uint64_t clear) const {
         const std::uint64_t grains = slidesAcrossCentreTo_[std::size_t(t)] & among;
-        if (!grains) return 0;
-        const auto& blockedBy = acrossCentreBlockedBy_[std::size_t(t)];
-        std::uint64_t blocked = 0;
-        for (int r = 0; r < kWindow; ++r)
-            blocked |= blockedBy[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
-        return grains & ~blocked;
+        return grains ? grains & ~blockedIn(acrossCentreBlockedBy_[std::size_t(t)], clear) : 0;
     }
     /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
     /// column crosses only EMPTY cells at their level (inside `clear`, as above).
     std::uint64_t grainsWithOpenPathTowardsCentre(std::uint64_t clear) const {
-        std::uint64_t blocked = 0;
-        for (int r = 0; r < kWindow; ++r)
-            blocked |= towardsBlockedBy_[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
-        return ~blocked & ((std::uint64_t{1} << (kWindow * kWindow)) - 1);
+        return ~blockedIn(towardsBlockedBy_, clear) & ((std::uint64_t{1} << (kWindow * kWindow)) - 1);
     }
     /// True when the grain in cell `from` of grid `stream` (off the vessel) needs the column of
     /// slide k at least `depth` >= 2 cells deep: the dither of its threshold is fixed per cell
@@ -126,8 +132,6 @@ public:
     /// The slope T the thresholds use for the asked angle (after calibration).
     double thresholdSlope() const { return slope_; }
 
-    /// Cells per side of the window a slide looks at.
-    static constexpr int kWindow = 2 * kGranularReach + 1;
     /// One sideways move: the offset, and the cells of the grain's layer its path crosses.
     struct Offset {
         int dx = 0, dz = 0;            ///< column offset, cells
@@ -147,7 +151,7 @@ private:
     std::array<Offset, kOffsets> offsets_{};
     // blockedBy_[r][taken]: the slides (bit k for offset k) whose path crosses one of the cells
     // `taken` (7 bits) of row r of the window, so a window's blocked slides are 7 look-ups.
-    std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow> blockedBy_{};
+    RowBlockTable blockedBy_{};
     // A slide's need is floor((T|e| in 1/256 cells + dither) / 256): the whole part of T|e|
     // plus a carry when the dither reaches past the rest. wholeAtLeast_[d]: the slides whose whole
     // part is d or more; wholeExactly_[d]: exactly d; restComplement_[k]: 255 minus the rest, so
@@ -163,12 +167,11 @@ private:
     std::array<std::uint64_t, kWindow * kWindow> pathsTowardsCentre_{};
     // towardsBlockedBy_[r][taken]: the grains whose path of pathsTowardsCentre_ crosses a taken
     // cell of window row r.
-    std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow> towardsBlockedBy_{};
+    RowBlockTable towardsBlockedBy_{};
     // For each column t of the 5x5 under a cell c: the grains with a slide across c into t, and
     // [t][r][taken] those of them whose path crosses a taken cell of window row r around c.
     std::array<std::uint64_t, kAcrossWindow * kAcrossWindow> slidesAcrossCentreTo_{};
-    std::array<std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow>, kAcrossWindow * kAcrossWindow>
-        acrossCentreBlockedBy_{};
+    std::array<RowBlockTable, kAcrossWindow * kAcrossWindow> acrossCentreBlockedBy_{};
 };
 
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.

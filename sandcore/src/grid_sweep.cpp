@@ -205,6 +205,14 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
     if (woken) wakeWindow(x, y, z, woken);
 }
 
+// Where the 7 cells x - 3 .. x + 3 of a row lie in its words of bits: columns left of 0 are
+// dropped (shifted out), those right of the grid meet occupied bits that are never set.
+GridSweep::WindowColumns GridSweep::windowColumnsAround(int x) const {
+    const int first = std::max(x - kGranularReach, 0), dropped = first - (x - kGranularReach);
+    const int word = first >> 6, offset = first & 63;
+    return {word, offset, dropped, offset + kGranularWindow - dropped > 64 && word + 1 < rowWords_};
+}
+
 // The 7x7 cells around (x, z) of layer y (bit (dz + 3) * 7 + (dx + 3)) that hold a grain and are
 // not awake. Away from the grid's sides, where the 7 cells of a row lie in one word, a row is a
 // load and two shifts.
@@ -222,17 +230,14 @@ std::uint64_t GridSweep::sleepingGrainsAround(int x, int y, int z) const {
             return ((((row[r * stride].occupied & ~row[r * stride].awake) >> offset & rowMask) << (r * window)) | ...);
         }(std::make_index_sequence<window>{});
     }
-    // Near a side: columns left of 0 are shifted out, those right of the grid meet occupied bits
-    // that are never set, rows outside the grid are skipped.
-    const int first = std::max(x0, 0), dropped = first - x0;
-    const int word = first >> 6, firstOffset = first & 63;
-    const bool spills = firstOffset + window - dropped > 64 && word + 1 < rowWords_;
+    // Near a side (windowColumnsAround), or across two words; rows outside the grid are skipped.
+    const WindowColumns at = windowColumnsAround(x);
     const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
     for (int zz = z0; zz <= z1; ++zz) {
-        const RowWord* row = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(zz)) * stride + std::size_t(word);
-        std::uint64_t bits = (row[0].occupied & ~row[0].awake) >> firstOffset;
-        if (spills) bits |= (row[1].occupied & ~row[1].awake) << (64 - firstOffset);
-        grains |= ((bits << dropped) & rowMask) << ((zz - z + reach) * window);
+        const RowWord* row = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(zz)) * stride + std::size_t(at.word);
+        std::uint64_t bits = (row[0].occupied & ~row[0].awake) >> at.offset;
+        if (at.spills) bits |= (row[1].occupied & ~row[1].awake) << (64 - at.offset);
+        grains |= ((bits << at.dropped) & rowMask) << ((zz - z + reach) * window);
     }
     return grains;
 }
@@ -242,19 +247,16 @@ std::uint64_t GridSweep::sleepingGrainsAround(int x, int y, int z) const {
 void GridSweep::wakeWindow(int x, int y, int z, std::uint64_t woken) {
     constexpr int reach = kGranularReach, window = kGranularWindow;
     constexpr std::uint64_t rowMask = (std::uint64_t{1} << window) - 1;
-    const int x0 = x - reach;
-    const int first = std::max(x0, 0), dropped = first - x0;
-    const int word = first >> 6, offset = first & 63;
-    const bool spills = offset + window - dropped > 64 && word + 1 < rowWords_;
+    const WindowColumns at = windowColumnsAround(x);
     const std::size_t layerRow = std::size_t(y) * std::size_t(size_.z);
     while (woken) {
         const int r = __builtin_ctzll(woken) / window; // the next row with a grain to wake
-        const std::uint64_t rowBits = ((woken >> (r * window)) & rowMask) >> dropped;
+        const std::uint64_t rowBits = ((woken >> (r * window)) & rowMask) >> at.dropped;
         woken &= ~(rowMask << (r * window));
         const std::size_t row = layerRow + std::size_t(z - reach + r);
-        RowWord* words = words_.data() + row * std::size_t(rowWords_) + std::size_t(word);
-        words[0].awake |= rowBits << offset;
-        if (spills) words[1].awake |= rowBits >> (64 - offset);
+        RowWord* words = words_.data() + row * std::size_t(rowWords_) + std::size_t(at.word);
+        words[0].awake |= rowBits << at.offset;
+        if (at.spills) words[1].awake |= rowBits >> (64 - at.offset);
         rowAwake_[row] = 1;
     }
 }

@@ -154,6 +154,12 @@ private:
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
     void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove);
+    // Where a granular window's 7 columns around x lie in a row's words of bits.
+    struct WindowColumns {
+        int word, offset, dropped; // first word, the bit the window starts at in it, columns left of 0
+        bool spills;               // the window runs on into the next word
+    };
+    WindowColumns windowColumnsAround(int x) const;
     std::uint64_t sleepingGrainsAround(int x, int y, int z) const;
     void wakeWindow(int x, int y, int z, std::uint64_t woken);
     std::uint64_t deepEnoughForSlidesInto(const CellGrid& grid, std::uint64_t woken, int x, int y, int z, int layersAbove) const;
