@@ -74,6 +74,18 @@ void addPath(GranularRules::RowBlockTable& table, std::uint64_t path, int bit) {
             if ((path >> (r * GranularRules::kWindow)) & taken) table[std::size_t(r)][taken] |= std::uint64_t{1} << bit;
 }
 
+// The path of slide o at the grain's level, as window bits around the slide's target column.
+std::uint64_t pathsTowardsCentreOf(const GranularRules::Offset& o) {
+    constexpr int reach = kGranularReach, window = GranularRules::kWindow;
+    std::uint64_t path = 0;
+    for (int bit = 0; bit < window * window; ++bit)
+        if (o.pathMask >> bit & 1) { // cell q of the path, q - o seen from the target column
+            const int qx = bit % window - reach - o.dx, qz = bit / window - reach - o.dz;
+            path |= std::uint64_t{1} << ((qz + reach) * window + qx + reach);
+        }
+    return path;
+}
+
 } // namespace
 
 GranularRules::GranularRules(const PhysicsSettings& physics) {
@@ -139,8 +151,17 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
                     throw std::logic_error("granular rules: a path across a cell leaves the 7x7 columns around it");
                 path |= std::uint64_t{1} << ((pz + kGranularReach) * kWindow + px + kGranularReach);
             }
+            const int slot = setBitCount(slidesAcrossCentreTo_[std::size_t(t)]);
             slidesAcrossCentreTo_[std::size_t(t)] |= std::uint64_t{1} << bit;
-            addPath(acrossCentreBlockedBy_[std::size_t(t)], path, bit);
+            if (t == kAcrossCentre) { // read as the paths towards the centre
+                if (path != pathsTowardsCentreOf(o))
+                    throw std::logic_error("granular rules: a slide into a column does not end at its cell");
+                continue;
+            }
+            if (slot >= kMaxSlidesAcrossInto)
+                throw std::logic_error("granular rules: more slides across a cell into one column than the wakes hold");
+            pathsAcrossCentreInto_[std::size_t(t)][std::size_t(slot)] = path;
+            slotAcrossCentreInto_[std::size_t(t)][std::size_t(bit)] = std::uint8_t(slot);
         }
     }
     // Each cell of each path is a slide across that cell: all of them must lie in the tables.
@@ -148,17 +169,15 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
     for (const Offset& o : offsets_) slidesCrossing += setBitCount(o.pathMask);
     if (slidesCrossing != slidesAcross)
         throw std::logic_error("granular rules: a slide across a cell ends beyond the columns the wakes look at");
-    for (const Offset& o : offsets_) {
-        std::uint64_t path = 0;
-        for (int bit = 0; bit < kWindow * kWindow; ++bit)
-            if (o.pathMask >> bit & 1) { // cell q of the path, q - o seen from the target column
-                const int qx = bit % kWindow - kGranularReach - o.dx, qz = bit / kWindow - kGranularReach - o.dz;
-                path |= std::uint64_t{1} << ((qz + kGranularReach) * kWindow + qx + kGranularReach);
-            }
-        pathsTowardsCentre_[std::size_t((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx)] = path;
-    }
+    for (const Offset& o : offsets_)
+        pathsTowardsCentre_[std::size_t((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx)] = pathsTowardsCentreOf(o);
     // The paths towards a column as a table of whole windows (grainsWithOpenPathTowardsCentre).
-    for (int bit = 0; bit < kWindow * kWindow; ++bit) addPath(towardsBlockedBy_, pathsTowardsCentre_[std::size_t(bit)], bit);
+    constexpr std::uint64_t kOuterRows = ((std::uint64_t{1} << kWindow) - 1) | ((std::uint64_t{1} << kWindow) - 1) << (kWindow * (kWindow - 1));
+    for (int bit = 0; bit < kWindow * kWindow; ++bit) {
+        if (pathsTowardsCentre_[std::size_t(bit)] & kOuterRows)
+            throw std::logic_error("granular rules: a path towards a column crosses the window's outer rows");
+        addPath(towardsBlockedBy_, pathsTowardsCentre_[std::size_t(bit)], bit);
+    }
     // Who may gain from an EMPTY cell c, by layer above c (see wakeMask): in c's layer and the one
     // above, every grain of the window; d layers above c, only a grain whose deepest possible
     // need towards c's column reaches d cells, since c lies d cells down that column.

@@ -92,10 +92,12 @@ public:
     /// Paths in a 7x7 window as a table: [r][taken] holds the paths (one bit each) that cross one of
     /// the cells `taken` (7 bits) of window row r, so a window's blocked paths are 7 look-ups.
     using RowBlockTable = std::array<std::array<std::uint64_t, 1u << kWindow>, kWindow>;
-    /// The paths of `table` that cross a cell outside `clear` (a window's EMPTY cells).
+    /// The paths of `table` that cross a cell outside `clear` (a window's EMPTY cells), for tables
+    /// whose paths cross only rows FirstRow..LastRow of the window.
+    template <int FirstRow = 0, int LastRow = kWindow - 1>
     static std::uint64_t blockedIn(const RowBlockTable& table, std::uint64_t clear) {
         std::uint64_t blocked = 0;
-        for (int r = 0; r < kWindow; ++r)
+        for (int r = FirstRow; r <= LastRow; ++r)
             blocked |= table[std::size_t(r)][~(clear >> (r * kWindow)) & ((1u << kWindow) - 1)];
         return blocked;
     }
@@ -107,16 +109,27 @@ public:
     /// Of the grains `among` around c (window bits as in wakeMask), those with a slide across c
     /// into the column t = (tdz + 2) * 5 + (tdx + 2) around it whose path at their level is EMPTY
     /// (inside `clear`, the EMPTY cells of the layer's 7x7 window around c, where all such paths
-    /// lie): a grain has at most one slide into a given column. Seven look-ups, none when no grain
-    /// of `among` has such a slide.
+    /// lie): a grain has at most one slide into a given column. Every slide into c's own column
+    /// crosses c (its path ends there), so those are the paths towards the centre, five look-ups;
+    /// into any other column at most 8 grains slide across c, and each one's path is the slide's
+    /// own, moved to where the grain lies. Nothing is read when no grain of `among` has such a slide.
     std::uint64_t grainsWithOpenSlideAcrossCentreTo(int t, std::uint64_t among, std::uint64_t clear) const {
-        const std::uint64_t grains = slidesAcrossCentreTo_[std::size_t(t)] & among;
-        return grains ? grains & ~blockedIn(acrossCentreBlockedBy_[std::size_t(t)], clear) : 0;
+        std::uint64_t grains = slidesAcrossCentreTo_[std::size_t(t)] & among;
+        if (!grains) return 0;
+        if (t == kAcrossCentre) return grains & ~blockedTowardsCentre(clear);
+        const auto& paths = pathsAcrossCentreInto_[std::size_t(t)];
+        const auto& slots = slotAcrossCentreInto_[std::size_t(t)];
+        std::uint64_t open = 0;
+        for (; grains; grains &= grains - 1) {
+            const int bit = __builtin_ctzll(grains);
+            if (!(paths[slots[std::size_t(bit)]] & ~clear)) open |= std::uint64_t{1} << bit;
+        }
+        return open;
     }
     /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
     /// column crosses only EMPTY cells at their level (inside `clear`, as above).
     std::uint64_t grainsWithOpenPathTowardsCentre(std::uint64_t clear) const {
-        return ~blockedIn(towardsBlockedBy_, clear) & ((std::uint64_t{1} << (kWindow * kWindow)) - 1);
+        return ~blockedTowardsCentre(clear) & ((std::uint64_t{1} << (kWindow * kWindow)) - 1);
     }
     /// True when the grain in cell `from` of grid `stream` (off the vessel) needs the column of
     /// slide k at least `depth` >= 2 cells deep: the dither of its threshold is fixed per cell
@@ -168,10 +181,20 @@ private:
     // towardsBlockedBy_[r][taken]: the grains whose path of pathsTowardsCentre_ crosses a taken
     // cell of window row r.
     RowBlockTable towardsBlockedBy_{};
-    // For each column t of the 5x5 under a cell c: the grains with a slide across c into t, and
-    // [t][r][taken] those of them whose path crosses a taken cell of window row r around c.
+    // For each column t of the 5x5 under a cell c: the grains with a slide across c into t.
     std::array<std::uint64_t, kAcrossWindow * kAcrossWindow> slidesAcrossCentreTo_{};
-    std::array<RowBlockTable, kAcrossWindow * kAcrossWindow> acrossCentreBlockedBy_{};
+    static constexpr int kAcrossCentre = kAcrossReach * kAcrossWindow + kAcrossReach; // c's own column
+
+    // Paths towards a column never reach the window's first and last rows (a grain 3 rows away
+    // leaves its own row at its first step): the constructor checks it.
+    std::uint64_t blockedTowardsCentre(std::uint64_t clear) const { return blockedIn<1, kWindow - 2>(towardsBlockedBy_, clear); }
+    // For each column t of the 5x5 under c other than c's own: the paths at their level (window
+    // bits around c) of the at most 8 grains with a slide across c into t, and which of them is
+    // the grain at each window bit's. 2.7 KB in all (a table of row patterns that stood here took
+    // 179 KB and missed the cache).
+    static constexpr int kMaxSlidesAcrossInto = 8;
+    std::array<std::array<std::uint64_t, kMaxSlidesAcrossInto>, kAcrossWindow * kAcrossWindow> pathsAcrossCentreInto_{};
+    std::array<std::array<std::uint8_t, kWindow * kWindow>, kAcrossWindow * kAcrossWindow> slotAcrossCentreInto_{};
 };
 
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.

@@ -99,6 +99,14 @@ void GridSweep::wakeAt(int x, int y, int z) {
     rowAwake_[row] = 1;
 }
 
+inline void GridSweep::wakeIfOccupied(int x, int y, int z) {
+    const std::size_t row = std::size_t(y) * std::size_t(size_.z) + std::size_t(z);
+    RowWord& word = words_[row * std::size_t(rowWords_) + std::size_t(x >> 6)];
+    const std::uint64_t bit = word.occupied & std::uint64_t{1} << (x & 63);
+    word.awake |= bit;
+    if (bit) rowAwake_[row] = 1;
+}
+
 void GridSweep::wake(std::uint32_t cell) {
     const Int3 c = coordinateOf(cell);
     if (c.y == 0 && !bottomIsOutlet_) return; // the floor has nothing below it: never visited
@@ -305,7 +313,10 @@ void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
     const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
     for (int layer = y + 1; layer <= top; ++layer) {
         if (!empty_.isEmpty(x, layer, z)) { // the kept bits: a column's cells lie a layer apart
-            if (layer == y + 1 && grid.at(x, layer, z) >= 0) wakeAt(x, layer, z);
+            // A grain right above may fall. The cell holds a grain or the vessel, and its occupied
+            // bit tells which without reading it: never clear under a grain, never set on the
+            // vessel but where an edit left it stale (a cell woken so is visited and left).
+            if (layer == y + 1) wakeIfOccupied(x, layer, z);
             break;
         }
         wakeGrainsAround(grid, x, layer, z, layer - y);
