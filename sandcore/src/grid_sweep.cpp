@@ -176,8 +176,8 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         // two cells deep also needs the cell under its target EMPTY, unless the grain lies on the
         // vessel, where one cell is enough. Whatever opens such a slide later (a cell of the path
         // or the target emptying, the column deepening) wakes the grain then. Such slides end in
-        // the 5x5 columns around (x, z): target by target, seven look-ups find the grains whose
-        // path to it is open (GranularRules::grainsWithOpenSlideAcrossCentreTo). Outside the grid
+        // the 5x5 columns around (x, z): target by target, the grains whose path to it is open
+        // (GranularRules::grainsWithOpenSlideAcrossCentreTo). Outside the grid
         // the windows read as taken; under layer 1 the column is never deep enough.
         constexpr int across = GranularRules::kAcrossReach;
         auto targets = std::uint32_t(empty_.window<across>(x, y - 1, z));
