@@ -190,7 +190,7 @@ private:
     std::uint64_t blockedTowardsCentre(std::uint64_t clear) const { return blockedIn<1, kWindow - 2>(towardsBlockedBy_, clear); }
     // For each column t of the 5x5 under c other than c's own: the paths at their level (window
     // bits around c) of the at most 8 grains with a slide across c into t, and which of them is
-    // the grain at each window bit's. 2.7 KB in all (a table of row patterns that stood here took
+    // the grain at each window bit's. 2.8 KB in all (a table of row patterns that stood here took
     // 179 KB and missed the cache).
     static constexpr int kMaxSlidesAcrossInto = 8;
     std::array<std::array<std::uint64_t, kMaxSlidesAcrossInto>, kAcrossWindow * kAcrossWindow> pathsAcrossCentreInto_{};
