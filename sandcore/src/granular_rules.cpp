@@ -169,14 +169,13 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
     for (const Offset& o : offsets_) slidesCrossing += setBitCount(o.pathMask);
     if (slidesCrossing != slidesAcross)
         throw std::logic_error("granular rules: a slide across a cell ends beyond the columns the wakes look at");
-    for (const Offset& o : offsets_)
-        pathsTowardsCentre_[std::size_t((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx)] = pathsTowardsCentreOf(o);
-    // The paths towards a column as a table of whole windows (grainsWithOpenPathTowardsCentre).
+    // The paths towards a column as a table of whole windows (grainsWithOpenPathTowardsCentre):
+    // the grain at -o slides into the column by o.
     constexpr std::uint64_t kOuterRows = ((std::uint64_t{1} << kWindow) - 1) | ((std::uint64_t{1} << kWindow) - 1) << (kWindow * (kWindow - 1));
-    for (int bit = 0; bit < kWindow * kWindow; ++bit) {
-        if (pathsTowardsCentre_[std::size_t(bit)] & kOuterRows)
-            throw std::logic_error("granular rules: a path towards a column crosses the window's outer rows");
-        addPath(towardsBlockedBy_, pathsTowardsCentre_[std::size_t(bit)], bit);
+    for (const Offset& o : offsets_) {
+        const std::uint64_t path = pathsTowardsCentreOf(o);
+        if (path & kOuterRows) throw std::logic_error("granular rules: a path towards a column crosses the window's outer rows");
+        addPath(towardsBlockedBy_, path, (kGranularReach - o.dz) * kWindow + kGranularReach - o.dx);
     }
     // Who may gain from an EMPTY cell c, by layer above c (see wakeMask): in c's layer and the one
     // above, every grain of the window; d layers above c, only a grain whose deepest possible

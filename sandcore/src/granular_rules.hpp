@@ -175,11 +175,8 @@ private:
     int maxDrop_ = 1;
     std::uint32_t gravity_ = 0;
     std::vector<std::uint64_t> wakeMasks_;
-    // For the grain at window bit b around a column c: the cells its slide into c's column crosses
-    // at its own level, as window bits around c.
-    std::array<std::uint64_t, kWindow * kWindow> pathsTowardsCentre_{};
-    // towardsBlockedBy_[r][taken]: the grains whose path of pathsTowardsCentre_ crosses a taken
-    // cell of window row r.
+    // towardsBlockedBy_[r][taken]: of the grains around a column c (window bits), those whose slide
+    // into c's column crosses, at their own level, a taken cell of window row r around c.
     RowBlockTable towardsBlockedBy_{};
     // For each column t of the 5x5 under a cell c: the grains with a slide across c into t.
     std::array<std::uint64_t, kAcrossWindow * kAcrossWindow> slidesAcrossCentreTo_{};
