@@ -153,7 +153,7 @@ private:
     void prefetchFirstAwake(const CellGrid& grid, int y, int z) const;
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
-    void wakeIfOccupied(int x, int y, int z); // wakeAt for a cell whose occupied bit is set
+    void wakeIfOccupied(int x, int y, int z); // wakeAt, but only when the cell's occupied bit is set
     void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove);
     // Where a granular window's 7 columns around x lie in a row's words of bits.
     struct WindowColumns {
