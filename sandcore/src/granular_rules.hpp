@@ -23,6 +23,14 @@
 // options a change can widen (R5, R6): its own column downwards and the speed of the grain
 // below it; cells of its own layer within 3 columns (the paths); and the 7x7 columns of the
 // layers up to maxDrop() below it.
+//
+// The paths read the grain's layer as it was when the layer's turn in the sweep began: a cell
+// that a grain of the same layer leaves in this step opens paths from the next step on (the
+// EmptyCellBits the slides read are updated at the end of the turn). So within a layer no grain
+// slides through a gap opened a moment before in the sweep's order, and a cell that is left and
+// filled again in one step (a column moving down a cell: the grain above falls in) opens no path
+// at all and wakes nobody in its layer. The layers below, the targets and columns, are read as
+// they are: two grains of one layer never enter the same cell.
 
 #include "empty_cells.hpp"
 #include "sandcore/cell_grid.hpp"

@@ -162,10 +162,9 @@ constexpr int kGranularWindow = 2 * kGranularReach + 1;
 // options that the emptied cell can widen) and whose slide looks as deep as the emptied cell
 // (deepEnoughForSlidesInto); the column above it is EMPTY up to layer y (wakeForGranular). Each
 // row's 7 bits are shifted into place and ANDed with the occupied bits, as wakeSpan does, so EMPTY
-// and INVALID cells stay asleep. That is exact: when this runs, during the sweep
-// of layer y or below, no grain can enter those cells before they are visited in this step
-// (grains only move down, and layer y and those above have not been swept yet), and one that
-// enters later is woken by its move.
+// and INVALID cells stay asleep. That is exact: a grain that enters one of those cells later is
+// woken by its move. In the layers above, this runs before their turn in the step; in the
+// emptied cell's own layer, after it (endGranularTurn), for the next step.
 void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove) {
     // The grains in the window not yet awake: waking an awake one changes nothing.
     std::uint64_t woken = granular_->wakeMask(layersAbove) & sleepingGrainsAround(x, y, z);
@@ -310,6 +309,10 @@ std::uint64_t GridSweep::deepEnoughForSlidesInto(const CellGrid& grid, std::uint
 // above (x, y, z), can gain: it may fall).
 void GridSweep::wakeForGranular(const CellGrid& grid, int x, int y, int z) {
     if (y > 0) wakeGrainsAround(grid, x, y, z, 0); // layer 0 only falls or transitions
+    wakeLayersAbove(grid, x, y, z);
+}
+
+void GridSweep::wakeLayersAbove(const CellGrid& grid, int x, int y, int z) {
     const int top = std::min(y + granular_->maxDrop(), size_.y - 1);
     for (int layer = y + 1; layer <= top; ++layer) {
         if (!empty_.isEmpty(x, layer, z)) { // the kept bits: a column's cells lie a layer apart
@@ -337,11 +340,42 @@ template <bool Granular> inline void GridSweep::wakeAroundEmptiedBy(const CellGr
     } else {
         wakePredecessorsOf(x, y, z);
     }
+    wakeOutletAbove(x, y, z);
+}
+
+inline void GridSweep::wakeOutletAbove(int x, int y, int z) {
     if (!above_ || y != size_.y - 1) return;
     if (deferWakesAbove_)
         deferredWakesAbove_.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
     else
         above_->wakeAt(x, 0, z);
+}
+
+// A layer's paths see it as its turn began (granular_rules.hpp), so the cells its grains leave
+// become EMPTY in the kept bits only when the turn ends, for the layers above and the next step.
+// Their own-layer wakes (the grains of the layer that may slide across them) matter only for the
+// next step, and only if the cell is still EMPTY then; after a layer's turn its cells can only
+// fill, mostly in the next turn, when the grain above falls in. So they wait until the end of the
+// next turn: a cell EMPTY then is woken around as wakeForGranular does (one filled later in the
+// step wakes grains that find nothing, which changes no state); one already filled again wakes
+// nobody, as nobody can gain from it (75% of them in the million-grain drain).
+void GridSweep::endGranularTurn(const CellGrid& grid, int y) {
+    wakeAroundCellsLeftEarlier(grid);
+    const auto sizeX = std::uint32_t(size_.x);
+    for (StripLog& log : logs_) {
+        for (const std::uint32_t column : log.left) {
+            const int x = int(column % sizeX), z = int(column / sizeX);
+            empty_.setEmpty(x, y, z, true);
+            leftEarlier_.push_back({x, y, z});
+        }
+        log.left.clear();
+    }
+}
+
+void GridSweep::wakeAroundCellsLeftEarlier(const CellGrid& grid) {
+    for (const Int3& c : leftEarlier_)
+        if (empty_.isEmpty(c.x, c.y, c.z)) wakeGrainsAround(grid, c.x, c.y, c.z, 0);
+    leftEarlier_.clear();
 }
 
 void GridSweep::applyDeferredWakes() {
@@ -479,8 +513,9 @@ struct GridSweep::GranularStrip {
 };
 
 // row: y * sizeZ + z; rowStart: the index of cell (0, y, z). The strip loop has both.
-inline bool GridSweep::visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x, int y,
-                                     int z, std::uint32_t row, std::uint32_t rowStart) {
+inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log,
+                                                      int x, int y, int z, std::uint32_t row, std::uint32_t rowStart,
+                                                      bool& stopped) {
     // The occupied bits are kept as the classic visit keeps them, so the granular wakes can AND
     // with them instead of reading cells.
     const std::size_t word = std::size_t(row) * std::size_t(rowWords_) + std::size_t(x >> 6);
@@ -491,7 +526,7 @@ inline bool GridSweep::visitGranular(const SweepContext& context, const Granular
     std::uint64_t* inMotion = strip.inMotion;
     if (cells[from] < 0) {
         words[word].occupied &= ~bit;
-        return false;
+        return GranularOutcome::Resting;
     }
     // The grain below is in the same column of the layer below: the same bit, one layer's words back.
     const MotionHints hints{(inMotion[word] & bit) != 0, (inMotion[word - strip.layerWords] & bit) != 0};
@@ -519,15 +554,20 @@ inline bool GridSweep::visitGranular(const SweepContext& context, const Granular
             strip.rowAwake[row + std::uint32_t(strip.sizeZ)] = 1;
         }
     }
-    if (outcome.kind != GranularOutcome::Moved) return false;
+    stopped = outcome.stopped;
+    if (outcome.kind != GranularOutcome::Moved) return outcome.kind;
     words[word].occupied &= ~bit; // every move goes down at least a layer: the cell it left is EMPTY
     const Int3 to = outcome.to;
     const std::uint32_t toCell = strip.grid.index(to.x, to.y, to.z);
-    empty_.setEmpty(to.x, to.y, to.z, false); // the cell it entered; the one it left: wakeAroundEmptiedBy
+    empty_.setEmpty(to.x, to.y, to.z, false); // the cell it entered; the one it left: at the turn's end
     record(context, log, {std::uint32_t(cells[toCell]), toCell, outcome.cameFrom, context.level});
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
-    wakeAroundEmptiedBy<true>(strip.grid, x, y, z);            // the cell it left is free
-    return true;
+    // The cell it left is free: the layers above may use it in this step; its own layer in the
+    // next (endGranularTurn).
+    log.left.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
+    wakeLayersAbove(strip.grid, x, y, z);
+    wakeOutletAbove(x, y, z);
+    return GranularOutcome::Moved;
 }
 
 // A grain in motion reads its fall state, by id: a cache miss after the miss on its cell. The
@@ -546,13 +586,12 @@ inline bool GridSweep::visitGranular(const SweepContext& context, const Granular
     if (grain >= 0) __builtin_prefetch(strip.falls.data() + grain);
 }
 
-// The granular strip loop. Granular moves also wake cells of their own layer (the paths), and a
-// grain visited later sees the cells emptied by one visited earlier, so a fixed order lets grains
-// run one way more easily than the other and cones lean (PH2). The order therefore turns with the
-// step: x ascending or descending by bit 0 of the step number, z by bit 1, so over four steps every
-// mirror of the grid is swept alike. With sleeping, each bit is taken as it is reached: a bit set
-// ahead of the cell being visited is visited in this step, one set behind it in the next, as a
-// full sweep in the same order would see the change.
+// The granular strip loop. A grain visited later finds the cells of the layer below taken by one
+// visited earlier, so a fixed order would let grains run one way more easily than the other and
+// cones would lean (PH2). The order therefore turns with the step: x ascending or descending by
+// bit 0 of the step number, z by bit 1, so over four steps every mirror of the grid is swept
+// alike. No visit wakes a cell of its own layer for this step (the header), so each word's awake
+// bits are taken at once, as the classic loop takes them.
 SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd) {
     SweepResult totals;
     if (context.sleeping && !anyRowAwake(y, zBegin, zEnd)) return totals;
@@ -575,7 +614,10 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
         const std::uint32_t rowStart = row * std::uint32_t(size_.x); // cell (0, y, z)
         auto visit = [&](int x) {
             ++totals.visited;
-            totals.moves += visitGranular(context, strip, log, x, y, z, row, rowStart) ? 1 : 0;
+            bool stopped = false;
+            const GranularOutcome::Kind kind = visitGranular(context, strip, log, x, y, z, row, rowStart, stopped);
+            totals.moves += kind == GranularOutcome::Moved ? 1 : 0;
+            totals.speedChanges += kind == GranularOutcome::Waiting || stopped ? 1 : 0;
         };
         if (context.sleeping && !rowAwake_[row]) continue;
         rowAwake_[row] = 0;
@@ -591,15 +633,12 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
                 }
                 continue;
             }
-            std::uint64_t ahead = ~std::uint64_t{0};
-            while (const std::uint64_t bits = words[w].awake & ahead) {
+            std::uint64_t bits = words[w].awake;
+            words[w].awake = 0;
+            while (bits) {
                 const int bit = xDown ? 63 - __builtin_clzll(bits) : __builtin_ctzll(bits);
-                words[w].awake &= ~(std::uint64_t{1} << bit);
-                if (xDown)
-                    ahead = (std::uint64_t{1} << bit) - 1;
-                else
-                    ahead = bit == 63 ? 0 : ~std::uint64_t{0} << (bit + 1);
-                askAheadForFallStates(strip, bits & ahead, xDown, rowStart + std::uint32_t(w * 64), row * std::size_t(rowWords_) + std::size_t(w));
+                bits &= ~(std::uint64_t{1} << bit);
+                askAheadForFallStates(strip, bits, xDown, rowStart + std::uint32_t(w * 64), row * std::size_t(rowWords_) + std::size_t(w));
                 visit(w * 64 + bit);
             }
         }
@@ -678,6 +717,7 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
     auto add = [&result](const SweepResult& t) {
         result.moves += t.moves;
         result.visited += t.visited;
+        result.speedChanges += t.speedChanges;
     };
 
     for (int y = 1; y < size.y; ++y) {
@@ -695,9 +735,12 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
                 const SweepResult t = sweepStrip<Granular>(context, y, strip);
                 stripTotals[std::size_t(strip)].moves += t.moves;
                 stripTotals[std::size_t(strip)].visited += t.visited;
+                stripTotals[std::size_t(strip)].speedChanges += t.speedChanges;
             });
         }
+        if constexpr (Granular) endGranularTurn(context.grid, y);
     }
+    if constexpr (Granular) wakeAroundCellsLeftEarlier(context.grid);
     for (const SweepResult& t : stripTotals) add(t);
     return result;
 }

@@ -5,10 +5,14 @@
 // Canonical visiting order, the same for every thread count: layers from the bottom up; within
 // a layer, strips of kStripRows rows in two phases (even strips, then odd strips); within a strip,
 // rows by ascending z and cells by ascending x. A grain in row z only reads and writes rows
-// z-1..z+1 of the layers next to it (granular: z-3..z+3, still less than a strip), so strips of one phase never touch each other's cells or bits and may run on
-// different threads in any order.
+// z-1..z+1 of the layers next to it (granular: z-3..z+3, still less than a strip), so strips of
+// one phase never touch each other's cells or bits and may run on different threads in any order.
+// Under both rule sets a visit wakes no cell of its own layer for the same step: the classic
+// rules read only the layer below, and the granular paths read their layer as it was when its
+// turn began (granular_rules.hpp), so a layer's awake bits are final when its turn begins.
 
 #include "empty_cells.hpp"
+#include "granular_rules.hpp"
 #include "move_feed.hpp"
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
@@ -19,7 +23,6 @@
 namespace sandcore {
 
 class WorkerPool;
-class GranularRules;
 
 inline constexpr int kStripRows = 8;
 
@@ -27,11 +30,15 @@ inline constexpr int kStripRows = 8;
 /// grains it moved and where to (threads that share a layer's strips each append to their own).
 struct StripLog {
     std::vector<GrainMove> moved;
+    /// Granular: the cells (x + sizeX * z) its grains left in the current layer's turn, kept
+    /// until the turn ends (granular_rules.hpp: a layer's paths see it as its turn began).
+    std::vector<std::uint32_t> left;
 };
 
 struct SweepResult {
     std::int64_t moves = 0;   ///< grains moved
     std::int64_t visited = 0; ///< cells looked at
+    std::int64_t speedChanges = 0; ///< granular: grains whose fall changed without a move (SceneCounters)
 };
 
 /// What one grid's sweep in one step shares with every cell it visits (like Box2D's
@@ -139,11 +146,18 @@ private:
     template <bool Granular> SweepResult sweepBy(const SweepContext& context, WorkerPool* pool);
     template <bool Granular> SweepResult sweepStrip(const SweepContext& context, int y, int strip);
     template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
+    void wakeOutletAbove(int x, int y, int z); // a top-layer cell emptied: the grid above's outlet cell
+    // Granular, at the end of layer y's turn: the cells left in it become EMPTY in the kept bits,
+    // and the own-layer wakes of the cells left in the turn before, still EMPTY, are done.
+    void endGranularTurn(const CellGrid& grid, int y);
+    void wakeAroundCellsLeftEarlier(const CellGrid& grid); // those own-layer wakes
     // classic rules; true when a grain moved
     bool visitCell(const SweepContext& context, StripLog& log, int x, int y, int z);
     struct GranularStrip;
-    bool visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x, int y, int z,
-                       std::uint32_t row, std::uint32_t rowStart);
+    // What the visit did, as GranularOutcome::Kind, with Resting for a cell that holds no grain;
+    // `stopped` tells whether a grain in motion came to rest.
+    GranularOutcome::Kind visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x,
+                                        int y, int z, std::uint32_t row, std::uint32_t rowStart, bool& stopped);
     void askAheadForFallStates(const GranularStrip& strip, std::uint64_t next, bool xDown, std::uint32_t wordStart,
                                std::size_t word) const;
     void record(const SweepContext& context, StripLog& log, const GrainMove& move);
@@ -165,6 +179,7 @@ private:
     void wakeWindow(int x, int y, int z, std::uint64_t woken);
     std::uint64_t deepEnoughForSlidesInto(const CellGrid& grid, std::uint64_t woken, int x, int y, int z, int layersAbove) const;
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
+    void wakeLayersAbove(const CellGrid& grid, int x, int y, int z); // wakeForGranular above layer y
     int awakeRowsInLayer(int y) const;
     bool anyRowAwake(int y, int z0, int z1) const;
     // The grid's stream of random draws (SweepContext::level): the upper grid is the one with an outlet.
@@ -195,6 +210,9 @@ private:
     // scene's edits through the calls above), so slides and wakes read bits instead of cells.
     EmptyCellBits empty_;
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
+    // Granular: the cells left in the last layer's turn whose own-layer wakes wait for the next
+    // turn's end, when most of them are taken again (the grain above falls in) and wake nobody.
+    std::vector<Int3> leftEarlier_;
     MoveFeed feed_;
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
 };

@@ -201,6 +201,7 @@ void Scene::step() {
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;
     counters_.visitedLastStep = lower.visited + upper.visited;
+    counters_.speedChangesLastStep = lower.speedChanges + upper.speedChanges;
     if (granular_)
         transitionGranular();
     else
@@ -246,7 +247,7 @@ void Scene::transitionGranular() {
     const std::uint64_t step = counters_.stepsDone;
     std::vector<std::uint32_t>& ready = transitionReady_;
     ready.clear();
-    std::int64_t visited = 0;
+    std::int64_t visited = 0, stopped = 0;
     upperSweep_->forEachInBottomLayer(settings_.sleeping, [&](std::uint32_t cell) {
         ++visited;
         const CellValue grain = upper_[cell];
@@ -256,7 +257,9 @@ void Scene::transitionGranular() {
             ready.push_back(cell);
             return;
         }
-        grains_.fall[kUpperGrid][std::size_t(grain)] = FallState{}; // woken again when that cell empties
+        FallState& fall = grains_.fall[kUpperGrid][std::size_t(grain)];
+        if (fall.speed | fall.fraction) ++stopped;
+        fall = FallState{}; // woken again when that cell empties
     });
     std::size_t passing = ready.size();
     if (neckFlow_) {
@@ -304,6 +307,8 @@ void Scene::transitionGranular() {
     counters_.grainsLower += moved;
     counters_.movesLastStep += moved;
     counters_.visitedLastStep += visited;
+    // The grains held back (and any stopped above a full cell) changed their fall without a move.
+    counters_.speedChangesLastStep += std::int64_t(ready.size() - passing) + stopped;
 }
 
 // A grain the transition passed into the lower grid's top row (its record says so already).
@@ -420,18 +425,22 @@ void Scene::restore(const SceneSnapshot& saved) {
     upperSweep_->clear();
     lowerSweep_->clear();
     markEverythingAwake();
-    if (granular_) markGrainsInMotion();
+    // A file keeps no count of the last step's speed changes: the grains in motion stand for it.
+    if (granular_) counters_.speedChangesLastStep = std::max(counters_.speedChangesLastStep, markGrainsInMotion());
 }
 
 // Granular: tells the sweeps which grains are in motion after their fall states were set from
-// outside a step.
-void Scene::markGrainsInMotion() {
+// outside a step, and counts them.
+std::int64_t Scene::markGrainsInMotion() {
+    std::int64_t count = 0;
     for (std::uint32_t id = 0; id < grains_.size(); ++id) {
         const FallState& fall = grains_.fallOf(id);
         if (!(fall.speed | fall.fraction)) continue;
         const Int3 c = grid(grains_.level[id]).coordinate(grains_.place[id].cell);
         sweepOf(grains_.level[id]).markInMotion(c.x, c.y, c.z);
+        ++count;
     }
+    return count;
 }
 
 std::int64_t Scene::addGrain(GridLevel level, std::uint32_t cell, std::uint32_t rgba) {

@@ -46,6 +46,10 @@ struct SceneCounters {
     std::int64_t grainsLower = 0;   ///< filled cells in the lower grid
     std::int64_t movesLastStep = 0; ///< grains moved by the last step, transitions included
     std::int64_t visitedLastStep = 0; ///< cells the last step looked at (shows what R5 saves)
+    /// Granular: grains whose fall the last step changed without moving them (a grain gathering
+    /// its next cell of progress, riding a moving grain, stopping, or held at the neck). Not
+    /// saved in files: a loaded scene counts its grains in motion here.
+    std::int64_t speedChangesLastStep = 0;
     std::uint64_t stepsDone = 0;    ///< steps since the last reset
 };
 
@@ -87,8 +91,12 @@ public:
     /// record's cell, level and cameFrom), in no particular order.
     std::span<const GrainMove> movedGrains() const;
     std::int64_t grainCount() const { return std::int64_t(grains_.size()); } ///< grains in both grids
-    /// True once a step has moved nothing: no later step will move anything until the scene is edited.
-    bool settled() const { return counters_.stepsDone > 0 && counters_.movesLastStep == 0; }
+    /// True once a step has moved nothing and changed no grain's fall: no later step will move
+    /// anything until the scene is edited. (A granular grain falling from rest gathers its first
+    /// cell for several steps without a move: those steps are not settled.)
+    bool settled() const {
+        return counters_.stepsDone > 0 && counters_.movesLastStep == 0 && counters_.speedChangesLastStep == 0;
+    }
     /// R7: a 64-bit hash of both grids' cell contents, stable across runs and platforms.
     std::uint64_t stateHash() const;
     /// What the sweeps keep of the grids (the granular rules' EMPTY cells) agrees with the grids:
@@ -162,7 +170,7 @@ private:
     void transitionGranular();
     void listTransition(std::uint32_t grain, std::uint32_t lowerCell);
     void moveListedIntoLowerGrid();
-    void markGrainsInMotion();
+    std::int64_t markGrainsInMotion(); // returns how many grains are in motion
     void flipLayouts();
     void makeSweeps();
 
