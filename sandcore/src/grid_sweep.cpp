@@ -621,6 +621,9 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
         };
         if (context.sleeping && !rowAwake_[row]) continue;
         rowAwake_[row] = 0;
+        if (const int nextZ = zDown ? z - 1 : z + 1;
+            context.sleeping && i + 1 < zEnd && rowAwake_[std::size_t(y) * std::size_t(size_.z) + std::size_t(nextZ)])
+            prefetchFirstAwake(context.grid, y, nextZ, xDown);
         RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
         for (int j = 0; j < rowWords_; ++j) {
             const int w = xDown ? rowWords_ - 1 - j : j;
@@ -647,15 +650,19 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
     return totals;
 }
 
-// The first awake cell of row z of layer y, and the cell below it, are usually not in the cache
-// yet (a visit reads the layer below, not the next row of its own): asking for them one row
-// ahead overlaps those misses with this row's visits. A hint only; classic moves never wake
-// cells of their own layer, so the row's awake bits are already final.
-void GridSweep::prefetchFirstAwake(const CellGrid& grid, int y, int z) const {
+// The first awake cell of row z of layer y (in visiting order: descending x when xDown), and the
+// cell below it, are usually not in the cache yet (a visit reads the layer below, not the next
+// row of its own): asking for them one row ahead overlaps those misses with this row's visits. A
+// hint only; no visit wakes a cell of its own layer (the header), so the row's awake bits are
+// already final.
+void GridSweep::prefetchFirstAwake(const CellGrid& grid, int y, int z, bool xDown) const {
     const RowWord* words = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z)) * std::size_t(rowWords_);
-    for (int w = 0; w < rowWords_; ++w) {
-        if (!words[w].awake) continue;
-        const CellValue* cell = grid.cells().data() + grid.index(w * 64 + __builtin_ctzll(words[w].awake), y, z);
+    for (int j = 0; j < rowWords_; ++j) {
+        const int w = xDown ? rowWords_ - 1 - j : j;
+        const std::uint64_t awake = words[w].awake;
+        if (!awake) continue;
+        const int x = w * 64 + (xDown ? 63 - __builtin_clzll(awake) : __builtin_ctzll(awake));
+        const CellValue* cell = grid.cells().data() + grid.index(x, y, z);
         __builtin_prefetch(cell);
         __builtin_prefetch(cell - grid.layerSize());
         return;

@@ -164,7 +164,7 @@ private:
     SweepResult sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd);
     void clearRow(std::uint32_t row);
     Int3 coordinateOf(std::uint32_t cell) const; // as CellGrid::coordinate, for this sweep's grid
-    void prefetchFirstAwake(const CellGrid& grid, int y, int z) const;
+    void prefetchFirstAwake(const CellGrid& grid, int y, int z, bool xDown = false) const;
     std::uint64_t wholeWord(int w) const; // bits of every cell of a row in word w
     void wakeSpan(std::size_t row, int x0, int x1);
     void wakeIfOccupied(int x, int y, int z); // wakeAt, but only when the cell's occupied bit is set
