@@ -617,7 +617,7 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
             bool stopped = false;
             const GranularOutcome::Kind kind = visitGranular(context, strip, log, x, y, z, row, rowStart, stopped);
             totals.moves += kind == GranularOutcome::Moved ? 1 : 0;
-            totals.speedChanges += kind == GranularOutcome::Waiting || stopped ? 1 : 0;
+            log.speedChanges += kind == GranularOutcome::Waiting || stopped ? 1 : 0;
         };
         if (context.sleeping && !rowAwake_[row]) continue;
         rowAwake_[row] = 0;
@@ -724,7 +724,6 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
     auto add = [&result](const SweepResult& t) {
         result.moves += t.moves;
         result.visited += t.visited;
-        result.speedChanges += t.speedChanges;
     };
 
     for (int y = 1; y < size.y; ++y) {
@@ -742,12 +741,18 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
                 const SweepResult t = sweepStrip<Granular>(context, y, strip);
                 stripTotals[std::size_t(strip)].moves += t.moves;
                 stripTotals[std::size_t(strip)].visited += t.visited;
-                stripTotals[std::size_t(strip)].speedChanges += t.speedChanges;
             });
         }
         if constexpr (Granular) endGranularTurn(context.grid, y);
     }
-    if constexpr (Granular) wakeAroundCellsLeftEarlier(context.grid);
+    if constexpr (Granular) {
+        wakeAroundCellsLeftEarlier(context.grid);
+        speedChangesLastSweep_ = 0;
+        for (StripLog& log : logs_) {
+            speedChangesLastSweep_ += log.speedChanges;
+            log.speedChanges = 0;
+        }
+    }
     for (const SweepResult& t : stripTotals) add(t);
     return result;
 }

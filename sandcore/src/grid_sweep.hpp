@@ -33,12 +33,13 @@ struct StripLog {
     /// Granular: the cells (x + sizeX * z) its grains left in the current layer's turn, kept
     /// until the turn ends (granular_rules.hpp: a layer's paths see it as its turn began).
     std::vector<std::uint32_t> left;
+    /// Granular: grains whose fall changed without a move in this sweep (SceneCounters).
+    std::int64_t speedChanges = 0;
 };
 
 struct SweepResult {
     std::int64_t moves = 0;   ///< grains moved
     std::int64_t visited = 0; ///< cells looked at
-    std::int64_t speedChanges = 0; ///< granular: grains whose fall changed without a move (SceneCounters)
 };
 
 /// What one grid's sweep in one step shares with every cell it visits (like Box2D's
@@ -110,6 +111,9 @@ public:
     /// Appends the moves the last sweep logged to `moved` and empties the logs. Each grain is
     /// listed at most once: every move goes down at least a layer, and each layer is visited once.
     void takeLoggedMoves(std::vector<GrainMove>& moved);
+    /// Granular: the grains whose fall the last sweep changed without moving them (a grain
+    /// gathering its next cell, riding a moving grain, or stopping).
+    std::int64_t speedChangesLastSweep() const { return speedChangesLastSweep_; }
     /// Rows (of all layers) that may hold awake cells: a cheap measure of the next sweep's work.
     std::int64_t awakeRowCount() const;
 
@@ -213,6 +217,7 @@ private:
     // Granular: the cells left in the last layer's turn whose own-layer wakes wait for the next
     // turn's end, when most of them are taken again (the grain above falls in) and wake nobody.
     std::vector<Int3> leftEarlier_;
+    std::int64_t speedChangesLastSweep_ = 0;
     MoveFeed feed_;
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
 };

@@ -201,7 +201,7 @@ void Scene::step() {
     counters_.stepsDone = stepNumber;
     counters_.movesLastStep = lower.moves + upper.moves;
     counters_.visitedLastStep = lower.visited + upper.visited;
-    counters_.speedChangesLastStep = lower.speedChanges + upper.speedChanges;
+    counters_.speedChangesLastStep = granular_ ? lowerSweep_->speedChangesLastSweep() + upperSweep_->speedChangesLastSweep() : 0;
     if (granular_)
         transitionGranular();
     else
