@@ -358,7 +358,8 @@ inline void GridSweep::wakeOutletAbove(int x, int y, int z) {
 // fill, mostly in the next turn, when the grain above falls in. So they wait until the end of the
 // next turn: a cell EMPTY then is woken around as wakeForGranular does (one filled later in the
 // step wakes grains that find nothing, which changes no state); one already filled again wakes
-// nobody, as nobody can gain from it (75% of them in the million-grain drain).
+// nobody, as nobody can gain from it (of those with sleeping grains around, 72% were taken again
+// by the step's end, over 3,000 steps of the million-grain drain).
 void GridSweep::endGranularTurn(const CellGrid& grid, int y) {
     wakeAroundCellsLeftEarlier(grid);
     const auto sizeX = std::uint32_t(size_.x);
