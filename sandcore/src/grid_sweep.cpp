@@ -571,28 +571,12 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
     return GranularOutcome::Moved;
 }
 
-// A grain in motion reads its fall state, by id: a cache miss after the miss on its cell. The
-// awake cells that follow in this word (`next`, in visiting order) are asked for ahead: the cell
-// after next, and for the next one, whose cell was asked for one visit earlier, its fall state
-// when it is in motion. Hints only: a visit may wake more cells or change these. Inlined at once:
-// a function that only asks ahead has no effect the compiler sees, and a call to it is dropped.
-[[gnu::always_inline]] inline void GridSweep::askAheadForFallStates(const GranularStrip& strip, std::uint64_t next, bool xDown,
-                                             std::uint32_t wordStart, std::size_t word) const {
-    if (!next) return;
-    const int first = xDown ? 63 - __builtin_clzll(next) : __builtin_ctzll(next);
-    next &= ~(std::uint64_t{1} << first);
-    if (next) __builtin_prefetch(strip.cells + wordStart + std::uint32_t(xDown ? 63 - __builtin_clzll(next) : __builtin_ctzll(next)));
-    if (!(strip.inMotion[word] >> first & 1)) return;
-    const CellValue grain = strip.cells[wordStart + std::uint32_t(first)];
-    if (grain >= 0) __builtin_prefetch(strip.falls.data() + grain);
-}
-
 // The granular strip loop. A grain visited later finds the cells of the layer below taken by one
 // visited earlier, so a fixed order would let grains run one way more easily than the other and
 // cones would lean (PH2). The order therefore turns with the step: x ascending or descending by
 // bit 0 of the step number, z by bit 1, so over four steps every mirror of the grid is swept
-// alike. No visit wakes a cell of its own layer for this step (the header), so each word's awake
-// bits are taken at once, as the classic loop takes them.
+// alike. No visit wakes a cell of its own layer for this step (the header), so the whole strip's
+// awake bits are taken at once, before its first visit.
 SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd) {
     SweepResult totals;
     if (context.sleeping && !anyRowAwake(y, zBegin, zEnd)) return totals;
@@ -609,61 +593,92 @@ SweepResult GridSweep::sweepGranularStrip(const SweepContext& context, StripLog&
                               size_.y,
                               size_.z};
     const bool xDown = (context.step & 1) != 0, zDown = (context.step & 2) != 0;
-    for (int i = zBegin; i < zEnd; ++i) {
-        const int z = zDown ? zBegin + zEnd - 1 - i : i;
+    auto visit = [&](int x, int z) {
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
-        const std::uint32_t rowStart = row * std::uint32_t(size_.x); // cell (0, y, z)
-        auto visit = [&](int x) {
-            ++totals.visited;
-            bool stopped = false;
-            const GranularOutcome::Kind kind = visitGranular(context, strip, log, x, y, z, row, rowStart, stopped);
-            totals.moves += kind == GranularOutcome::Moved ? 1 : 0;
-            log.speedChanges += kind == GranularOutcome::Waiting || stopped ? 1 : 0;
-        };
-        if (context.sleeping && !rowAwake_[row]) continue;
-        rowAwake_[row] = 0;
-        if (const int nextZ = zDown ? z - 1 : z + 1;
-            context.sleeping && i + 1 < zEnd && rowAwake_[std::size_t(y) * std::size_t(size_.z) + std::size_t(nextZ)])
-            prefetchFirstAwake(context.grid, y, nextZ, xDown);
-        RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
-        for (int j = 0; j < rowWords_; ++j) {
-            const int w = xDown ? rowWords_ - 1 - j : j;
-            if (!context.sleeping) { // every cell of the row, as if awake
+        ++totals.visited;
+        bool stopped = false;
+        const GranularOutcome::Kind kind = visitGranular(context, strip, log, x, y, z, row, row * std::uint32_t(size_.x), stopped);
+        totals.moves += kind == GranularOutcome::Moved ? 1 : 0;
+        log.speedChanges += kind == GranularOutcome::Waiting || stopped ? 1 : 0;
+    };
+    if (!context.sleeping) { // every cell of every row, as if awake
+        for (int i = zBegin; i < zEnd; ++i) {
+            const int z = zDown ? zBegin + zEnd - 1 - i : i;
+            const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
+            rowAwake_[row] = 0;
+            RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+            for (int j = 0; j < rowWords_; ++j) {
+                const int w = xDown ? rowWords_ - 1 - j : j;
                 words[w].awake = 0;
                 for (std::uint64_t bits = wholeWord(w); bits;) {
                     const int bit = xDown ? 63 - __builtin_clzll(bits) : __builtin_ctzll(bits);
                     bits &= ~(std::uint64_t{1} << bit);
-                    visit(w * 64 + bit);
+                    visit(w * 64 + bit, z);
                 }
-                continue;
             }
+            if (context.feed) context.feed->publishSome();
+        }
+        return totals;
+    }
+    // The strip's awake cells, in visiting order. A visit waits on its cell, the cell below and,
+    // for a grain in motion, its fall state, which only the cell's grain id locates: so each visit
+    // asks for the cells kCellsAhead visits on, and for the fall state kStatesAhead visits on, by
+    // when that grain's cell has arrived. The loads of several visits are then in flight together
+    // instead of one after another (12% off the granular step of the million-grain drain). The
+    // classic loop keeps its row-ahead hint: the same queue made its step 14-20% slower.
+    std::vector<StripLog::Cell>& queue = log.awake;
+    queue.clear();
+    for (int i = zBegin; i < zEnd; ++i) {
+        const int z = zDown ? zBegin + zEnd - 1 - i : i;
+        const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
+        if (!rowAwake_[row]) continue;
+        rowAwake_[row] = 0;
+        RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+        for (int j = 0; j < rowWords_; ++j) {
+            const int w = xDown ? rowWords_ - 1 - j : j;
             std::uint64_t bits = words[w].awake;
             words[w].awake = 0;
             while (bits) {
                 const int bit = xDown ? 63 - __builtin_clzll(bits) : __builtin_ctzll(bits);
                 bits &= ~(std::uint64_t{1} << bit);
-                askAheadForFallStates(strip, bits, xDown, rowStart + std::uint32_t(w * 64), row * std::size_t(rowWords_) + std::size_t(w));
-                visit(w * 64 + bit);
+                queue.push_back({std::uint32_t(w * 64 + bit), std::uint32_t(z)});
             }
         }
-        if (context.feed) context.feed->publishSome();
     }
+    const std::uint32_t layerRowStart = std::uint32_t(y) * std::uint32_t(size_.z);
+    const auto rowOf = [&](const StripLog::Cell& c) { return layerRowStart + c.z; };
+    const auto cellOf = [&](const StripLog::Cell& c) { return rowOf(c) * std::uint32_t(size_.x) + c.x; };
+    const std::size_t count = queue.size();
+    for (std::size_t n = 0; n < count; ++n) {
+        if (n + kCellsAhead < count) {
+            const CellValue* cell = strip.cells + cellOf(queue[n + kCellsAhead]);
+            __builtin_prefetch(cell);
+            __builtin_prefetch(cell - strip.grid.layerSize());
+        }
+        if (n + kStatesAhead < count) {
+            const StripLog::Cell ahead = queue[n + kStatesAhead];
+            if (strip.inMotion[std::size_t(rowOf(ahead)) * std::size_t(rowWords_) + (ahead.x >> 6)] >> (ahead.x & 63) & 1) {
+                const CellValue grain = strip.cells[cellOf(ahead)];
+                if (grain >= 0) __builtin_prefetch(strip.falls.data() + grain);
+            }
+        }
+        const StripLog::Cell at = queue[n];
+        if (context.feed && n > 0 && at.z != queue[n - 1].z) context.feed->publishSome(); // a row done
+        visit(int(at.x), int(at.z));
+    }
+    if (context.feed) context.feed->publishSome();
     return totals;
 }
 
-// The first awake cell of row z of layer y (in visiting order: descending x when xDown), and the
-// cell below it, are usually not in the cache yet (a visit reads the layer below, not the next
-// row of its own): asking for them one row ahead overlaps those misses with this row's visits. A
-// hint only; no visit wakes a cell of its own layer (the header), so the row's awake bits are
-// already final.
-void GridSweep::prefetchFirstAwake(const CellGrid& grid, int y, int z, bool xDown) const {
+// The first awake cell of row z of layer y, and the cell below it, are usually not in the cache
+// yet (a visit reads the layer below, not the next row of its own): asking for them one row
+// ahead overlaps those misses with this row's visits. A hint only; classic moves never wake
+// cells of their own layer, so the row's awake bits are already final.
+void GridSweep::prefetchFirstAwake(const CellGrid& grid, int y, int z) const {
     const RowWord* words = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z)) * std::size_t(rowWords_);
-    for (int j = 0; j < rowWords_; ++j) {
-        const int w = xDown ? rowWords_ - 1 - j : j;
-        const std::uint64_t awake = words[w].awake;
-        if (!awake) continue;
-        const int x = w * 64 + (xDown ? 63 - __builtin_clzll(awake) : __builtin_ctzll(awake));
-        const CellValue* cell = grid.cells().data() + grid.index(x, y, z);
+    for (int w = 0; w < rowWords_; ++w) {
+        if (!words[w].awake) continue;
+        const CellValue* cell = grid.cells().data() + grid.index(w * 64 + __builtin_ctzll(words[w].awake), y, z);
         __builtin_prefetch(cell);
         __builtin_prefetch(cell - grid.layerSize());
         return;
