@@ -173,7 +173,7 @@ private:
     GranularOutcome::Kind visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x,
                                         int y, int z, std::uint32_t row, std::uint32_t rowStart, bool& stopped);
     void record(const SweepContext& context, StripLog& log, const GrainMove& move);
-    SweepResult sweepGranularStrip(const SweepContext& context, StripLog& log, int y, int zBegin, int zEnd);
+    SweepResult sweepGranularStrips(const SweepContext& context, int y, int firstStrip, int stripEnd, int stripStride);
     void clearRow(std::uint32_t row);
     Int3 coordinateOf(std::uint32_t cell) const; // as CellGrid::coordinate, for this sweep's grid
     void prefetchFirstAwake(const CellGrid& grid, int y, int z) const;
