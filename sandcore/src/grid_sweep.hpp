@@ -39,7 +39,8 @@ struct StripLog {
     std::vector<std::uint32_t> left;
     /// Granular: grains whose fall changed without a move in this sweep (SceneCounters).
     std::int64_t speedChanges = 0;
-    /// Granular: the strip's awake cells in the current layer's turn, in visiting order.
+    /// Granular: the awake cells a sweep of this strip visits in the current layer's turn (of all
+    /// the strips of its phase, where one thread sweeps them), in visiting order.
     struct Cell {
         std::uint32_t x, z;
     };
