@@ -4,9 +4,11 @@
 //
 // Canonical visiting order, the same for every thread count: layers from the bottom up; within
 // a layer, strips of kStripRows rows in two phases (even strips, then odd strips); within a strip,
-// rows by ascending z and cells by ascending x. A grain in row z only reads and writes rows
-// z-1..z+1 of the layers next to it (granular: z-3..z+3, still less than a strip), so strips of
-// one phase never touch each other's cells or bits and may run on different threads in any order.
+// rows by ascending z and cells by ascending x (granular: z and x turned by bits 1 and 0 of the
+// step number, so cones do not lean; sweepGranularStrips). A grain in row z only reads and writes
+// rows z-1..z+1 of the layers next to it (granular: z-3..z+3, still less than a strip), so strips
+// of one phase never touch each other's cells or bits and may run on different threads in any
+// order.
 // Under both rule sets a visit wakes no cell of its own layer for the same step: the classic
 // rules read only the layer below, and the granular paths read their layer as it was when its
 // turn began (granular_rules.hpp), so a layer's awake bits are final when its turn begins.
