@@ -92,6 +92,19 @@ public:
                           std::uint64_t step, std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z,
                           std::uint32_t from, MotionHints hints = {}) const;
 
+    /// A grain resting on a grain that moves at `speed` (> 0) rides it: it takes that speed and
+    /// gathers up to a cell of progress (rule 1). Riding when nothing of it changed (it may sleep:
+    /// the grain below wakes it when it changes speed or leaves), else Waiting. mayBeMoving: its
+    /// own state may be non-zero (else it is read as at rest); maySleep: false on the outlet row
+    /// of the upper grid, whose speeds the transition sets without a visit.
+    GranularOutcome::Kind ride(FallState& own, std::uint32_t speed, bool mayBeMoving, bool maySleep) const {
+        const FallState before = mayBeMoving ? own : FallState{};
+        const auto fraction = std::uint16_t(std::min<std::uint32_t>(before.fraction + speed + gravity_ / 2, kOneCell - 1));
+        if (speed == before.speed && fraction == before.fraction && maySleep) return GranularOutcome::Riding;
+        own = {speed, fraction};
+        return GranularOutcome::Waiting;
+    }
+
     /// Deepest column a slide ever looks into, cells below the grain's layer.
     int maxDrop() const { return maxDrop_; }
     /// The grains that an EMPTY cell c may let move, `layersAbove` (0..maxDrop()) layers above c:
@@ -217,20 +230,9 @@ inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits&
     if (below >= 0 && hints.below && falls[std::size_t(below)].speed > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
         // so the grain follows at once when the one below moves on (a column flows as one).
-        const std::uint32_t speed = falls[std::size_t(below)].speed;
-        const FallState own = hints.grain ? falls[id] : FallState{};
-        const auto fraction = std::uint16_t(std::min<std::uint32_t>(own.fraction + speed + gravity_ / 2, kOneCell - 1));
-        // Nothing changed (it waits, a cell of progress gathered, on a grain held at the same
-        // speed): it may sleep, since the one below wakes it when it changes speed or moves. Not
-        // on the outlet row of the upper grid, whose speeds the transition sets without a visit.
         GranularOutcome outcome;
         outcome.inMotion = true; // speed > 0
-        if (speed == own.speed && fraction == own.fraction && (y > 1 || !bottomIsOutlet)) {
-            outcome.kind = GranularOutcome::Riding;
-            return outcome;
-        }
-        falls[id] = {speed, fraction};
-        outcome.kind = GranularOutcome::Waiting;
+        outcome.kind = ride(falls[id], falls[std::size_t(below)].speed, hints.grain, y > 1 || !bottomIsOutlet);
         return outcome;
     }
     if (hints.grain && (falls[id].speed | falls[id].fraction)) { // it was in motion and stops here

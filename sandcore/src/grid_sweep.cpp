@@ -55,6 +55,7 @@ GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
 void GridSweep::setGranular(const GranularRules* granular) {
     granular_ = granular;
     inMotion_.assign(granular ? words_.size() : 0, 0);
+    carriedEarly_.assign(granular ? words_.size() : 0, 0);
     if (granular) empty_.resize(size_); // every cell taken until readEmptyCells
 }
 
@@ -414,6 +415,7 @@ void GridSweep::wakeEveryGrain(const CellGrid& grid) {
 void GridSweep::clear() {
     std::fill(words_.begin(), words_.end(), RowWord{});
     std::fill(inMotion_.begin(), inMotion_.end(), 0);
+    std::fill(carriedEarly_.begin(), carriedEarly_.end(), 0);
     for (StripLog& log : logs_) log.moved.clear();
     std::fill(rowAwake_.begin(), rowAwake_.end(), 0);
 }
@@ -547,10 +549,17 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
             strip.rowAwake[row] = 1;
         }
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
-        // speed changed without a cell emptying, so the grain above must look again. The occupied
-        // bit says whether the cell above may hold one: it is never clear under a grain, and
-        // reading it spares a cache miss on the cell (an EMPTY cell woken is visited and left).
-        if (y + 1 < strip.sizeY && (words[word + strip.layerWords].occupied & bit)) {
+        // speed changed without a cell emptying, so the grain above must look again. While this
+        // one moves, the grains resting on it ride (carryRiders); when it stops, the grain above
+        // is woken. The occupied bit says whether the cell above may hold one: it is never clear
+        // under a grain, and reading it spares a cache miss on the cell (an EMPTY cell woken is
+        // visited and left).
+        const std::uint32_t speed = outcome.kind == GranularOutcome::Waiting ? strip.falls[std::size_t(cells[from])].speed : 0;
+        if (speed > 0) {
+            const int carried = carryRiders(strip, x, y, z, from, speed);
+            log.carried += carried;
+            log.speedChanges += carried; // each one's speed or fraction changed
+        } else if (y + 1 < strip.sizeY && (words[word + strip.layerWords].occupied & bit)) {
             words[word + strip.layerWords].awake |= bit;
             strip.rowAwake[row + std::uint32_t(strip.sizeZ)] = 1;
         }
@@ -569,6 +578,38 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
     wakeLayersAbove(strip.grid, x, y, z);
     wakeOutletAbove(x, y, z);
     return GranularOutcome::Moved;
+}
+
+// The grains resting one on another above the grain in cell `from` of (x, y, z), which stays
+// there moving at `speed` (> 0) after its visit in this step, visited now rather than in their
+// layers' turns: each one's visit would only ride the grain below it (GranularRules::ride), and
+// nothing it reads can change before its turn (the cell below it stays taken, the speed of the
+// grain in it is final for the step). Visiting a column at once spares each grain the queue and
+// the reads of the cell and the state below it. A grain that rode is marked in carriedEarly_:
+// its layer's turn skips it and keeps it awake for the next step, as its own visit would have.
+// The column ends at the first cell without a grain, or at a grain whose ride changed nothing
+// (it sleeps, as after its own visit). Returns the grains visited.
+int GridSweep::carryRiders(const GranularStrip& strip, int x, int y, int z, std::uint32_t from, std::uint32_t speed) {
+    const std::uint32_t layer = strip.grid.layerSize();
+    const std::uint64_t bit = std::uint64_t{1} << (x & 63);
+    int carried = 0;
+    std::uint32_t cell = from;
+    for (int above = y + 1; above < strip.sizeY; ++above) {
+        cell += layer;
+        const CellValue rider = strip.cells[cell];
+        if (rider < 0) break;
+        const std::uint32_t row = std::uint32_t(above) * std::uint32_t(strip.sizeZ) + std::uint32_t(z);
+        const std::size_t word = std::size_t(row) * std::size_t(rowWords_) + std::size_t(x >> 6);
+        const bool mayBeMoving = (strip.inMotion[word] & bit) != 0;
+        if (granular_->ride(strip.falls[std::size_t(rider)], speed, mayBeMoving, above > 1 || !bottomIsOutlet_) ==
+            GranularOutcome::Riding)
+            break;
+        strip.inMotion[word] |= bit;
+        carriedEarly_[word] |= bit;
+        strip.rowAwake[row] = 1;
+        ++carried;
+    }
+    return carried;
 }
 
 // The granular strip loop: strips firstStrip, firstStrip + stripStride, ... before stripEnd, one
@@ -625,10 +666,13 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
             const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
             rowAwake_[row] = 0;
             RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+            std::uint64_t* carried = carriedEarly_.data() + std::size_t(row) * std::size_t(rowWords_);
             for (int j = 0; j < rowWords_; ++j) {
                 const int w = xDown ? rowWords_ - 1 - j : j;
                 words[w].awake = 0;
-                forEachBit(w, wholeWord(w), [&](int x) { visit(x, z); });
+                const std::uint64_t visitedEarly = carried[w];
+                carried[w] = 0;
+                forEachBit(w, wholeWord(w) & ~visitedEarly, [&](int x) { visit(x, z); });
             }
             if (context.feed) context.feed->publishSome();
         });
@@ -646,14 +690,20 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
     forEachRow([&](int z) {
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
         if (!rowAwake_[row]) return;
-        rowAwake_[row] = 0;
         RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
+        std::uint64_t* carried = carriedEarly_.data() + std::size_t(row) * std::size_t(rowWords_);
+        std::uint64_t stillAwake = 0;
         for (int j = 0; j < rowWords_; ++j) {
             const int w = xDown ? rowWords_ - 1 - j : j;
-            const std::uint64_t bits = words[w].awake;
-            words[w].awake = 0;
+            // The grains carried early were visited in this step: awake for the next one only.
+            const std::uint64_t visitedEarly = carried[w];
+            carried[w] = 0;
+            const std::uint64_t bits = words[w].awake & ~visitedEarly;
+            words[w].awake = visitedEarly;
+            stillAwake |= visitedEarly;
             forEachBit(w, bits, [&](int x) { queue.push_back({std::uint32_t(x), std::uint32_t(z)}); });
         }
+        rowAwake_[row] = stillAwake != 0;
     });
     const std::uint32_t layerRowStart = std::uint32_t(y) * std::uint32_t(size_.z);
     const auto rowOf = [&](const StripLog::Cell& c) { return layerRowStart + c.z; };
@@ -677,6 +727,10 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
         visit(int(at.x), int(at.z));
     }
     if (context.feed) context.feed->publishSome();
+    for (int index = firstStrip; index < stripEnd; index += stripStride) {
+        totals.visited += logs_[std::size_t(index)].carried;
+        logs_[std::size_t(index)].carried = 0;
+    }
     return totals;
 }
 

@@ -12,6 +12,9 @@
 // Under both rule sets a visit wakes no cell of its own layer for the same step: the classic
 // rules read only the layer below, and the granular paths read their layer as it was when its
 // turn began (granular_rules.hpp), so a layer's awake bits are final when its turn begins.
+// A granular visit of a grain that stays where it is, moving, also visits the grains that ride
+// on it in the column above (carryRiders), in the same strip's rows; their layers' turns then
+// skip them.
 
 #include "empty_cells.hpp"
 #include "granular_rules.hpp"
@@ -47,6 +50,8 @@ struct StripLog {
         std::uint32_t x, z;
     };
     std::vector<Cell> awake;
+    /// Granular: grains visited in this sweep while carried by the grain below (carryRiders).
+    std::int64_t carried = 0;
 };
 
 struct SweepResult {
@@ -176,6 +181,7 @@ private:
     GranularOutcome::Kind visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x,
                                         int y, int z, std::uint32_t row, std::uint32_t rowStart, bool& stopped);
     void record(const SweepContext& context, StripLog& log, const GrainMove& move);
+    int carryRiders(const GranularStrip& strip, int x, int y, int z, std::uint32_t from, std::uint32_t speed);
     SweepResult sweepGranularStrips(const SweepContext& context, int y, int firstStrip, int stripEnd, int stripStride);
     void clearRow(std::uint32_t row);
     Int3 coordinateOf(std::uint32_t cell) const; // as CellGrid::coordinate, for this sweep's grid
@@ -221,6 +227,9 @@ private:
     // Granular only, indexed as words_: the cells whose grain may be in motion (markInMotion). A
     // visit reads a grain's fall state by id, a cache miss, and most visited grains are at rest.
     std::vector<std::uint64_t> inMotion_;
+    // Granular only, indexed as words_: grains visited in this step before their layer's turn
+    // (carryRiders); the turn skips them and leaves them awake for the next step.
+    std::vector<std::uint64_t> carriedEarly_;
     // Granular only: which cells are EMPTY, kept with every change of a cell (moves here, the
     // scene's edits through the calls above), so slides and wakes read bits instead of cells.
     EmptyCellBits empty_;
