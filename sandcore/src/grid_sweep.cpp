@@ -416,7 +416,10 @@ void GridSweep::clear() {
     std::fill(words_.begin(), words_.end(), RowWord{});
     std::fill(inMotion_.begin(), inMotion_.end(), 0);
     std::fill(carriedEarly_.begin(), carriedEarly_.end(), 0);
-    for (StripLog& log : logs_) log.moved.clear();
+    for (StripLog& log : logs_) {
+        log.moved.clear();
+        log.carried = 0;
+    }
     std::fill(rowAwake_.begin(), rowAwake_.end(), 0);
 }
 
@@ -550,8 +553,8 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
         }
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
         // speed changed without a cell emptying, so the grain above must look again. While this
-        // one moves, the grains resting on it ride (carryRiders); when it stops, the grain above
-        // is woken. The occupied bit says whether the cell above may hold one: it is never clear
+        // one moves, the grains resting on it ride (carryRiders); when it stops (or gathers at a
+        // speed of 0, without gravity), the grain above is woken. The occupied bit says whether the cell above may hold one: it is never clear
         // under a grain, and reading it spares a cache miss on the cell (an EMPTY cell woken is
         // visited and left; 7 in 10 grains in motion, most in the stream, carry none: asking the
         // bit before walking the column took 2.5% off the granular step).
@@ -640,6 +643,13 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
                               size_.y,
                               size_.z};
     const bool xDown = (context.step & 1) != 0, zDown = (context.step & 2) != 0;
+    // The grains these strips' visits carried up their columns count as visited (carryRiders).
+    auto addCarried = [&] {
+        for (int index = firstStrip; index < stripEnd; index += stripStride) {
+            totals.visited += logs_[std::size_t(index)].carried;
+            logs_[std::size_t(index)].carried = 0;
+        }
+    };
     // Calls f(z) for the rows of the strips in visiting order.
     auto forEachRow = [&](auto&& f) {
         for (int index = firstStrip; index < stripEnd; index += stripStride) {
@@ -673,13 +683,14 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
             std::uint64_t* carried = carriedEarly_.data() + std::size_t(row) * std::size_t(rowWords_);
             for (int j = 0; j < rowWords_; ++j) {
                 const int w = xDown ? rowWords_ - 1 - j : j;
-                words[w].awake = 0;
-                const std::uint64_t visitedEarly = carried[w];
+                words[w].awake = 0; // a full sweep keeps no awake bits: turning sleeping on wakes every grain
+                const std::uint64_t visitedEarly = carried[w]; // visited in this step already
                 carried[w] = 0;
                 forEachBit(w, wholeWord(w) & ~visitedEarly, [&](int x) { visit(x, z); });
             }
             if (context.feed) context.feed->publishSome();
         });
+        addCarried();
         return totals;
     }
     // The awake cells, in visiting order. A visit waits on its cell, the cell below and, for a
@@ -731,10 +742,7 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
         visit(int(at.x), int(at.z));
     }
     if (context.feed) context.feed->publishSome();
-    for (int index = firstStrip; index < stripEnd; index += stripStride) {
-        totals.visited += logs_[std::size_t(index)].carried;
-        logs_[std::size_t(index)].carried = 0;
-    }
+    addCarried();
     return totals;
 }
 

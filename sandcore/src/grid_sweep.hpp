@@ -50,7 +50,8 @@ struct StripLog {
         std::uint32_t x, z;
     };
     std::vector<Cell> awake;
-    /// Granular: grains visited in this sweep while carried by the grain below (carryRiders).
+    /// Granular: grains visited while carried by the grain below (carryRiders), since the
+    /// strip loop that swept this strip last counted them.
     std::int64_t carried = 0;
 };
 

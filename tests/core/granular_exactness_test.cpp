@@ -46,6 +46,11 @@ void requireSameEveryStep(Scene& a, Scene& b, int steps, bool pour = false) {
         b.step();
         REQUIRE_MESSAGE(a.stateHash() == b.stateHash(), "states differ after step " << i + 1);
         REQUIRE(a.counters().movesLastStep == b.counters().movesLastStep);
+        REQUIRE(a.counters().speedChangesLastStep == b.counters().speedChangesLastStep);
+        // The hash covers the cells: a fall state that differs shows only once it moves a grain.
+        REQUIRE(a.grainCount() == b.grainCount());
+        for (std::uint32_t id = 0; id < std::uint32_t(a.grainCount()); ++id)
+            REQUIRE_MESSAGE(a.grains().fallOf(id) == b.grains().fallOf(id), "grain " << id << " after step " << i + 1);
         // Both read their windows from the EMPTY cells their sweeps keep: a missed update would
         // agree with itself, so the bits are compared with the grids too.
         REQUIRE(a.sweepsMatchCells());

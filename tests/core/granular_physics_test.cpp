@@ -81,30 +81,40 @@ TEST_CASE("gravity: grains resting on a falling grain ride it, each taking its s
     // g = 0.05: the lowest grain of a column over an empty shaft gathers its first cell for 6
     // steps; the grains on it take its speed and gather a cell of progress (speed + g/2 a step,
     // at most a cell), then the column falls as one. A grain that rode twice in a step, or slept
-    // while the one below still sped up, would show here.
+    // while the one below still sped up, would show here; so would a visit left uncounted.
     const float g = 0.05f;
     const auto gravity = std::uint32_t(std::lround(double(g) * 65536.0));
-    Scene scene = granularBox({3, 40, 3}, g);
-    constexpr int kBottom = 20, kGrains = 8;
-    std::vector<std::uint32_t> column, fraction(kGrains, 0);
-    for (int i = 0; i < kGrains; ++i) column.push_back(std::uint32_t(fixtures::putLower(scene, 1, kBottom + i, 1)));
-    int step = 0;
-    while (lowerY(scene, column[0]) == kBottom) {
-        scene.step();
-        REQUIRE(++step < 100);
-        if (lowerY(scene, column[0]) != kBottom) break;
-        const FallState lowest = scene.grains().fallOf(column[0]);
-        CHECK(lowest.speed == std::uint32_t(step) * gravity);
-        for (int i = 1; i < kGrains; ++i) {
-            CAPTURE(i);
-            fraction[std::size_t(i)] = std::min<std::uint32_t>(fraction[std::size_t(i)] + lowest.speed + gravity / 2, 65535);
-            CHECK(lowerY(scene, column[std::size_t(i)]) == kBottom + i);
-            CHECK(scene.grains().fallOf(column[std::size_t(i)]) == FallState{lowest.speed, std::uint16_t(fraction[std::size_t(i)])});
+    for (bool sleeping : {true, false}) {
+        CAPTURE(sleeping);
+        Scene scene = granularBox({3, 40, 3}, g);
+        scene.setSleeping(sleeping);
+        constexpr int kBottom = 20, kGrains = 8;
+        std::vector<std::uint32_t> column, fraction(kGrains, 0);
+        for (int i = 0; i < kGrains; ++i) column.push_back(std::uint32_t(fixtures::putLower(scene, 1, kBottom + i, 1)));
+        // A full sweep visits every cell of the grids' layers above the lowest, and the transition
+        // every cell of the upper grid's lowest layer.
+        const Int3 lower = scene.grid(GridLevel::Lower).size(), upper = scene.grid(GridLevel::Upper).size();
+        const std::int64_t everyCell = std::int64_t(lower.x) * lower.z * (lower.y - 1) + std::int64_t(upper.x) * upper.z * upper.y;
+        int step = 0;
+        while (lowerY(scene, column[0]) == kBottom) {
+            scene.step();
+            REQUIRE(++step < 100);
+            if (!sleeping) CHECK(scene.counters().visitedLastStep == everyCell);
+            if (lowerY(scene, column[0]) != kBottom) break;
+            const FallState lowest = scene.grains().fallOf(column[0]);
+            CHECK(lowest.speed == std::uint32_t(step) * gravity);
+            CHECK(scene.counters().speedChangesLastStep == kGrains); // the lowest and every rider
+            for (int i = 1; i < kGrains; ++i) {
+                CAPTURE(i);
+                fraction[std::size_t(i)] = std::min<std::uint32_t>(fraction[std::size_t(i)] + lowest.speed + gravity / 2, 65535);
+                CHECK(lowerY(scene, column[std::size_t(i)]) == kBottom + i);
+                CHECK(scene.grains().fallOf(column[std::size_t(i)]) == FallState{lowest.speed, std::uint16_t(fraction[std::size_t(i)])});
+            }
         }
+        CHECK(step == 7); // the lowest grain's first cell: g n^2 / 2 >= 1 at n = 7
+        // Each grain had its cell of progress: the whole column followed in the same step.
+        for (int i = 0; i < kGrains; ++i) CHECK(lowerY(scene, column[std::size_t(i)]) == kBottom - 1 + i);
     }
-    CHECK(step == 7); // the lowest grain's first cell: g n^2 / 2 >= 1 at n = 7
-    // Each grain had its cell of progress: the whole column followed in the same step.
-    for (int i = 0; i < kGrains; ++i) CHECK(lowerY(scene, column[std::size_t(i)]) == kBottom - 1 + i);
 }
 
 TEST_CASE("gravity: a one-cell obstacle stops a grain at any speed") {
