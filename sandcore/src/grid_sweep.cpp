@@ -554,10 +554,11 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
         // speed changed without a cell emptying, so the grain above must look again. While this
         // one moves, the grains resting on it ride (carryRiders); when it stops (or gathers at a
-        // speed of 0, without gravity), the grain above is woken. The occupied bit says whether the cell above may hold one: it is never clear
-        // under a grain, and reading it spares a cache miss on the cell (an EMPTY cell woken is
-        // visited and left; 7 in 10 grains in motion, most in the stream, carry none: asking the
-        // bit before walking the column took 2.5% off the granular step).
+        // speed of 0, without gravity), the grain above is woken. The occupied bit says whether
+        // the cell above may hold one: it is never clear under a grain, and reading it spares a
+        // cache miss on the cell (an EMPTY cell woken is visited and left; 7 in 10 grains in
+        // motion, most in the stream, carry none: asking the bit before walking the column took
+        // 2.5% off the granular step).
         if (y + 1 < strip.sizeY && (words[word + strip.layerWords].occupied & bit)) {
             const std::uint32_t speed =
                 outcome.kind == GranularOutcome::Waiting ? strip.falls[std::size_t(cells[from])].speed : 0;
