@@ -5,6 +5,7 @@
 // Private to sandcore.
 
 #include "sandcore/cell_grid.hpp"
+#include "sandcore/large_pages.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -113,7 +114,7 @@ private:
     Int3 size_{};
     int stride_ = 1;       // words per row, margins and the spare one included
     int rowsPerLayer_ = 0; // size.z and the margins
-    std::vector<std::uint64_t> words_;
+    std::vector<std::uint64_t, LargePageAllocator<std::uint64_t>> words_; // in huge pages, as the grids (large_pages.hpp)
 };
 
 } // namespace sandcore

@@ -15,24 +15,7 @@ namespace {
 // Fastest fall per step, cells: far below what a MoveCode holds, far above any grid's height.
 constexpr std::uint32_t kMaxFallSpeed = 4096u * kOneCell;
 
-// Stream of the fixed per-cell dither, apart from the per-step streams (the grid levels 0, 1).
-constexpr std::uint64_t kDitherStream = 0x3d;
-
-// The dithers of a cell: one hash of (seed, grid, cell), then 8 offsets' bytes to a draw.
-std::uint64_t ditherCellHash(std::uint64_t seed, std::uint64_t stream, std::uint32_t from) {
-    return mix64(mix64(seed ^ kDitherStream) ^ (std::uint64_t(from) + (stream << 40)));
-}
-std::uint64_t ditherGroup(std::uint64_t cellHash, int group) { return mix64(cellHash + std::uint64_t(group) * 0x9e3779b97f4a7c15ull); }
-
 } // namespace
-
-bool GranularRules::needsDepth(std::uint64_t seed, std::uint64_t stream, std::uint32_t from, int k, int depth) const {
-    const std::uint32_t threshold = offsets_[std::size_t(k)].thresholdQ8;
-    const int whole = int(threshold >> 8);
-    if (whole != depth - 1) return whole >= depth;
-    const auto dither = (ditherGroup(ditherCellHash(seed, stream, from), k / 8) >> (k % 8 * 8)) & 0xffu;
-    return dither > restComplement_[std::size_t(k)];
-}
 
 // Measured: the mean angle of a cone of 40,000 grains poured at one column (granular_probe pour,
 // seed 1) for each slope T. Grains find the lowest of the thresholds around them, so the cone
@@ -261,7 +244,7 @@ GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, 
     return outcome;
 }
 
-GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty, std::uint64_t seed, std::uint64_t step,
+GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty, std::uint64_t ditherKey, std::uint64_t stepKey,
                                      std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain,
                                      bool onVessel) const {
     const std::int64_t row = grid.size().x, layer = grid.layerSize();
@@ -284,7 +267,7 @@ GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty,
     // dither per cell and offset (8 bits each, 8 offsets to a draw). The slides that need d cells
     // are a mask; layer by layer down, those whose column ends above it drop out.
     if (!onVessel && (open & (wholeAtLeast_[2] | wholeExactly_[1]))) {
-        const std::uint64_t cellHash = ditherCellHash(seed, stream, from);
+        const std::uint64_t cellHash = ditherCellHash(ditherKey, stream, from);
         std::uint64_t dithers[kOffsets / 8];
         for (int group = 0; group < kOffsets / 8; ++group) dithers[group] = ditherGroup(cellHash, group);
         const std::uint64_t carry = carriesOf(dithers, restComplement_);
@@ -304,7 +287,7 @@ GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty,
     if (!open) return {};
     // The n-th possible slide in ascending offset order, n drawn by a counter hash (R3).
     const auto count = std::uint32_t(setBitCount(open));
-    for (std::uint32_t n = pickBelow(counterRandom(seed, step, stream, from), count); n > 0; --n) open &= open - 1;
+    for (std::uint32_t n = pickBelow(counterRandomFromKey(stepKey, stream, from), count); n > 0; --n) open &= open - 1;
     const Offset& o = offsets_[std::size_t(__builtin_ctzll(open))];
     const std::uint32_t to = std::uint32_t(std::int64_t(from) - layer + o.dz * row + o.dx);
     return moveGrain(grid, grain, from, to, {-o.dx, 1, -o.dz}, {x + o.dx, y - 1, z + o.dz});

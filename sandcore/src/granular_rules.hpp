@@ -34,6 +34,7 @@
 
 #include "empty_cells.hpp"
 #include "sandcore/cell_grid.hpp"
+#include "sandcore/counter_random.hpp"
 #include "sandcore/grain_store.hpp"
 #include "sandcore/physics_settings.hpp"
 
@@ -80,7 +81,12 @@ public:
 
     explicit GranularRules(const PhysicsSettings& physics);
 
-    /// Applies the rules to the grain at (x, y, z), y >= 1, of `grid`, for step `step`; `stream`
+    /// The key of the thresholds' fixed dither for StepSettings::seed: the part of every dither
+    /// hash that depends on the seed alone, computed once per sweep rather than per grain.
+    static constexpr std::uint64_t ditherKey(std::uint64_t seed) { return mix64(seed ^ kDitherStream); }
+
+    /// Applies the rules to the grain at (x, y, z), y >= 1, of `grid`, for the step whose
+    /// counterRandomStepKey is `stepKey`; `ditherKey`: ditherKey(seed); `stream`
     /// tells the grids apart in the random draws. bottomIsOutlet: the grid's layer 0 is open
     /// below (the upper grid), so a grain falling onto it keeps its speed. `falls`: the fall
     /// states of this grid's grains (GrainStore::fall of its level). A move changes the grid's
@@ -88,8 +94,8 @@ public:
     /// are known to be zero (the result is the same; only fewer states are read).
     /// `from`: the cell's index, grid.index(x, y, z); `empty`: the grid's EMPTY cells as bits, up
     /// to date (the slides read their windows there; the caller updates them after a move).
-    GranularOutcome visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls, std::uint64_t seed,
-                          std::uint64_t step, std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z,
+    GranularOutcome visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls, std::uint64_t ditherKey,
+                          std::uint64_t stepKey, std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z,
                           std::uint32_t from, MotionHints hints = {}) const;
 
     /// A grain resting on a grain that moves at `speed` (> 0) rides it: it takes that speed and
@@ -155,7 +161,15 @@ public:
     /// True when the grain in cell `from` of grid `stream` (off the vessel) needs the column of
     /// slide k at least `depth` >= 2 cells deep: the dither of its threshold is fixed per cell
     /// and offset, so a wake can tell that a cell emptied deeper down is none of its business.
-    bool needsDepth(std::uint64_t seed, std::uint64_t stream, std::uint32_t from, int k, int depth) const;
+    /// ditherKey: ditherKey(seed). Inline: the wakes ask it for many grains, most of which it
+    /// answers from the threshold alone.
+    bool needsDepth(std::uint64_t ditherKey, std::uint64_t stream, std::uint32_t from, int k, int depth) const {
+        const std::uint32_t threshold = offsets_[std::size_t(k)].thresholdQ8;
+        const int whole = int(threshold >> 8);
+        if (whole != depth - 1) return whole >= depth;
+        const auto dither = (ditherGroup(ditherCellHash(ditherKey, stream, from), k / 8) >> (k % 8 * 8)) & 0xffu;
+        return dither > restComplement_[std::size_t(k)];
+    }
     /// The slide (index into offset()) to the column (dx, dz) away, both within kGranularReach.
     static constexpr int offsetIndex(int dx, int dz) {
         const int bit = (dz + kGranularReach) * kWindow + dx + kGranularReach;
@@ -177,9 +191,19 @@ public:
     const Offset& offset(int k) const { return offsets_[std::size_t(k)]; }
 
 private:
+    // Stream of the fixed per-cell dither, apart from the per-step streams (the grid levels 0, 1).
+    static constexpr std::uint64_t kDitherStream = 0x3d;
+    // The dithers of a cell: one hash of (seed, grid, cell), then 8 offsets' bytes to a draw.
+    static std::uint64_t ditherCellHash(std::uint64_t ditherKey, std::uint64_t stream, std::uint32_t from) {
+        return mix64(ditherKey ^ (std::uint64_t(from) + (stream << 40)));
+    }
+    static std::uint64_t ditherGroup(std::uint64_t cellHash, int group) {
+        return mix64(cellHash + std::uint64_t(group) * 0x9e3779b97f4a7c15ull);
+    }
+
     GranularOutcome fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
                          std::uint32_t from, CellValue grain, bool mayBeMoving) const;
-    GranularOutcome slide(CellGrid& grid, const EmptyCellBits& empty, std::uint64_t seed, std::uint64_t step,
+    GranularOutcome slide(CellGrid& grid, const EmptyCellBits& empty, std::uint64_t ditherKey, std::uint64_t stepKey,
                           std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const;
 
     std::array<Offset, kOffsets> offsets_{};
@@ -217,7 +241,7 @@ private:
 
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.
 inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls,
-                                            std::uint64_t seed, std::uint64_t step, std::uint64_t stream, bool bottomIsOutlet,
+                                            std::uint64_t ditherKey, std::uint64_t stepKey, std::uint64_t stream, bool bottomIsOutlet,
                                             int x, int y, int z, std::uint32_t from, MotionHints hints) const {
     const CellValue grain = grid[from];
     if (grain < 0) return {};
@@ -237,11 +261,11 @@ inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits&
     }
     if (hints.grain && (falls[id].speed | falls[id].fraction)) { // it was in motion and stops here
         falls[id] = FallState{};
-        GranularOutcome outcome = slide(grid, empty, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+        GranularOutcome outcome = slide(grid, empty, ditherKey, stepKey, stream, x, y, z, from, grain, below == kInvalid);
         outcome.stopped = outcome.kind == GranularOutcome::Resting;
         return outcome;
     }
-    return slide(grid, empty, seed, step, stream, x, y, z, from, grain, below == kInvalid);
+    return slide(grid, empty, ditherKey, stepKey, stream, x, y, z, from, grain, below == kInvalid);
 }
 
 /// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the

@@ -45,7 +45,7 @@ constexpr auto kNthSetBit = [] {
 } // namespace
 
 GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
-    : size_(gridSize), bottomIsOutlet_(bottomIsOutlet), rowWords_((gridSize.x + 63) / 64) {
+    : size_(gridSize), bottomIsOutlet_(bottomIsOutlet), ditherKey_(GranularRules::ditherKey(0)), rowWords_((gridSize.x + 63) / 64) {
     const std::size_t rows = std::size_t(gridSize.y) * std::size_t(gridSize.z);
     words_.assign(rows * std::size_t(rowWords_), RowWord{});
     rowAwake_.assign(rows, 0);
@@ -58,6 +58,8 @@ void GridSweep::setGranular(const GranularRules* granular) {
     carriedEarly_.assign(granular ? words_.size() : 0, 0);
     if (granular) empty_.resize(size_); // every cell taken until readEmptyCells
 }
+
+void GridSweep::setSeed(std::uint64_t seed) { ditherKey_ = GranularRules::ditherKey(seed); }
 
 void GridSweep::readEmptyCells(const CellGrid& grid) {
     if (granular_) empty_.read(grid);
@@ -199,7 +201,7 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
                 const int dx = bit % kGranularWindow - kGranularReach, dz = bit / kGranularWindow - kGranularReach;
                 const std::uint32_t from = grid.index(x + dx, y, z + dz);
                 const int slide = GranularRules::offsetIndex(t % (2 * across + 1) - across - dx, t / (2 * across + 1) - across - dz);
-                if (grid[from - grid.layerSize()] == kInvalid || !granular_->needsDepth(seed_, stream(), from, slide, 2))
+                if (grid[from - grid.layerSize()] == kInvalid || !granular_->needsDepth(ditherKey_, stream(), from, slide, 2))
                     gaining |= std::uint64_t{1} << bit;
             }
         }
@@ -291,8 +293,8 @@ std::uint64_t GridSweep::deepEnoughForSlidesInto(const CellGrid& grid, std::uint
         const int slide = GranularRules::offsetIndex(-dx, -dz);
         // It gains when its need reaches the emptied cell and, unless the cell under it is EMPTY,
         // ends there; on the vessel a grain needs one cell, so only the target can matter to it.
-        const bool needsMore = granular_->needsDepth(seed_, stream(), from, slide, layersAbove + 1);
-        const bool gains = layersAbove >= 2 ? granular_->needsDepth(seed_, stream(), from, slide, layersAbove) &&
+        const bool needsMore = granular_->needsDepth(ditherKey_, stream(), from, slide, layersAbove + 1);
+        const bool gains = layersAbove >= 2 ? granular_->needsDepth(ditherKey_, stream(), from, slide, layersAbove) &&
                                                   (deeperEmpty || !needsMore)
                                             : !needsMore || grid[from - grid.layerSize()] == kInvalid;
         if (!gains) woken &= ~(std::uint64_t{1} << bit);
@@ -510,7 +512,7 @@ struct GridSweep::GranularStrip {
     CellGrid& grid;
     CellValue* cells;
     std::span<FallState> falls;
-    std::uint64_t seed, step, stream;
+    std::uint64_t ditherKey, stepKey, stream; // GranularRules::ditherKey(seed), SweepContext::stepKey
     std::size_t layerWords; // words of awake and in-motion bits per layer
     RowWord* words;
     std::uint64_t* inMotion;
@@ -536,7 +538,7 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
     }
     // The grain below is in the same column of the layer below: the same bit, one layer's words back.
     const MotionHints hints{(inMotion[word] & bit) != 0, (inMotion[word - strip.layerWords] & bit) != 0};
-    const GranularOutcome outcome = granular_->visit(strip.grid, empty_, strip.falls, strip.seed, strip.step, strip.stream,
+    const GranularOutcome outcome = granular_->visit(strip.grid, empty_, strip.falls, strip.ditherKey, strip.stepKey, strip.stream,
                                                      bottomIsOutlet_, x, y, z, from, hints);
     // The bit follows the grain's state: cleared where it was, set where it is when in motion.
     if (outcome.kind == GranularOutcome::Moved) {
@@ -634,8 +636,8 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
     const GranularStrip strip{context.grid,
                               context.grid.cells().data(),
                               context.grains.fall[std::size_t(context.level)],
-                              context.seed,
-                              context.step,
+                              GranularRules::ditherKey(context.seed),
+                              context.stepKey,
                               std::uint64_t(context.level),
                               std::size_t(size_.z) * std::size_t(rowWords_),
                               words_.data(),

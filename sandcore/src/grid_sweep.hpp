@@ -89,7 +89,7 @@ public:
     /// grain counts as at rest afterwards (the scene zeroes the fall states when the rules change).
     void setGranular(const GranularRules* granular);
     /// The seed of the granular thresholds' dither (StepSettings::seed): the wakes read it.
-    void setSeed(std::uint64_t seed) { seed_ = seed; }
+    void setSeed(std::uint64_t seed);
     /// Granular: the grain now in cell (x, y, z) may be in motion (its fall state is not zero).
     /// Whoever writes a fall state outside a sweep says so here; a cell whose bit is clear holds
     /// no grain in motion, so a visit need not read its state.
@@ -211,7 +211,7 @@ private:
     bool bottomIsOutlet_;
     GridSweep* above_ = nullptr;
     const GranularRules* granular_ = nullptr;
-    std::uint64_t seed_ = 0;
+    std::uint64_t ditherKey_; // GranularRules::ditherKey of the seed (0 until setSeed)
     bool deferWakesAbove_ = false;
     std::vector<std::uint32_t> deferredWakesAbove_; // x + sizeX * z of the outlet cells to wake
     int rowWords_;                       // 64-bit words per row of awake bits
@@ -227,10 +227,10 @@ private:
     std::vector<RowWord, LargePageAllocator<RowWord>> words_; // row = y * sizeZ + z, padded to whole words
     // Granular only, indexed as words_: the cells whose grain may be in motion (markInMotion). A
     // visit reads a grain's fall state by id, a cache miss, and most visited grains are at rest.
-    std::vector<std::uint64_t> inMotion_;
+    std::vector<std::uint64_t, LargePageAllocator<std::uint64_t>> inMotion_;
     // Granular only, indexed as words_: grains visited in this step before their layer's turn
     // (carryRiders); the turn skips them and leaves them awake for the next step.
-    std::vector<std::uint64_t> carriedEarly_;
+    std::vector<std::uint64_t, LargePageAllocator<std::uint64_t>> carriedEarly_;
     // Granular only: which cells are EMPTY, kept with every change of a cell (moves here, the
     // scene's edits through the calls above), so slides and wakes read bits instead of cells.
     EmptyCellBits empty_;

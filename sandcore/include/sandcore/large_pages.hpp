@@ -1,8 +1,8 @@
 #pragma once
 // Memory for the big arrays of a scene (cell grids, the grain records a step writes by id, the
-// sweeps' awake words, the surface's cell bits) and of the voxelizer: blocks from half a huge
-// page up are rounded up to whole 2 MiB pages, aligned to them and offered to the kernel as
-// transparent huge pages (madvise), so a sweep over a grid of a million cells, or a step writing
+// sweeps' awake words and the granular sweeps' bits, the surface's cell bits) and of the
+// voxelizer: blocks from half a huge page up are rounded up to whole 2 MiB pages, aligned to
+// them and offered to the kernel as transparent huge pages (madvise), so a sweep over a grid of a million cells, or a step writing
 // the records of grains all over the id range, takes a few TLB entries instead of hundreds or
 // thousands of 4 KiB ones. Freed blocks are kept, up to kLargeBlockCacheBytes, for the next
 // allocation of a similar size: fresh memory costs a page fault per page and the kernel's
