@@ -54,8 +54,7 @@ GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
 
 void GridSweep::setGranular(const GranularRules* granular) {
     granular_ = granular;
-    inMotion_.assign(granular ? words_.size() : 0, 0);
-    carriedEarly_.assign(granular ? words_.size() : 0, 0);
+    motion_.assign(granular ? words_.size() : 0, MotionWord{});
     if (granular) empty_.resize(size_); // every cell taken until readEmptyCells
 }
 
@@ -90,7 +89,7 @@ void GridSweep::cellBlocked(std::uint32_t cell) {
 
 void GridSweep::markInMotion(int x, int y, int z) {
     const std::size_t row = std::size_t(y) * std::size_t(size_.z) + std::size_t(z);
-    inMotion_[row * std::size_t(rowWords_) + std::size_t(x >> 6)] |= std::uint64_t{1} << (x & 63);
+    motion_[row * std::size_t(rowWords_) + std::size_t(x >> 6)].inMotion |= std::uint64_t{1} << (x & 63);
 }
 
 void GridSweep::wakeAt(int x, int y, int z) {
@@ -416,8 +415,7 @@ void GridSweep::wakeEveryGrain(const CellGrid& grid) {
 
 void GridSweep::clear() {
     std::fill(words_.begin(), words_.end(), RowWord{});
-    std::fill(inMotion_.begin(), inMotion_.end(), 0);
-    std::fill(carriedEarly_.begin(), carriedEarly_.end(), 0);
+    std::fill(motion_.begin(), motion_.end(), MotionWord{});
     for (StripLog& log : logs_) {
         log.moved.clear();
         log.carried = 0;
@@ -515,7 +513,7 @@ struct GridSweep::GranularStrip {
     std::uint64_t ditherKey, stepKey, stream; // GranularRules::ditherKey(seed), SweepContext::stepKey
     std::size_t layerWords; // words of awake and in-motion bits per layer
     RowWord* words;
-    std::uint64_t* inMotion;
+    MotionWord* motion;
     std::uint8_t* rowAwake;
     int sizeY, sizeZ;
 };
@@ -531,21 +529,21 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
     const std::uint32_t from = rowStart + std::uint32_t(x);
     const CellValue* cells = strip.cells;
     RowWord* words = strip.words;
-    std::uint64_t* inMotion = strip.inMotion;
+    MotionWord* motion = strip.motion;
     if (cells[from] < 0) {
         words[word].occupied &= ~bit;
         return GranularOutcome::Resting;
     }
     // The grain below is in the same column of the layer below: the same bit, one layer's words back.
-    const MotionHints hints{(inMotion[word] & bit) != 0, (inMotion[word - strip.layerWords] & bit) != 0};
+    const MotionHints hints{(motion[word].inMotion & bit) != 0, (motion[word - strip.layerWords].inMotion & bit) != 0};
     const GranularOutcome outcome = granular_->visit(strip.grid, empty_, strip.falls, strip.ditherKey, strip.stepKey, strip.stream,
                                                      bottomIsOutlet_, x, y, z, from, hints);
     // The bit follows the grain's state: cleared where it was, set where it is when in motion.
     if (outcome.kind == GranularOutcome::Moved) {
-        inMotion[word] &= ~bit;
+        motion[word].inMotion &= ~bit;
         if (outcome.inMotion) markInMotion(outcome.to.x, outcome.to.y, outcome.to.z);
     } else if (outcome.inMotion != hints.grain) {
-        inMotion[word] ^= bit;
+        motion[word].inMotion ^= bit;
     }
     if (outcome.kind == GranularOutcome::Waiting || outcome.stopped) {
         if (outcome.kind == GranularOutcome::Waiting) { // in motion: visited again next step
@@ -595,7 +593,7 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
 // layers' turns: each one's visit would only ride the grain below it (GranularRules::ride), and
 // nothing it reads can change before its turn (the cell below it stays taken, the speed of the
 // grain in it is final for the step). Visiting a column at once spares each grain the queue and
-// the reads of the cell and the state below it. A grain that rode is marked in carriedEarly_:
+// the reads of the cell and the state below it. A grain that rode is marked (MotionWord::carriedEarly):
 // its layer's turn skips it and keeps it awake for the next step, as its own visit would have.
 // The column ends at the first cell without a grain, or at a grain whose ride changed nothing
 // (it sleeps, as after its own visit). Returns the grains visited.
@@ -610,12 +608,13 @@ int GridSweep::carryRiders(const GranularStrip& strip, int x, int y, int z, std:
         if (rider < 0) break;
         const std::uint32_t row = std::uint32_t(above) * std::uint32_t(strip.sizeZ) + std::uint32_t(z);
         const std::size_t word = std::size_t(row) * std::size_t(rowWords_) + std::size_t(x >> 6);
-        const bool mayBeMoving = (strip.inMotion[word] & bit) != 0;
+        MotionWord& motion = strip.motion[word];
+        const bool mayBeMoving = (motion.inMotion & bit) != 0;
         if (granular_->ride(strip.falls[std::size_t(rider)], speed, mayBeMoving, above > 1 || !bottomIsOutlet_) ==
             GranularOutcome::Riding)
             break;
-        strip.inMotion[word] |= bit;
-        carriedEarly_[word] |= bit;
+        motion.inMotion |= bit;
+        motion.carriedEarly |= bit;
         strip.rowAwake[row] = 1;
         ++carried;
     }
@@ -641,7 +640,7 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
                               std::uint64_t(context.level),
                               std::size_t(size_.z) * std::size_t(rowWords_),
                               words_.data(),
-                              inMotion_.data(),
+                              motion_.data(),
                               rowAwake_.data(),
                               size_.y,
                               size_.z};
@@ -683,12 +682,12 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
             const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
             rowAwake_[row] = 0;
             RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
-            std::uint64_t* carried = carriedEarly_.data() + std::size_t(row) * std::size_t(rowWords_);
+            MotionWord* motion = motion_.data() + std::size_t(row) * std::size_t(rowWords_);
             for (int j = 0; j < rowWords_; ++j) {
                 const int w = xDown ? rowWords_ - 1 - j : j;
                 words[w].awake = 0; // a full sweep keeps no awake bits: turning sleeping on wakes every grain
-                const std::uint64_t visitedEarly = carried[w]; // visited in this step already
-                carried[w] = 0;
+                const std::uint64_t visitedEarly = motion[w].carriedEarly; // visited in this step already
+                motion[w].carriedEarly = 0;
                 forEachBit(w, wholeWord(w) & ~visitedEarly, [&](int x) { visit(x, z); });
             }
             if (context.feed) context.feed->publishSome();
@@ -709,13 +708,13 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
         if (!rowAwake_[row]) return;
         RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
-        std::uint64_t* carried = carriedEarly_.data() + std::size_t(row) * std::size_t(rowWords_);
+        MotionWord* motion = motion_.data() + std::size_t(row) * std::size_t(rowWords_);
         std::uint64_t stillAwake = 0;
         for (int j = 0; j < rowWords_; ++j) {
             const int w = xDown ? rowWords_ - 1 - j : j;
             // The grains carried early were visited in this step: awake for the next one only.
-            const std::uint64_t visitedEarly = carried[w];
-            carried[w] = 0;
+            const std::uint64_t visitedEarly = motion[w].carriedEarly;
+            motion[w].carriedEarly = 0;
             const std::uint64_t bits = words[w].awake & ~visitedEarly;
             words[w].awake = visitedEarly;
             stillAwake |= visitedEarly;
@@ -735,7 +734,7 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, i
         }
         if (n + kStatesAhead < count) {
             const StripLog::Cell ahead = queue[n + kStatesAhead];
-            if (strip.inMotion[std::size_t(rowOf(ahead)) * std::size_t(rowWords_) + (ahead.x >> 6)] >> (ahead.x & 63) & 1) {
+            if (strip.motion[std::size_t(rowOf(ahead)) * std::size_t(rowWords_) + (ahead.x >> 6)].inMotion >> (ahead.x & 63) & 1) {
                 const CellValue grain = strip.cells[cellOf(ahead)];
                 if (grain >= 0) __builtin_prefetch(strip.falls.data() + grain);
             }

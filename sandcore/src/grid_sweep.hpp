@@ -225,12 +225,17 @@ private:
         std::uint64_t occupied = 0;
     };
     std::vector<RowWord, LargePageAllocator<RowWord>> words_; // row = y * sizeZ + z, padded to whole words
-    // Granular only, indexed as words_: the cells whose grain may be in motion (markInMotion). A
-    // visit reads a grain's fall state by id, a cache miss, and most visited grains are at rest.
-    std::vector<std::uint64_t, LargePageAllocator<std::uint64_t>> inMotion_;
-    // Granular only, indexed as words_: grains visited in this step before their layer's turn
-    // (carryRiders); the turn skips them and leaves them awake for the next step.
-    std::vector<std::uint64_t, LargePageAllocator<std::uint64_t>> carriedEarly_;
+    // Granular only, per 64 cells of a row as words_: the cells whose grain may be in motion
+    // (markInMotion; a visit reads a grain's fall state by id, a cache miss, and most visited
+    // grains are at rest), and the grains visited in this step before their layer's turn
+    // (carryRiders; the turn skips them and leaves them awake for the next step). Side by side,
+    // the turn's queue takes the second and finds the first in the same cache line for its look
+    // ahead and the visits, and a carried grain sets both in one line (two arrays: 1.4% slower).
+    struct MotionWord {
+        std::uint64_t inMotion = 0;
+        std::uint64_t carriedEarly = 0;
+    };
+    std::vector<MotionWord, LargePageAllocator<MotionWord>> motion_;
     // Granular only: which cells are EMPTY, kept with every change of a cell (moves here, the
     // scene's edits through the calls above), so slides and wakes read bits instead of cells.
     EmptyCellBits empty_;
