@@ -170,7 +170,10 @@ constexpr int kGranularWindow = 2 * kGranularReach + 1;
 void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove) {
     // The grains in the window not yet awake: waking an awake one changes nothing.
     std::uint64_t woken = granular_->wakeMask(layersAbove) & sleepingGrainsAround(x, y, z);
-    if (!woken) return; // most calls: every grain around is awake already, or none is there
+    // Every grain around is awake already, or none is there: a third of the calls in the
+    // million-grain drain, most of them 3 or 4 layers above the emptied cell, where (at the
+    // default angle) the mask holds only cells of the window's outer rows and columns.
+    if (!woken) return;
     if (layersAbove == 0) {
         // In (x, z)'s layer a grain gains only through a slide whose path crosses (x, z), is EMPTY
         // all along and ends over an EMPTY cell of the layer below; a slide that needs its column
