@@ -147,6 +147,13 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
             slotAcrossCentreInto_[std::size_t(t)][std::size_t(bit)] = std::uint8_t(slot);
         }
     }
+    for (int t = 0; t < kAcrossWindow * kAcrossWindow; ++t)
+        for (std::uint64_t grains = slidesAcrossCentreTo_[std::size_t(t)]; grains; grains &= grains - 1) {
+            const int bit = __builtin_ctzll(grains);
+            auto& row = targetsAcrossCentreByRow_[std::size_t(bit / kWindow)];
+            for (std::size_t pattern = 0; pattern < row.size(); ++pattern)
+                if (pattern >> (bit % kWindow) & 1) row[pattern] |= 1u << t;
+        }
     // Each cell of each path is a slide across that cell: all of them must lie in the tables.
     int slidesCrossing = 0;
     for (const Offset& o : offsets_) slidesCrossing += setBitCount(o.pathMask);

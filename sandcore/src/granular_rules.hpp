@@ -153,6 +153,15 @@ public:
         }
         return open;
     }
+    /// The columns t of the 5x5 under c (bits as in grainsWithOpenSlideAcrossCentreTo) into which
+    /// some grain of `among` (window bits) has a slide across c: seven look-ups, so a wake asks
+    /// about those columns only (most EMPTY columns under c are no grain's target across it).
+    std::uint32_t targetsAcrossCentreOf(std::uint64_t among) const {
+        std::uint32_t targets = 0;
+        for (int r = 0; r < kWindow; ++r)
+            targets |= targetsAcrossCentreByRow_[std::size_t(r)][(among >> (r * kWindow)) & ((1u << kWindow) - 1)];
+        return targets;
+    }
     /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
     /// column crosses only EMPTY cells at their level (inside `clear`, as above).
     std::uint64_t grainsWithOpenPathTowardsCentre(std::uint64_t clear) const {
@@ -237,6 +246,9 @@ private:
     static constexpr int kMaxSlidesAcrossInto = 8;
     std::array<std::array<std::uint64_t, kMaxSlidesAcrossInto>, kAcrossWindow * kAcrossWindow> pathsAcrossCentreInto_{};
     std::array<std::array<std::uint8_t, kWindow * kWindow>, kAcrossWindow * kAcrossWindow> slotAcrossCentreInto_{};
+    // [r][pattern]: the columns under c into which a grain of window row r at the cells `pattern`
+    // (7 bits) slides across c (targetsAcrossCentreOf).
+    std::array<std::array<std::uint32_t, 1u << kWindow>, kWindow> targetsAcrossCentreByRow_{};
 };
 
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.

@@ -181,10 +181,12 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
         // vessel, where one cell is enough. Whatever opens such a slide later (a cell of the path
         // or the target emptying, the column deepening) wakes the grain then. Such slides end in
         // the 5x5 columns around (x, z): target by target, the grains whose path to it is open
-        // (GranularRules::grainsWithOpenSlideAcrossCentreTo). Outside the grid
-        // the windows read as taken; under layer 1 the column is never deep enough.
+        // (GranularRules::grainsWithOpenSlideAcrossCentreTo), over the EMPTY targets into which
+        // some of the grains slide across (x, z) (skipping the others took about 2% off the
+        // granular step). Outside the grid the windows read as taken; under layer 1 the column is
+        // never deep enough.
         constexpr int across = GranularRules::kAcrossReach;
-        auto targets = std::uint32_t(empty_.window<across>(x, y - 1, z));
+        auto targets = std::uint32_t(empty_.window<across>(x, y - 1, z)) & granular_->targetsAcrossCentreOf(woken);
         if (!targets) return;
         const std::uint64_t here = empty_.window<kGranularReach>(x, y, z);
         std::uint64_t deepTargets = ~std::uint64_t{0}; // the EMPTY cells under the targets, read when first needed

@@ -1,5 +1,6 @@
 // The granular wakes of an emptied cell c's own layer (grid_sweep.cpp) read tables of the slides
-// across c, target column by target column (GranularRules::grainsWithOpenSlideAcrossCentreTo).
+// across c, target column by target column (GranularRules::grainsWithOpenSlideAcrossCentreTo),
+// over the columns some of the grains slide into (GranularRules::targetsAcrossCentreOf).
 // Here the tables are checked against the slides themselves, and the wakes against a full sweep
 // where sand lies against the grid's sides and on its lowest layers, where the windows read the
 // kept bits' margins.
@@ -72,16 +73,29 @@ TEST_CASE("granular wake tables: the grains with an open slide across a cell int
         for (int k = 0; k < GranularRules::kOffsets; ++k)
             for (std::uint64_t p = rules.offset(k).pathMask; p; p &= p - 1) ++pathCells;
         CHECK(slides == pathCells);
+        // The columns a wake asks about, grain by grain (the random windows below hold many).
+        for (int bit = 0; bit < kWindow * kWindow; ++bit) {
+            std::uint32_t targets = 0;
+            for (int t = 0; t < kAcrossWindow * kAcrossWindow; ++t)
+                if (openSlidesAcrossCentreTo(rules, t % kAcrossWindow - kAcross, t / kAcrossWindow - kAcross,
+                                             std::uint64_t{1} << bit, window))
+                    targets |= 1u << t;
+            CHECK_MESSAGE(rules.targetsAcrossCentreOf(std::uint64_t{1} << bit) == targets, "grain at window bit " << bit);
+        }
         for (int trial = 0; trial < 2000; ++trial) {
             // Dense and sparse windows, some around a centre the path must cross taken.
             const std::uint64_t clear = (trial % 3 == 0 ? random() | random() : random() & random()) & window;
             const std::uint64_t among = (trial % 2 == 0 ? ~std::uint64_t{0} : random()) & window;
+            // The columns a wake asks about: those into which some grain of `among` slides across c.
+            std::uint32_t targets = 0;
             for (int t = 0; t < kAcrossWindow * kAcrossWindow; ++t) {
                 const int tx = t % kAcrossWindow - kAcross, tz = t / kAcrossWindow - kAcross;
                 const std::uint64_t expected = openSlidesAcrossCentreTo(rules, tx, tz, among, clear);
                 if (rules.grainsWithOpenSlideAcrossCentreTo(t, among, clear) != expected)
                     FAIL("column (" << tx << ", " << tz << "), clear " << clear << ", among " << among);
+                if (openSlidesAcrossCentreTo(rules, tx, tz, among, window)) targets |= 1u << t;
             }
+            if (rules.targetsAcrossCentreOf(among) != targets) FAIL("targets across the centre, among " << among);
         }
     }
 }
