@@ -155,7 +155,7 @@ public:
     }
     /// The columns t of the 5x5 under c (bits as in grainsWithOpenSlideAcrossCentreTo) into which
     /// some grain of `among` (window bits) has a slide across c: seven look-ups, so a wake asks
-    /// about those columns only (most EMPTY columns under c are no grain's target across it).
+    /// about those columns only.
     std::uint32_t targetsAcrossCentreOf(std::uint64_t among) const {
         std::uint32_t targets = 0;
         for (int r = 0; r < kWindow; ++r)
