@@ -22,7 +22,9 @@
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace sandcore {
@@ -166,7 +168,8 @@ public:
 
 private:
     template <bool Granular> SweepResult sweepBy(const SweepContext& context, WorkerPool* pool);
-    template <bool Granular> SweepResult sweepStrip(const SweepContext& context, int y, int strip);
+    SweepResult sweepStrip(const SweepContext& context, int y, int strip); // classic
+    void listTurnStrips(int y, bool sleeping); // granular: turnStrips_ for layer y
     template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
     void wakeOutletAbove(int x, int y, int z); // a top-layer cell emptied: the grid above's outlet cell
     // Granular, at the end of layer y's turn: the cells left in it become EMPTY in the kept bits,
@@ -183,7 +186,7 @@ private:
                                         int y, int z, std::uint32_t row, std::uint32_t rowStart, bool& stopped);
     void record(const SweepContext& context, StripLog& log, const GrainMove& move);
     int carryRiders(const GranularStrip& strip, int x, int y, int z, std::uint32_t from, std::uint32_t speed);
-    SweepResult sweepGranularStrips(const SweepContext& context, int y, int firstStrip, int stripEnd, int stripStride);
+    SweepResult sweepGranularStrips(const SweepContext& context, int y, std::span<const int> strips);
     void clearRow(std::uint32_t row);
     Int3 coordinateOf(std::uint32_t cell) const; // as CellGrid::coordinate, for this sweep's grid
     void prefetchFirstAwake(const CellGrid& grid, int y, int z) const;
@@ -240,6 +243,7 @@ private:
     // scene's edits through the calls above), so slides and wakes read bits instead of cells.
     EmptyCellBits empty_;
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
+    std::array<std::vector<int>, 2> turnStrips_; // granular: the strips of the current layer's turn, by phase
     // Granular: the cells left in the last layer's turn whose own-layer wakes wait for the next
     // turn's end, when most of them are taken again (the grain above falls in) and wake nobody.
     std::vector<Int3> leftEarlier_;
