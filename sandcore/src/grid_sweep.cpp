@@ -517,7 +517,7 @@ struct GridSweep::GranularStrip {
     CellGrid& grid;
     CellValue* cells;
     std::span<FallState> falls;
-    std::uint64_t ditherKey, stepKey, stream; // GranularRules::ditherKey(seed), SweepContext::stepKey
+    std::uint64_t ditherKey, stepKey, stream; // GridSweep::ditherKey_, SweepContext::stepKey
     std::size_t layerWords; // words of awake and in-motion bits per layer
     RowWord* words;
     MotionWord* motion;
@@ -642,7 +642,7 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
     const GranularStrip strip{context.grid,
                               context.grid.cells().data(),
                               context.grains.fall[std::size_t(context.level)],
-                              GranularRules::ditherKey(context.seed),
+                              ditherKey_, // the wakes' key too: one source for both
                               context.stepKey,
                               std::uint64_t(context.level),
                               std::size_t(size_.z) * std::size_t(rowWords_),
@@ -784,7 +784,7 @@ bool GridSweep::anyRowAwake(int y, int z0, int z1) const {
 // those only, where each went over every strip (1.7% of the granular step of the million-grain
 // drain).
 void GridSweep::listTurnStrips(int y, bool sleeping) {
-    const int strips = (size_.z + kStripRows - 1) / kStripRows;
+    const int strips = int(logs_.size()); // one log per strip
     for (std::vector<int>& phase : turnStrips_) phase.clear();
     for (int strip = 0; strip < strips; ++strip)
         if (!sleeping || anyRowAwake(y, strip * kStripRows, std::min((strip + 1) * kStripRows, size_.z)))

@@ -90,7 +90,7 @@ public:
     /// The rules to apply: the granular ones (PH1), or the thesis's when null. Not owned. Every
     /// grain counts as at rest afterwards (the scene zeroes the fall states when the rules change).
     void setGranular(const GranularRules* granular);
-    /// The seed of the granular thresholds' dither (StepSettings::seed): the wakes read it.
+    /// The seed of the granular thresholds' dither (StepSettings::seed): the visits and wakes read it.
     void setSeed(std::uint64_t seed);
     /// Granular: the grain now in cell (x, y, z) may be in motion (its fall state is not zero).
     /// Whoever writes a fall state outside a sweep says so here; a cell whose bit is clear holds
