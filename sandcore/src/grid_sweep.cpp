@@ -57,15 +57,20 @@ void GridSweep::setGranular(const GranularRules* granular) {
     granular_ = granular;
     motion_.assign(granular ? words_.size() : 0, MotionWord{});
     if (granular) empty_.resize(size_); // every cell taken until readEmptyCells
+    layout_ = granular ? LayoutBits(size_) : LayoutBits();
 }
 
 void GridSweep::setSeed(std::uint64_t seed) { ditherKey_ = GranularRules::ditherKey(seed); }
 
 void GridSweep::readEmptyCells(const CellGrid& grid) {
-    if (granular_) empty_.read(grid);
+    if (!granular_) return;
+    empty_.read(grid);
+    layout_ = LayoutBits(grid);
 }
 
-bool GridSweep::emptyCellsMatch(const CellGrid& grid) const { return !granular_ || empty_.matches(grid); }
+bool GridSweep::emptyCellsMatch(const CellGrid& grid) const {
+    return !granular_ || (empty_.matches(grid) && layout_.matches(grid));
+}
 
 void GridSweep::grainEntered(int x, int y, int z) {
     if (granular_) empty_.setEmpty(x, y, z, false);
@@ -86,6 +91,7 @@ void GridSweep::cellBlocked(std::uint32_t cell) {
     if (!granular_) return;
     const Int3 c = coordinateOf(cell);
     empty_.setEmpty(c.x, c.y, c.z, false);
+    layout_.setOpen(cell, false);
 }
 
 void GridSweep::markInMotion(int x, int y, int z) {
@@ -206,7 +212,7 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
                 const int dx = bit % kGranularWindow - kGranularReach, dz = bit / kGranularWindow - kGranularReach;
                 const std::uint32_t from = grid.index(x + dx, y, z + dz);
                 const int slide = GranularRules::offsetIndex(t % (2 * across + 1) - across - dx, t / (2 * across + 1) - across - dz);
-                if (grid[from - grid.layerSize()] == kInvalid || !granular_->needsDepth(ditherKey_, stream(), from, slide, 2))
+                if (!layout_.open(from - grid.layerSize()) || !granular_->needsDepth(ditherKey_, stream(), from, slide, 2))
                     gaining |= std::uint64_t{1} << bit;
             }
         }
@@ -301,7 +307,7 @@ std::uint64_t GridSweep::deepEnoughForSlidesInto(const CellGrid& grid, std::uint
         const bool needsMore = granular_->needsDepth(ditherKey_, stream(), from, slide, layersAbove + 1);
         const bool gains = layersAbove >= 2 ? granular_->needsDepth(ditherKey_, stream(), from, slide, layersAbove) &&
                                                   (deeperEmpty || !needsMore)
-                                            : !needsMore || grid[from - grid.layerSize()] == kInvalid;
+                                            : !needsMore || !layout_.open(from - grid.layerSize());
         if (!gains) woken &= ~(std::uint64_t{1} << bit);
     }
     return woken;
@@ -344,6 +350,7 @@ void GridSweep::wakeAroundEmptied(const CellGrid& grid, int x, int y, int z) {
 template <bool Granular> inline void GridSweep::wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z) {
     if constexpr (Granular) {
         empty_.setEmpty(x, y, z, true);
+        layout_.setOpen(grid.index(x, y, z), true); // an obstacle's cell may open so (Scene::clearObstacles)
         wakeForGranular(grid, x, y, z);
     } else {
         wakePredecessorsOf(x, y, z);

@@ -21,6 +21,7 @@
 #include "move_feed.hpp"
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
+#include "sandcore/layout_bits.hpp"
 
 #include <array>
 #include <cstdint>
@@ -97,10 +98,11 @@ public:
     /// no grain in motion, so a visit need not read its state.
     void markInMotion(int x, int y, int z);
 
-    /// Granular: reads which cells of grid are EMPTY (the rules' windows read bits kept by the
-    /// sweep). After the rules are set and after edits that bypass the calls below.
+    /// Granular: reads which cells of grid are EMPTY and which INVALID (the rules' windows and the
+    /// wakes read bits kept by the sweep). After the rules are set and after edits that bypass the
+    /// calls below.
     void readEmptyCells(const CellGrid& grid);
-    /// True when the kept EMPTY cells are those of grid (always, under the classic rules).
+    /// True when the kept EMPTY and INVALID cells are those of grid (always, under the classic rules).
     bool emptyCellsMatch(const CellGrid& grid) const;
     /// A grain entered the cell (x, y, z) from outside a sweep: it is woken there (as wakeAt; not
     /// on the floor, layer 0 of a grid without an outlet, which is never visited).
@@ -242,6 +244,10 @@ private:
     // Granular only: which cells are EMPTY, kept with every change of a cell (moves here, the
     // scene's edits through the calls above), so slides and wakes read bits instead of cells.
     EmptyCellBits empty_;
+    // Granular only: which cells are INVALID (the vessel and obstacles), kept with every change as
+    // empty_, so a wake asks whether a grain lies on the vessel without reading the cell under it
+    // (a cache miss: the bits of a grid at res 248 take a megabyte, the cells 30).
+    LayoutBits layout_;
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
     std::array<std::vector<int>, 2> turnStrips_; // granular: the strips of the current layer's turn, by phase
     // Granular: the cells left in the last layer's turn whose own-layer wakes wait for the next

@@ -10,6 +10,16 @@ LayoutBits::LayoutBits(const CellGrid& grid) : size_(grid.size()), open_((std::s
         open_[n >> 6] |= std::uint64_t(cells[n] != kInvalid) << (n & 63);
 }
 
+LayoutBits::LayoutBits(Int3 size) : size_(size), open_((std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z) + 63) / 64, 0) {}
+
+bool LayoutBits::matches(const CellGrid& grid) const {
+    if (grid.size() != size_) return false;
+    const auto cells = grid.cells();
+    for (std::size_t n = 0; n < cells.size(); ++n)
+        if (open(std::uint32_t(n)) != (cells[n] != kInvalid)) return false;
+    return true;
+}
+
 std::int64_t LayoutBits::openCellsOfBottomLayer() const {
     const std::uint32_t layer = std::uint32_t(size_.x) * std::uint32_t(size_.z);
     std::int64_t count = 0;

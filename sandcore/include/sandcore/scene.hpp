@@ -99,7 +99,7 @@ public:
     }
     /// R7: a 64-bit hash of both grids' cell contents, stable across runs and platforms.
     std::uint64_t stateHash() const;
-    /// What the sweeps keep of the grids (the granular rules' EMPTY cells) agrees with the grids:
+    /// What the sweeps keep of the grids (the granular rules' EMPTY and INVALID cells) agrees with the grids:
     /// a check for tests, since every edit of a cell must tell the sweeps (R5).
     bool sweepsMatchCells() const;
 
