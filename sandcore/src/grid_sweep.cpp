@@ -13,7 +13,6 @@
 #include <utility>
 
 namespace sandcore {
-int tmpToggle = 0;
 
 namespace {
 // Below this many awake rows in a layer, handing strips to other threads costs more than it saves.
