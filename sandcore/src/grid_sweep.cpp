@@ -535,7 +535,7 @@ struct GridSweep::GranularStrip {
 // row: y * sizeZ + z; rowStart: the index of cell (0, y, z). The strip loop has both.
 inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log,
                                                       int x, int y, int z, std::uint32_t row, std::uint32_t rowStart,
-                                                      bool& stopped) {
+                                                      bool mayBeMoving, bool& stopped) {
     // The occupied bits are kept as the classic visit keeps them, so the granular wakes can AND
     // with them instead of reading cells.
     const std::size_t word = std::size_t(row) * std::size_t(rowWords_) + std::size_t(x >> 6);
@@ -548,13 +548,14 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
         words[word].occupied &= ~bit;
         return GranularOutcome::Resting;
     }
-    // The grain below is in the same column of the layer below: the same bit, one layer's words back.
-    const MotionHints hints{(motion[word].inMotion & bit) != 0, (motion[word - strip.layerWords].inMotion & bit) != 0};
+    // The grain's own bit comes with the queue (StripLog::Cell); the grain below is in the same
+    // column of the layer below: the same bit, one layer's words back.
+    const MotionHints hints{mayBeMoving, (motion[word - strip.layerWords].inMotion & bit) != 0};
     const GranularOutcome outcome = granular_->visit(strip.grid, empty_, strip.falls, strip.ditherKey, strip.stepKey, strip.stream,
                                                      bottomIsOutlet_, x, y, z, from, hints);
     // The bit follows the grain's state: cleared where it was, set where it is when in motion.
     if (outcome.kind == GranularOutcome::Moved) {
-        motion[word].inMotion &= ~bit;
+        if (hints.grain) motion[word].inMotion &= ~bit;
         if (outcome.inMotion) markInMotion(outcome.to.x, outcome.to.y, outcome.to.z);
     } else if (outcome.inMotion != hints.grain) {
         motion[word].inMotion ^= bit;
@@ -695,12 +696,12 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
             f(w * 64 + bit);
         }
     };
-    auto visit = [&](int x, int z) {
+    auto visit = [&](int x, int z, bool mayBeMoving) {
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
         StripLog& log = logs_[std::size_t(z / kStripRows)]; // each strip's moves and cells left in its own log
         ++totals.visited;
         bool stopped = false;
-        const GranularOutcome::Kind kind = visitGranular(context, strip, log, x, y, z, row, row * std::uint32_t(size_.x), stopped);
+        const GranularOutcome::Kind kind = visitGranular(context, strip, log, x, y, z, row, row * std::uint32_t(size_.x), mayBeMoving, stopped);
         totals.moves += kind == GranularOutcome::Moved ? 1 : 0;
         log.speedChanges += kind == GranularOutcome::Waiting || stopped ? 1 : 0;
     };
@@ -715,7 +716,8 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
                 words[w].awake = 0; // a full sweep keeps no awake bits: turning sleeping on wakes every grain
                 const std::uint64_t visitedEarly = motion[w].carriedEarly; // visited in this step already
                 motion[w].carriedEarly = 0;
-                forEachBit(w, wholeWord(w) & ~visitedEarly, [&](int x) { visit(x, z); });
+                const std::uint64_t moving = motion[w].inMotion;
+                forEachBit(w, wholeWord(w) & ~visitedEarly, [&](int x) { visit(x, z, (moving >> (x & 63)) & 1); });
             }
             if (context.feed) context.feed->publishSome();
         });
@@ -727,8 +729,10 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
     // for the cells kCellsAhead visits on, and for the fall state kStatesAhead visits on, by when
     // that grain's cell has arrived. The loads of several visits are then in flight together
     // instead of one after another (12% off the granular step of the million-grain drain, and 3%
-    // more with one queue for all strips of a phase where one thread sweeps them). The classic
-    // loop keeps its row-ahead hint: the same queue made its step 14-20% slower.
+    // more with one queue for all strips of a phase where one thread sweeps them). Each entry
+    // carries its cell's in-motion bit, read with the carried-early word of the same cells, so
+    // neither the look ahead nor the visit loads it again (about 1%). The classic loop keeps its
+    // row-ahead hint: the same queue made its step 14-20% slower.
     std::vector<StripLog::Cell>& queue = logs_[std::size_t(strips.front())].awake;
     queue.clear();
     forEachRow([&](int z) {
@@ -745,7 +749,10 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
             const std::uint64_t bits = words[w].awake & ~visitedEarly;
             words[w].awake = visitedEarly;
             stillAwake |= visitedEarly;
-            forEachBit(w, bits, [&](int x) { queue.push_back({std::uint32_t(x), std::uint32_t(z)}); });
+            const std::uint64_t moving = motion[w].inMotion;
+            forEachBit(w, bits, [&](int x) {
+                queue.push_back({std::uint32_t(x), std::uint32_t((moving >> (x & 63)) & 1), std::uint32_t(z)});
+            });
         }
         rowAwake_[row] = stillAwake != 0;
     });
@@ -761,14 +768,14 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
         }
         if (n + kStatesAhead < count) {
             const StripLog::Cell ahead = queue[n + kStatesAhead];
-            if (strip.motion[std::size_t(rowOf(ahead)) * std::size_t(rowWords_) + (ahead.x >> 6)].inMotion >> (ahead.x & 63) & 1) {
+            if (ahead.inMotion) {
                 const CellValue grain = strip.cells[cellOf(ahead)];
                 if (grain >= 0) __builtin_prefetch(strip.falls.data() + grain);
             }
         }
         const StripLog::Cell at = queue[n];
         if (context.feed && n > 0 && at.z != queue[n - 1].z) context.feed->publishSome(); // a row done
-        visit(int(at.x), int(at.z));
+        visit(int(at.x), int(at.z), at.inMotion);
     }
     if (context.feed) context.feed->publishSome();
     addCarried();

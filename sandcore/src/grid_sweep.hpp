@@ -50,7 +50,11 @@ struct StripLog {
     /// Granular: the awake cells a sweep of this strip visits in the current layer's turn (of all
     /// the strips of its phase, where one thread sweeps them), in visiting order.
     struct Cell {
-        std::uint32_t x, z;
+        std::uint32_t x : 31;
+        /// Its in-motion bit as the queue was made: a layer's in-motion bits change in its turn
+        /// only by the visit of their own cell, so the visit and its look ahead read it here.
+        std::uint32_t inMotion : 1;
+        std::uint32_t z;
     };
     std::vector<Cell> awake;
     /// Granular: grains visited while carried by the grain below (carryRiders), since the
@@ -184,8 +188,9 @@ private:
     // What the visit did, as GranularOutcome::Kind, with Resting for a cell that holds no grain;
     // `stopped` tells whether a grain in motion came to rest. (Returning the whole outcome instead
     // cost 2.7% more instructions a granular step: the strip loop copied it out of every visit.)
+    // mayBeMoving: the cell's in-motion bit.
     GranularOutcome::Kind visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x,
-                                        int y, int z, std::uint32_t row, std::uint32_t rowStart, bool& stopped);
+                                        int y, int z, std::uint32_t row, std::uint32_t rowStart, bool mayBeMoving, bool& stopped);
     void record(const SweepContext& context, StripLog& log, const GrainMove& move);
     int carryRiders(const GranularStrip& strip, int x, int y, int z, std::uint32_t from, std::uint32_t speed);
     SweepResult sweepGranularStrips(const SweepContext& context, int y, std::span<const int> strips);
