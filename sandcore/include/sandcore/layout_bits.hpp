@@ -1,6 +1,7 @@
 #pragma once
 // A grid's layout (which cells are INVALID) as one bit per cell: what a scene keeps to rebuild
-// its grids on reset, an eighth of a byte per cell instead of a second copy of the cells.
+// its grids on reset, an eighth of a byte per cell instead of a second copy of the cells, and what
+// a granular sweep keeps of its grid's INVALID cells as they are now (obstacles included).
 
 #include "sandcore/cell_grid.hpp"
 
