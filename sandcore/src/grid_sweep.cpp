@@ -211,7 +211,7 @@ void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int 
                 const int dx = bit % kGranularWindow - kGranularReach, dz = bit / kGranularWindow - kGranularReach;
                 const std::uint32_t from = grid.index(x + dx, y, z + dz);
                 const int slide = GranularRules::offsetIndex(t % (2 * across + 1) - across - dx, t / (2 * across + 1) - across - dz);
-                if (!layout_.open(from - grid.layerSize()) || !granular_->needsDepth(ditherKey_, stream(), from, slide, 2))
+                if (liesOnVessel(grid, from) || !granular_->needsDepth(ditherKey_, stream(), from, slide, 2))
                     gaining |= std::uint64_t{1} << bit;
             }
         }
@@ -306,7 +306,7 @@ std::uint64_t GridSweep::deepEnoughForSlidesInto(const CellGrid& grid, std::uint
         const bool needsMore = granular_->needsDepth(ditherKey_, stream(), from, slide, layersAbove + 1);
         const bool gains = layersAbove >= 2 ? granular_->needsDepth(ditherKey_, stream(), from, slide, layersAbove) &&
                                                   (deeperEmpty || !needsMore)
-                                            : !needsMore || !layout_.open(from - grid.layerSize());
+                                            : !needsMore || liesOnVessel(grid, from);
         if (!gains) woken &= ~(std::uint64_t{1} << bit);
     }
     return woken;

@@ -209,6 +209,8 @@ private:
     WindowColumns windowColumnsAround(int x) const;
     std::uint64_t sleepingGrainsAround(int x, int y, int z) const;
     void wakeWindow(int x, int y, int z, std::uint64_t woken);
+    // Granular: the cell under cell `from` (not in layer 0) is INVALID, read from the kept bits.
+    bool liesOnVessel(const CellGrid& grid, std::uint32_t from) const { return !layout_.open(from - grid.layerSize()); }
     std::uint64_t deepEnoughForSlidesInto(const CellGrid& grid, std::uint64_t woken, int x, int y, int z, int layersAbove) const;
     void wakeForGranular(const CellGrid& grid, int x, int y, int z);
     void wakeLayersAbove(const CellGrid& grid, int x, int y, int z); // wakeForGranular above layer y
