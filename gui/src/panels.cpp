@@ -518,7 +518,11 @@ void drawStatisticsSection(AppState& state) {
                 (long long)stats.grainsLower);
     ImGui::Text("moving %lld   inner %lld", (long long)stats.movingGrains, (long long)stats.innerGrains);
     ImGui::Text("steps %llu   %.1f steps/s", (unsigned long long)stats.stepsDone, stats.stepsPerSecond);
-    ImGui::Text("%.3f ms per step", stats.millisecondsPerStep);
+    // Steps run before the window opens (--steps) are not timed: say so rather than show 0 ms.
+    if (stats.millisecondsPerStep > 0.0f)
+        ImGui::Text("%.3f ms per step", stats.millisecondsPerStep);
+    else
+        ImGui::TextDisabled("ms per step: no step timed yet");
     ImGui::Text("drawn %lld %s", (long long)stats.subGrainsDrawn,
                 state.render.mode == RenderMode::Points || state.render.mode == RenderMode::Sprites ? "points"
                                                                                                      : "quads");

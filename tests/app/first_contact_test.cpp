@@ -47,6 +47,20 @@ TEST_CASE("window: at 3 frames per second the flow of 30 steps/s is kept, and th
     CHECK(app->state().stats.stepsPerSecond == doctest::Approx(30.0).epsilon(0.02));
 }
 
+TEST_CASE("window: steps run before the first frame are not timed, so the readout has no ms per step until one runs") {
+    std::optional<Application> app = testing::openApplication(hiddenWindow("hourglass", 40), "the step readout");
+    if (!app) return;
+    app->runSteps(50); // as --steps does: the panel then says that no step was timed yet
+    app->renderFrame(0.0);
+    CHECK(app->scene().counters().stepsDone == 50);
+    CHECK(app->state().stats.millisecondsPerStep == 0.0f);
+    app->state().simulationRunning = true;
+    app->state().stepsPerSecond = 30.0;
+    app->renderFrame(1.0 / 3.0); // 10 steps, each timed
+    CHECK(app->scene().counters().stepsDone == 60);
+    CHECK(app->state().stats.millisecondsPerStep > 0.0f);
+}
+
 TEST_CASE("window: T turns the hourglass over, the view turns back upright, and two turns are the identity") {
     std::optional<Application> app = testing::openApplication(hiddenWindow("hourglass", 40), "turning over");
     if (!app) return;
