@@ -361,7 +361,8 @@ void drawModelOptions(AppState& state) {
     ImGui::BeginDisabled(request.modelPath.empty()); // procedural shapes are solid already
     if (ImGui::Checkbox("robust inside test (open meshes)", &request.robust)) state.commands.push(Command::Rebuild);
     if (ImGui::Checkbox("stretch to resolution", &request.stretch)) state.commands.push(Command::Rebuild);
-    ImGui::SliderInt("noNoise threshold", &request.noiseThreshold, -1, 3, request.noiseThreshold < 0 ? "off" : "%d");
+    // The thesis's noNoise: inside cells with at most this many inside face neighbours go, repeatedly.
+    ImGui::SliderInt("remove stray cells", &request.noiseThreshold, -1, 3, request.noiseThreshold < 0 ? "off" : "with <= %d neighbours");
     // Rebuild when the slider is let go, not on every value dragged past.
     if (ImGui::IsItemDeactivatedAfterEdit()) state.commands.push(Command::Rebuild);
     ImGui::EndDisabled();
