@@ -141,8 +141,9 @@ void Scene::step() {
         sideBySide = std::min(lowerWork, upperWork) > 0 && 4 * std::min(lowerWork, upperWork) >= std::max(lowerWork, upperWork);
     }
     // Side by side, the sweeps feed their moves to the thread that writes the grain records
-    // (move_feed.hpp); each grid's granular rules keep their fall states in their own array. Otherwise strips on several threads list their moved grains in their own
-    // logs, and one thread lists them in movedGrains_ directly.
+    // (move_feed.hpp); each grid's granular rules keep their fall states in their own array.
+    // Otherwise strips on several threads list their moved grains in their own logs, and one
+    // thread lists them in movedGrains_ directly.
     movedGrains_.clear();
     const bool feeding = sideBySide;
     std::vector<GrainMove>* movedList = pool ? nullptr : &movedGrains_;
