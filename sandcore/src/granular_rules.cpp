@@ -218,7 +218,7 @@ GranularOutcome moveGrain(CellGrid& grid, CellValue grain, std::uint32_t from, s
 } // namespace
 
 GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
-                                    std::uint32_t from, CellValue grain, bool mayBeMoving) const {
+                                    std::uint32_t from, CellValue grain, bool mayBeMoving, std::uint64_t step) const {
     const auto id = std::size_t(grain);
     const FallState before = mayBeMoving ? falls[id] : FallState{};
     // x(n) = g n^2 / 2 exactly at whole steps: each step advances by the mean speed v + g/2.
@@ -242,8 +242,9 @@ GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, 
     } else if (fallen == int(travel >> 16)) { // free flight: nothing touched
         after = {speed, std::uint16_t(travel)};
     } else { // contact: the speed of a grain it lands on (0 when resting), or 0 on a wall
+        // A grain it lands on may be a gatherer that sleeps (grid_sweep.hpp): read up to date.
         const CellValue under = grid[from - std::uint32_t(fallen + 1) * layer];
-        after = {under >= 0 ? std::min(speed, falls[std::size_t(under)].speed) : 0, 0};
+        after = {under >= 0 ? std::min(speed, caughtUp(falls[std::size_t(under)], step).speed) : 0, 0};
     }
     falls[id] = after;
     GranularOutcome outcome = moveGrain(grid, grain, from, from - std::uint32_t(fallen) * layer, {0, fallen, 0}, {x, landedY, z});

@@ -94,9 +94,11 @@ public:
     /// are known to be zero (the result is the same; only fewer states are read).
     /// `from`: the cell's index, grid.index(x, y, z); `empty`: the grid's EMPTY cells as bits, up
     /// to date (the slides read their windows there; the caller updates them after a move).
+    /// `step`: this step's number (a grain landing on a sleeping gatherer reads its state
+    /// caughtUp to it). The visited grain's own state must be up to date (not asleep).
     GranularOutcome visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls, std::uint64_t ditherKey,
                           std::uint64_t stepKey, std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z,
-                          std::uint32_t from, MotionHints hints = {}) const;
+                          std::uint32_t from, std::uint64_t step, MotionHints hints = {}) const;
 
     /// A grain resting on a grain that moves at `speed` (> 0) rides it: it takes that speed and
     /// gathers up to a cell of progress (rule 1). Riding when nothing of it changed (it may sleep:
@@ -109,6 +111,36 @@ public:
         if (speed == before.speed && fraction == before.fraction && maySleep) return GranularOutcome::Riding;
         own = {speed, fraction};
         return GranularOutcome::Waiting;
+    }
+
+    /// A grain's state after step `step`: its own, or, where it sleeps (FallState::gatheringSince),
+    /// the state it stored advanced by the steps since, in the same integers as the visits that
+    /// were skipped. A gatherer's each added its mean speed to its fraction and g to its speed
+    /// (fall's rule while nothing is reached: x(n) = g n^2 / 2 + v n); a rider's took the gatherer's
+    /// new speed, g more each step, and added it and g / 2 to its fraction, up to a cell (ride).
+    FallState caughtUp(const FallState& state, std::uint64_t step) const {
+        if (!(state.gatheringSince & kGatheringAsleep)) return state;
+        const std::uint32_t n = (std::uint32_t(step) - state.gatheringSince) & kAsleepStepMask;
+        const std::uint32_t speed = state.speed + n * gravity_;
+        if (state.gatheringSince & kRidingAsleep)
+            return {speed, std::uint16_t(std::min<std::uint32_t>(state.fraction + n * state.speed + n * (gravity_ / 2) +
+                                                                     gravity_ * (n * (n + 1) / 2),
+                                                                 kOneCell - 1)),
+                    0};
+        return {speed, std::uint16_t(state.fraction + n * state.speed + n * (gravity_ / 2) + gravity_ * (n * (n - 1) / 2)), 0};
+    }
+    /// How many of the next steps, at most `limit`, a grain falling freely with this state (at
+    /// rest in no way: below it an EMPTY cell) only gathers, before the step whose travel reaches
+    /// its next cell.
+    int stepsOnlyGathering(const FallState& state, int limit) const {
+        std::uint32_t speed = state.speed, fraction = state.fraction;
+        int steps = 0;
+        for (; steps < limit; ++steps) {
+            fraction += speed + gravity_ / 2;
+            if (fraction >= kOneCell) break;
+            speed += gravity_;
+        }
+        return steps;
     }
 
     /// Deepest column a slide ever looks into, cells below the grain's layer.
@@ -211,7 +243,7 @@ private:
     }
 
     GranularOutcome fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
-                         std::uint32_t from, CellValue grain, bool mayBeMoving) const;
+                         std::uint32_t from, CellValue grain, bool mayBeMoving, std::uint64_t step) const;
     GranularOutcome slide(CellGrid& grid, const EmptyCellBits& empty, std::uint64_t ditherKey, std::uint64_t stepKey,
                           std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const;
 
@@ -254,21 +286,24 @@ private:
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.
 inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls,
                                             std::uint64_t ditherKey, std::uint64_t stepKey, std::uint64_t stream, bool bottomIsOutlet,
-                                            int x, int y, int z, std::uint32_t from, MotionHints hints) const {
+                                            int x, int y, int z, std::uint32_t from, std::uint64_t step,
+                                            MotionHints hints) const {
     const CellValue grain = grid[from];
     if (grain < 0) return {};
     const CellValue below = grid[from - grid.layerSize()];
-    if (below == kEmpty) return fall(grid, falls, bottomIsOutlet, x, y, z, from, grain, hints.grain);
+    if (below == kEmpty) return fall(grid, falls, bottomIsOutlet, x, y, z, from, grain, hints.grain, step);
 
     // Most visited grains rest on grains at rest: the hints spare them both states (a cache miss
     // each, by id).
     const auto id = std::size_t(grain);
-    if (below >= 0 && hints.below && falls[std::size_t(below)].speed > 0) {
+    // The grain below may be a gatherer that sleeps (it came to rest on it in the last step).
+    const std::uint32_t speedBelow = below >= 0 && hints.below ? caughtUp(falls[std::size_t(below)], step).speed : 0;
+    if (speedBelow > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
         // so the grain follows at once when the one below moves on (a column flows as one).
         GranularOutcome outcome;
         outcome.inMotion = true; // speed > 0
-        outcome.kind = ride(falls[id], falls[std::size_t(below)].speed, hints.grain, y > 1 || !bottomIsOutlet);
+        outcome.kind = ride(falls[id], speedBelow, hints.grain, y > 1 || !bottomIsOutlet);
         return outcome;
     }
     if (hints.grain && (falls[id].speed | falls[id].fraction)) { // it was in motion and stops here

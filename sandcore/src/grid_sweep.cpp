@@ -54,6 +54,7 @@ GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
 
 void GridSweep::setGranular(const GranularRules* granular) {
     granular_ = granular;
+    forgetSleepingGatherers(); // the scene stops every fall when the rules change
     motion_.assign(granular ? words_.size() : 0, MotionWord{});
     if (granular) empty_.resize(size_); // every cell taken until readEmptyCells
     layout_ = granular ? LayoutBits(size_) : LayoutBits();
@@ -72,8 +73,31 @@ bool GridSweep::emptyCellsMatch(const CellGrid& grid) const {
 }
 
 void GridSweep::grainEntered(int x, int y, int z) {
-    if (granular_) empty_.setEmpty(x, y, z, false);
+    if (granular_) {
+        empty_.setEmpty(x, y, z, false);
+        // A gatherer or rider asleep below now carries it; a gatherer asleep above has lost its
+        // EMPTY cell below.
+        if (y - 1 >= 1) wakeIfInMotion(x, y - 1, z);
+        if (y + 1 < size_.y) wakeIfInMotion(x, y + 1, z);
+    }
     if (y > 0 || bottomIsOutlet_) wakeAt(x, y, z);
+}
+
+// A grain in motion that is not awake sleeps in its fall (grid_sweep.hpp) or rides a moving grain
+// that wakes it when its speed changes. Waking either is exact (R5), and an edit next to a
+// sleeping gatherer or rider must: what its skipped visits would read has changed.
+void GridSweep::wakeIfInMotion(int x, int y, int z) {
+    const std::size_t row = std::size_t(y) * std::size_t(size_.z) + std::size_t(z);
+    if (motion_[row * std::size_t(rowWords_) + std::size_t(x >> 6)].inMotion >> (x & 63) & 1) wakeAt(x, y, z);
+}
+
+void GridSweep::forgetSleepingGatherers() {
+    for (std::vector<StripLog::SleeperCell>& cells : timers_) cells.clear();
+    for (StripLog& log : logs_) {
+        log.sleepers.clear();
+        log.sleepsEnded = 0;
+    }
+    gatherersAsleep_ = 0;
 }
 
 Int3 GridSweep::coordinateOf(std::uint32_t cell) const {
@@ -91,6 +115,7 @@ void GridSweep::cellBlocked(std::uint32_t cell) {
     const Int3 c = coordinateOf(cell);
     empty_.setEmpty(c.x, c.y, c.z, false);
     layout_.setOpen(cell, false);
+    if (c.y + 1 < size_.y) wakeIfInMotion(c.x, c.y + 1, c.z); // its EMPTY cell below is gone
 }
 
 void GridSweep::markInMotion(int x, int y, int z) {
@@ -340,10 +365,12 @@ void GridSweep::wakeLayersAbove(const CellGrid& grid, int x, int y, int z) {
 }
 
 void GridSweep::wakeAroundEmptied(const CellGrid& grid, int x, int y, int z) {
-    if (granular_)
+    if (granular_) {
         wakeAroundEmptiedBy<true>(grid, x, y, z);
-    else
+        if (y + 1 < size_.y) wakeIfInMotion(x, y + 1, z); // a rider asleep there lost its support
+    } else {
         wakeAroundEmptiedBy<false>(grid, x, y, z);
+    }
 }
 
 template <bool Granular> inline void GridSweep::wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z) {
@@ -435,6 +462,7 @@ void GridSweep::clear() {
         log.carried = 0;
     }
     std::fill(rowAwake_.begin(), rowAwake_.end(), 0);
+    forgetSleepingGatherers(); // the caller sets every fall state (restore, reset)
 }
 
 std::uint64_t GridSweep::wholeWord(int w) const {
@@ -548,11 +576,35 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
         words[word].occupied &= ~bit;
         return GranularOutcome::Resting;
     }
+    // A sleeping gatherer or rider wakes: its state as after the step before this one. Whatever
+    // it does, the column that slept on it (whose occupied bits are clear) must follow.
+    bool wasAsleep = false;
+    if (mayBeMoving) {
+        FallState& own = strip.falls[std::size_t(cells[from])];
+        if (own.gatheringSince) {
+            wasAsleep = true;
+            own = granular_->caughtUp(own, context.step - 1);
+            ++log.sleepsEnded;
+        }
+    }
     // The grain's own bit comes with the queue (StripLog::Cell); the grain below is in the same
     // column of the layer below: the same bit, one layer's words back.
     const MotionHints hints{mayBeMoving, (motion[word - strip.layerWords].inMotion & bit) != 0};
+    // A grain that came to rest on a sleeping gatherer or rider (in the last step; in this one it
+    // rides it, reading its state caught up) wakes it for the next step, as the grain carrying
+    // the column must carry this one too. The layer below has had its turn. (Woken here, where
+    // the state below is read anyway, rather than by every move, which would read the cell under
+    // the one it entered.)
+    if (hints.below) {
+        const CellValue below = cells[from - strip.grid.layerSize()];
+        if (below >= 0 && strip.falls[std::size_t(below)].gatheringSince) {
+            words[word - strip.layerWords].awake |= bit;
+            words[word - strip.layerWords].occupied |= bit;
+            strip.rowAwake[row - std::uint32_t(strip.sizeZ)] = 1;
+        }
+    }
     const GranularOutcome outcome = granular_->visit(strip.grid, empty_, strip.falls, strip.ditherKey, strip.stepKey, strip.stream,
-                                                     bottomIsOutlet_, x, y, z, from, hints);
+                                                     bottomIsOutlet_, x, y, z, from, context.step, hints);
     // The bit follows the grain's state: cleared where it was, set where it is when in motion.
     if (outcome.kind == GranularOutcome::Moved) {
         if (hints.grain) motion[word].inMotion &= ~bit;
@@ -561,10 +613,18 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
         motion[word].inMotion ^= bit;
     }
     if (outcome.kind == GranularOutcome::Waiting || outcome.stopped) {
-        if (outcome.kind == GranularOutcome::Waiting) { // in motion: visited again next step
-            words[word].awake |= bit;
-            words[word].occupied |= bit;
-            strip.rowAwake[row] = 1;
+        std::uint64_t asleepUntil = 0; // the step its timer wakes it, when it sleeps
+        if (outcome.kind == GranularOutcome::Waiting) { // in motion: visited again next step, or asleep
+            asleepUntil = fallAsleepGathering(context, strip, log, x, row, from);
+            if (asleepUntil) {
+                // The wakes of cells emptied nearby pass it by: nothing they change is read by
+                // its visit. Its timer, or a grain arriving on it, sets the bit again.
+                words[word].occupied &= ~bit;
+            } else {
+                words[word].occupied |= bit;
+                words[word].awake |= bit;
+                strip.rowAwake[row] = 1;
+            }
         }
         // A grain that rests on this one follows it while it moves (granular_rules.hpp): its
         // speed changed without a cell emptying, so the grain above must look again. While this
@@ -574,15 +634,16 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
         // cache miss on the cell (an EMPTY cell woken is visited and left; 7 in 10 grains in
         // motion, most in the stream, carry none: asking the bit before walking the column took
         // 2.5% off the granular step).
-        if (y + 1 < strip.sizeY && (words[word + strip.layerWords].occupied & bit)) {
+        if (y + 1 < strip.sizeY && ((words[word + strip.layerWords].occupied & bit) || wasAsleep)) {
             const std::uint32_t speed =
                 outcome.kind == GranularOutcome::Waiting ? strip.falls[std::size_t(cells[from])].speed : 0;
             if (speed > 0) {
-                const int carried = carryRiders(strip, x, y, z, from, speed);
+                const int carried = carryRiders(context, strip, log, x, y, z, from, speed, asleepUntil);
                 log.carried += carried;
                 log.speedChanges += carried; // each one's speed or fraction changed
             } else {
                 words[word + strip.layerWords].awake |= bit;
+                words[word + strip.layerWords].occupied |= bit; // a rider that slept had it cleared
                 strip.rowAwake[row + std::uint32_t(strip.sizeZ)] = 1;
             }
         }
@@ -598,9 +659,28 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
     // The cell it left is free: the layers above may use it in this step; its own layer in the
     // next (endGranularTurn).
     log.left.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
+    if (wasAsleep && y + 1 < strip.sizeY) wakeAt(x, y + 1, z); // a rider that slept on it, unseen by the wakes
     wakeLayersAbove(strip.grid, x, y, z);
     wakeOutletAbove(x, y, z);
     return GranularOutcome::Moved;
+}
+
+// After a visit in which the grain in cell `from` (x, y, z) fell without reaching its next cell:
+// puts it to sleep until the step its fall reaches that cell, when the cell below is EMPTY (the
+// header says why nothing else can change meanwhile). The column resting on it sleeps with it
+// (carryRiders). Not in a full sweep, which visits every cell. Returns the step its timer wakes
+// it, or 0 when it stays awake.
+inline std::uint64_t GridSweep::fallAsleepGathering(const SweepContext& context, const GranularStrip& strip, StripLog& log,
+                                                    int x, std::uint32_t row, std::uint32_t from) {
+    if (!context.sleeping) return 0;
+    if (strip.cells[from - strip.grid.layerSize()] != kEmpty) return 0; // rides a moving grain
+    FallState& own = strip.falls[std::size_t(strip.cells[from])];
+    const int gathering = granular_->stepsOnlyGathering(own, kLongestSleep);
+    if (gathering == 0) return 0; // it moves in the next step
+    own.gatheringSince = std::uint16_t(kGatheringAsleep | (context.step & kAsleepStepMask));
+    const std::uint64_t wakeStep = context.step + std::uint64_t(gathering) + 1;
+    log.sleepers.push_back({{row, std::uint32_t(x)}, wakeStep});
+    return wakeStep;
 }
 
 // The grains resting one on another above the grain in cell `from` of (x, y, z), which stays
@@ -612,7 +692,12 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
 // its layer's turn skips it and keeps it awake for the next step, as its own visit would have.
 // The column ends at the first cell without a grain, or at a grain whose ride changed nothing
 // (it sleeps, as after its own visit). Returns the grains visited.
-int GridSweep::carryRiders(const GranularStrip& strip, int x, int y, int z, std::uint32_t from, std::uint32_t speed) {
+// asleepUntil: the grain below them sleeps until that step (fallAsleepGathering), and they sleep
+// with it: each is marked (kRidingAsleep) and gets a timer for that step instead of staying
+// awake, since then the grain below moves on and they follow in their own turns. Gravity is never
+// 0 (validatePhysics), so every rider's speed changes every step and the whole column rides.
+int GridSweep::carryRiders(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x, int y, int z,
+                           std::uint32_t from, std::uint32_t speed, std::uint64_t asleepUntil) {
     const std::uint32_t layer = strip.grid.layerSize();
     const std::uint64_t bit = std::uint64_t{1} << (x & 63);
     // The column is read a batch of cells at a time and each rider's fall state asked for before
@@ -636,12 +721,25 @@ int GridSweep::carryRiders(const GranularStrip& strip, int x, int y, int z, std:
             const std::size_t word = std::size_t(row) * std::size_t(rowWords_) + std::size_t(x >> 6);
             MotionWord& motion = strip.motion[word];
             const bool mayBeMoving = (motion.inMotion & bit) != 0;
-            if (granular_->ride(strip.falls[std::size_t(riders[std::size_t(i)])], speed, mayBeMoving,
-                                above > 1 || !bottomIsOutlet_) == GranularOutcome::Riding)
+            FallState& state = strip.falls[std::size_t(riders[std::size_t(i)])];
+            const bool wasAsleep = mayBeMoving && state.gatheringSince != 0;
+            if (wasAsleep) { // it slept with the grain below: brought up to the step before
+                state = granular_->caughtUp(state, context.step - 1);
+                ++log.sleepsEnded;
+            }
+            if (granular_->ride(state, speed, mayBeMoving, above > 1 || !bottomIsOutlet_) == GranularOutcome::Riding)
                 return carried; // it sleeps, as after its own visit
             motion.inMotion |= bit;
-            motion.carriedEarly |= bit;
-            strip.rowAwake[row] = 1;
+            if (asleepUntil) {
+                state.gatheringSince = std::uint16_t(kGatheringAsleep | kRidingAsleep | (context.step & kAsleepStepMask));
+                strip.words[word].awake &= ~bit; // not kept awake: its timer wakes it
+                strip.words[word].occupied &= ~bit;
+                log.sleepers.push_back({{row, std::uint32_t(x)}, asleepUntil});
+            } else {
+                motion.carriedEarly |= bit;
+                strip.rowAwake[row] = 1;
+                if (wasAsleep) strip.words[word].occupied |= bit;
+            }
             ++carried;
         }
         if (count < kBatch) break; // the column ends at a cell without a grain (or the grid's top)
@@ -864,7 +962,20 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
         result.moves += t.moves;
         result.visited += t.visited;
     };
-
+    [[maybe_unused]] const std::int64_t asleepBefore = gatherersAsleep_;
+    if constexpr (Granular) {
+        // The sleepers whose fall reaches a cell in this step (or whose longest sleep ends), woken
+        // before any visit: a column that falls asleep again in this step puts its riders back to
+        // sleep after this.
+        std::vector<StripLog::SleeperCell>& due = timers_[std::size_t(context.step % kTimerSlots)];
+        for (const StripLog::SleeperCell& cell : due) {
+            RowWord& word = words_[std::size_t(cell.row) * std::size_t(rowWords_) + std::size_t(cell.x >> 6)];
+            word.awake |= std::uint64_t{1} << (cell.x & 63);
+            word.occupied |= std::uint64_t{1} << (cell.x & 63);
+            rowAwake_[cell.row] = 1;
+        }
+        due.clear();
+    }
     for (int y = 1; y < size.y; ++y) {
         const int awakeRows = context.sleeping ? awakeRowsInLayer(y) : size.z;
         if (awakeRows == 0) continue;
@@ -901,11 +1012,21 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
     }
     if constexpr (Granular) {
         wakeAroundCellsLeftEarlier(context.grid);
+        // Each gatherer or rider that slept through this step changed its fall without a visit.
+        std::int64_t ended = 0;
         speedChangesLastSweep_ = 0;
         for (StripLog& log : logs_) {
             speedChangesLastSweep_ += log.speedChanges;
             log.speedChanges = 0;
+            ended += log.sleepsEnded;
+            log.sleepsEnded = 0;
+            for (const StripLog::Sleeper& sleeper : log.sleepers)
+                timers_[std::size_t(sleeper.wakeStep % kTimerSlots)].push_back(sleeper.cell);
+            gatherersAsleep_ += std::int64_t(log.sleepers.size());
+            log.sleepers.clear();
         }
+        speedChangesLastSweep_ += asleepBefore - ended;
+        gatherersAsleep_ -= ended;
     }
     for (const SweepResult& t : stripTotals) add(t);
     return result;

@@ -15,6 +15,18 @@
 // A granular visit of a grain that stays where it is, moving, also visits the grains that ride
 // on it in the column above (carryRiders), in the same strip's rows; their layers' turns then
 // skip them.
+// A granular grain falling through an EMPTY cell short of its next cell (a gatherer), and the
+// column riding on it, sleep until the step its fall reaches that cell (a timer wakes them),
+// their states stored as of the step they fell asleep (FallState::gatheringSince). Each visit
+// skipped would only have added gravity to them, and nothing else they read can change: the
+// cell below the gatherer stays EMPTY, since a grain falls into it only through the gatherer's
+// cell and slides into it only along a path that ends at the gatherer's cell, taken since before
+// the turn began (granular_rules.hpp); a rider's cell below holds the grain under it until the
+// timer. What can change is a grain arriving on top (a fall, a slide, the neck) or an edit next
+// to them: the grain on top wakes the one below it at its next visit, an edit at once
+// (grainEntered, cellBlocked, wakeAroundEmptied), and whoever reads a state meanwhile (a grain
+// landing on it, a save) reads it caught up (GranularRules::caughtUp). Their occupied bits are
+// cleared while they sleep, so the wakes of cells emptied nearby pass them by.
 
 #include "empty_cells.hpp"
 #include "granular_rules.hpp"
@@ -57,6 +69,19 @@ struct StripLog {
         std::uint32_t z;
     };
     std::vector<Cell> awake;
+    /// Granular: where a gatherer or rider sleeps, as the awake bits find it (row: y * sizeZ + z).
+    struct SleeperCell {
+        std::uint32_t row, x;
+    };
+    /// Granular: gatherers and riders that fell asleep in this sweep, and the step each one's
+    /// timer wakes it.
+    struct Sleeper {
+        SleeperCell cell;
+        std::uint64_t wakeStep;
+    };
+    std::vector<Sleeper> sleepers;
+    /// Granular: the sleeping gatherers and riders this sweep visited or carried (they wake so).
+    std::int64_t sleepsEnded = 0;
     /// Granular: grains visited while carried by the grain below (carryRiders), since the
     /// strip loop that swept this strip last counted them.
     std::int64_t carried = 0;
@@ -122,7 +147,10 @@ public:
     /// when (x, y, z) lies in the top layer. Every way a cell empties goes through here (R5).
     void wakeAroundEmptied(const CellGrid& grid, int x, int y, int z);
     void wakeEveryGrain(const CellGrid& grid); ///< after edits that bypass the rules
-    void clear();                               ///< nothing awake
+    void clear();                               ///< nothing awake, no gatherer asleep
+    /// Granular: a sleeping gatherer or rider (FallState::gatheringSince) left the grid from
+    /// outside a step.
+    void sleepingGathererRemoved() { --gatherersAsleep_; }
 
     /// When set, a cell of this grid's top layer that empties wakes the cell of `above`'s
     /// layer 0 at the same x and z (the lower grid wakes the upper grid's outlet row).
@@ -192,7 +220,10 @@ private:
     GranularOutcome::Kind visitGranular(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x,
                                         int y, int z, std::uint32_t row, std::uint32_t rowStart, bool mayBeMoving, bool& stopped);
     void record(const SweepContext& context, StripLog& log, const GrainMove& move);
-    int carryRiders(const GranularStrip& strip, int x, int y, int z, std::uint32_t from, std::uint32_t speed);
+    std::uint64_t fallAsleepGathering(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x,
+                                      std::uint32_t row, std::uint32_t from);
+    int carryRiders(const SweepContext& context, const GranularStrip& strip, StripLog& log, int x, int y, int z,
+                    std::uint32_t from, std::uint32_t speed, std::uint64_t asleepUntil);
     SweepResult sweepGranularStrips(const SweepContext& context, int y, std::span<const int> strips);
     void clearRow(std::uint32_t row);
     Int3 coordinateOf(std::uint32_t cell) const; // as CellGrid::coordinate, for this sweep's grid
@@ -263,6 +294,15 @@ private:
     std::int64_t speedChangesLastSweep_ = 0;
     MoveFeed feed_;
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
+    // Granular: the timers of the sleeping gatherers and riders, the cells to wake at step s in
+    // [s % kTimerSlots], woken as the sweep of step s begins, before any visit (a sleep lasts at
+    // most kLongestSleep steps; a longer fall's gatherer wakes early and sleeps again); and how
+    // many sleep, each of whose fall changes every step (speedChangesLastSweep).
+    static constexpr int kTimerSlots = 64, kLongestSleep = kTimerSlots - 1;
+    std::array<std::vector<StripLog::SleeperCell>, kTimerSlots> timers_;
+    std::int64_t gatherersAsleep_ = 0;
+    void forgetSleepingGatherers();
+    void wakeIfInMotion(int x, int y, int z); // an edit next to a grain that may sleep in its fall
 };
 
 } // namespace sandcore

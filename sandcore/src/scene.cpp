@@ -395,7 +395,16 @@ void Scene::markEverythingAwake() {
 bool Scene::sweepsMatchCells() const { return upperSweep_->emptyCellsMatch(upper_) && lowerSweep_->emptyCellsMatch(lower_); }
 
 SceneSnapshot Scene::snapshot() const {
-    return {upper_, lower_, grains_, nextIdentity_, counters_, upperObstacles_, lowerObstacles_, flipped_};
+    SceneSnapshot saved{upper_, lower_, grains_, nextIdentity_, counters_, upperObstacles_, lowerObstacles_, flipped_};
+    // Every state as after the last step, so a file or an undo holds no sweep's bookkeeping.
+    if (granular_)
+        for (std::uint32_t id = 0; id < saved.grains.size(); ++id) saved.grains.fallOf(id) = fallOf(id);
+    return saved;
+}
+
+FallState Scene::fallOf(std::uint32_t id) const {
+    const FallState& stored = grains_.fallOf(id);
+    return granular_ ? granular_->caughtUp(stored, counters_.stepsDone) : stored;
 }
 
 void Scene::restore(const SceneSnapshot& saved) {
@@ -459,6 +468,7 @@ bool Scene::removeGrain(GridLevel level, std::uint32_t cell) {
     if (cell >= grid.cellCount() || grid[cell] < 0) return false;
     const std::uint32_t id = std::uint32_t(grid[cell]);
     grid[cell] = kEmpty;
+    if (grains_.fallOf(id).gatheringSince) sweepOf(level).sleepingGathererRemoved();
     const std::uint32_t moved = grains_.removeBySwap(id);
     if (moved != id) gridRef(grains_.level[id])[grains_.place[id].cell] = CellValue(id);
     // The last step's list follows the renumbering: the removed grain leaves it, the last takes its id.

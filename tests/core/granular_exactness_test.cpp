@@ -50,7 +50,7 @@ void requireSameEveryStep(Scene& a, Scene& b, int steps, bool pour = false) {
         // The hash covers the cells: a fall state that differs shows only once it moves a grain.
         REQUIRE(a.grainCount() == b.grainCount());
         for (std::uint32_t id = 0; id < std::uint32_t(a.grainCount()); ++id)
-            REQUIRE_MESSAGE(a.grains().fallOf(id) == b.grains().fallOf(id), "grain " << id << " after step " << i + 1);
+            REQUIRE_MESSAGE(a.fallOf(id) == b.fallOf(id), "grain " << id << " after step " << i + 1);
         // Both read their windows from the EMPTY cells their sweeps keep: a missed update would
         // agree with itself, so the bits are compared with the grids too.
         REQUIRE(a.sweepsMatchCells());

@@ -101,14 +101,14 @@ TEST_CASE("gravity: grains resting on a falling grain ride it, each taking its s
             REQUIRE(++step < 100);
             if (!sleeping) CHECK(scene.counters().visitedLastStep == everyCell);
             if (lowerY(scene, column[0]) != kBottom) break;
-            const FallState lowest = scene.grains().fallOf(column[0]);
+            const FallState lowest = scene.fallOf(column[0]);
             CHECK(lowest.speed == std::uint32_t(step) * gravity);
             CHECK(scene.counters().speedChangesLastStep == kGrains); // the lowest and every rider
             for (int i = 1; i < kGrains; ++i) {
                 CAPTURE(i);
                 fraction[std::size_t(i)] = std::min<std::uint32_t>(fraction[std::size_t(i)] + lowest.speed + gravity / 2, 65535);
                 CHECK(lowerY(scene, column[std::size_t(i)]) == kBottom + i);
-                CHECK(scene.grains().fallOf(column[std::size_t(i)]) == FallState{lowest.speed, std::uint16_t(fraction[std::size_t(i)])});
+                CHECK(scene.fallOf(column[std::size_t(i)]) == FallState{lowest.speed, std::uint16_t(fraction[std::size_t(i)])});
             }
         }
         CHECK(step == 7); // the lowest grain's first cell: g n^2 / 2 >= 1 at n = 7

@@ -292,7 +292,7 @@ TEST_CASE("state file: a granular scene keeps its physics and falling speeds thr
     LoadedState loaded = loadState(folder / "granular.sand");
     CHECK(loaded.scene.settings().physics == step.physics);
     for (std::uint32_t id = 0; id < saved.grains().size(); ++id)
-        REQUIRE(loaded.scene.grains().fallOf(id) == saved.grains().fallOf(id));
+        REQUIRE(loaded.scene.fallOf(id) == saved.fallOf(id));
     for (int i = 0; i < 60; ++i) {
         straight.step();
         loaded.scene.step();
