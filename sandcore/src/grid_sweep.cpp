@@ -355,7 +355,8 @@ void GridSweep::wakeLayersAbove(const CellGrid& grid, int x, int y, int z) {
     for (int layer = y + 1; layer <= top; ++layer) {
         if (!empty_.isEmpty(x, layer, z)) { // the kept bits: a column's cells lie a layer apart
             // A grain right above may fall. The cell holds a grain or the vessel, and its occupied
-            // bit tells which without reading it: never clear under a grain, never set on the
+            // bit tells which without reading it: never clear under a grain (but in a column asleep
+            // in its fall, whose woken grain wakes the one above it itself), never set on the
             // vessel but where an edit left it stale (a cell woken so is visited and left).
             if (layer == y + 1) wakeIfOccupied(x, layer, z);
             break;
@@ -630,10 +631,11 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
         // speed changed without a cell emptying, so the grain above must look again. While this
         // one moves, the grains resting on it ride (carryRiders); when it stops (or gathers at a
         // speed of 0, without gravity), the grain above is woken. The occupied bit says whether
-        // the cell above may hold one: it is never clear under a grain, and reading it spares a
-        // cache miss on the cell (an EMPTY cell woken is visited and left; 7 in 10 grains in
-        // motion, most in the stream, carry none: asking the bit before walking the column took
-        // 2.5% off the granular step).
+        // the cell above may hold one: it is never clear under a grain (but in a column that
+        // slept in its fall, hence the look above whenever this grain slept), and reading it
+        // spares a cache miss on the cell (an EMPTY cell woken is visited and left; 7 in 10
+        // grains in motion, most in the stream, carry none: asking the bit before walking the
+        // column took 2.5% off the granular step).
         if (y + 1 < strip.sizeY && ((words[word + strip.layerWords].occupied & bit) || wasAsleep)) {
             const std::uint32_t speed =
                 outcome.kind == GranularOutcome::Waiting ? strip.falls[std::size_t(cells[from])].speed : 0;

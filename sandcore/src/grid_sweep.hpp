@@ -295,9 +295,10 @@ private:
     MoveFeed feed_;
     std::vector<std::uint8_t> rowAwake_; // 1 when a row may hold awake bits
     // Granular: the timers of the sleeping gatherers and riders, the cells to wake at step s in
-    // [s % kTimerSlots], woken as the sweep of step s begins, before any visit (a sleep lasts at
-    // most kLongestSleep steps; a longer fall's gatherer wakes early and sleeps again); and how
-    // many sleep, each of whose fall changes every step (speedChangesLastSweep).
+    // [s % kTimerSlots], woken as the sweep of step s begins, before any visit; and how many
+    // sleep, each of whose fall changes every step (speedChangesLastSweep). A sleep lasts at most
+    // 44 steps (a fall from rest at the smallest gravity, 0.001); stepsOnlyGathering stops at
+    // kLongestSleep all the same, so the ring could not wrap under a longer one.
     static constexpr int kTimerSlots = 64, kLongestSleep = kTimerSlots - 1;
     std::array<std::vector<StripLog::SleeperCell>, kTimerSlots> timers_;
     std::int64_t gatherersAsleep_ = 0;

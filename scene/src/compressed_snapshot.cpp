@@ -42,7 +42,7 @@ void rebuildGrid(sandcore::CellGrid& grid, const std::vector<CellBox>& obstacles
 
 CompressedSnapshot::CompressedSnapshot(const sandcore::Scene& scene) {
     ByteWriter out;
-    writeGrains(out, scene.grains());
+    writeGrains(out, scene);
     out.put<std::uint32_t>(scene.nextIdentity());
     out.put(scene.counters());
     writeBoxes(out, scene.obstacles(GridLevel::Upper));

@@ -77,7 +77,7 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
         writeSize(out, scene.grid(level).size());
         out.putArray(scene.grid(level).cells());
     }
-    writeGrains(out, scene.grains());
+    writeGrains(out, scene);
     const sandcore::SceneCounters& c = scene.counters();
     out.put<std::uint32_t>(scene.nextIdentity());
     out.put<std::int64_t>(c.grainsUpper);
@@ -89,7 +89,8 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
     writeBoxes(out, scene.obstacles(GridLevel::Lower));
 }
 
-void writeGrains(ByteWriter& out, const sandcore::GrainStore& g) {
+void writeGrains(ByteWriter& out, const sandcore::Scene& scene) {
+    const sandcore::GrainStore& g = scene.grains();
     // The file keeps one array per field (the format before places and falls shared records):
     // each field of a record is gathered into an array of its own.
     auto putField = [&](auto field) {
@@ -103,8 +104,8 @@ void writeGrains(ByteWriter& out, const sandcore::GrainStore& g) {
     putField([&](std::uint32_t id) { return g.place[id].movedAtStep; });
     out.putArray(g.identity);
     out.putArray(g.color);
-    putField([&](std::uint32_t id) { return g.fallOf(id).speed; });
-    putField([&](std::uint32_t id) { return g.fallOf(id).fraction; });
+    putField([&](std::uint32_t id) { return scene.fallOf(id).speed; });
+    putField([&](std::uint32_t id) { return scene.fallOf(id).fraction; });
 }
 
 sandcore::GrainStore readGrains(ByteReader& in) {

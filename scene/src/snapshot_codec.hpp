@@ -11,8 +11,10 @@ namespace sandglass {
 /// from the scene without copying its grids first.
 void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene);
 
-/// Every per-grain array of a GrainStore, in one order; shared by state files and undo snapshots.
-void writeGrains(ByteWriter& out, const sandcore::GrainStore& grains);
+/// Every per-grain array of the scene's GrainStore, in one order; shared by state files and undo
+/// snapshots. The fall states are written as Scene::fallOf reads them, up to date (a sleeping
+/// fall keeps its state in the store as of an earlier step).
+void writeGrains(ByteWriter& out, const sandcore::Scene& scene);
 /// Reads what writeGrains wrote; throws FormatError when the data ends early or the arrays disagree.
 sandcore::GrainStore readGrains(ByteReader& in);
 

@@ -87,7 +87,8 @@ public:
     const CellGrid& grid(GridLevel level) const { return level == GridLevel::Upper ? upper_ : lower_; } ///< a grid
     const GrainStore& grains() const { return grains_; } ///< per-grain records for drawing
     /// Grain id's fall state after the last step (granular; classic keeps every grain at rest).
-    /// GrainStore::fallOf may hold a sleeping gatherer's state as of an earlier step.
+    /// GrainStore::fallOf may hold the state of a grain asleep in its fall (a gatherer or a grain
+    /// riding one) as of an earlier step.
     FallState fallOf(std::uint32_t id) const;
     const SceneCounters& counters() const { return counters_; } ///< R14
     /// The grains the last step moved (transitions included), each once with where it is now (its
