@@ -121,17 +121,14 @@ public:
     FallState caughtUp(const FallState& state, std::uint64_t step) const {
         if (!(state.gatheringSince & kGatheringAsleep)) return state;
         const std::uint32_t n = (std::uint32_t(step) - state.gatheringSince) & kAsleepStepMask;
-        const std::uint32_t speed = state.speed + n * gravity_;
-        if (state.gatheringSince & kRidingAsleep)
-            return {speed, std::uint16_t(std::min<std::uint32_t>(state.fraction + n * state.speed + n * (gravity_ / 2) +
-                                                                     gravity_ * (n * (n + 1) / 2),
-                                                                 kOneCell - 1)),
-                    0};
-        return {speed, std::uint16_t(state.fraction + n * state.speed + n * (gravity_ / 2) + gravity_ * (n * (n - 1) / 2)), 0};
+        // The speeds the gatherer started the n steps with: v, v + g, ..., v + (n - 1) g.
+        const std::uint32_t gathered = state.fraction + n * state.speed + n * (gravity_ / 2) + gravity_ * (n * (n - 1) / 2);
+        if (!(state.gatheringSince & kRidingAsleep)) return {state.speed + n * gravity_, std::uint16_t(gathered), 0};
+        // A rider takes each step's new speed, g more than the gatherer started it with.
+        return {state.speed + n * gravity_, std::uint16_t(std::min<std::uint32_t>(gathered + n * gravity_, kOneCell - 1)), 0};
     }
-    /// How many of the next steps, at most `limit`, a grain falling freely with this state (at
-    /// rest in no way: below it an EMPTY cell) only gathers, before the step whose travel reaches
-    /// its next cell.
+    /// How many of the next steps, at most `limit`, a grain falling with this state through an
+    /// EMPTY cell only gathers, before the step whose travel reaches that cell.
     int stepsOnlyGathering(const FallState& state, int limit) const {
         std::uint32_t speed = state.speed, fraction = state.fraction;
         int steps = 0;
@@ -296,7 +293,7 @@ inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits&
     // Most visited grains rest on grains at rest: the hints spare them both states (a cache miss
     // each, by id).
     const auto id = std::size_t(grain);
-    // The grain below may be a gatherer that sleeps (it came to rest on it in the last step).
+    // The grain below may be asleep in its fall (this one came to rest on it in the last step).
     const std::uint32_t speedBelow = below >= 0 && hints.below ? caughtUp(falls[std::size_t(below)], step).speed : 0;
     if (speedBelow > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress

@@ -54,7 +54,7 @@ GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
 
 void GridSweep::setGranular(const GranularRules* granular) {
     granular_ = granular;
-    forgetSleepingGatherers(); // the scene stops every fall when the rules change
+    forgetSleepingFalls(); // the scene stops every fall when the rules change
     motion_.assign(granular ? words_.size() : 0, MotionWord{});
     if (granular) empty_.resize(size_); // every cell taken until readEmptyCells
     layout_ = granular ? LayoutBits(size_) : LayoutBits();
@@ -91,13 +91,13 @@ void GridSweep::wakeIfInMotion(int x, int y, int z) {
     if (motion_[row * std::size_t(rowWords_) + std::size_t(x >> 6)].inMotion >> (x & 63) & 1) wakeAt(x, y, z);
 }
 
-void GridSweep::forgetSleepingGatherers() {
+void GridSweep::forgetSleepingFalls() {
     for (std::vector<StripLog::SleeperCell>& cells : timers_) cells.clear();
     for (StripLog& log : logs_) {
         log.sleepers.clear();
         log.sleepsEnded = 0;
     }
-    gatherersAsleep_ = 0;
+    fallsAsleep_ = 0;
 }
 
 Int3 GridSweep::coordinateOf(std::uint32_t cell) const {
@@ -463,7 +463,7 @@ void GridSweep::clear() {
         log.carried = 0;
     }
     std::fill(rowAwake_.begin(), rowAwake_.end(), 0);
-    forgetSleepingGatherers(); // the caller sets every fall state (restore, reset)
+    forgetSleepingFalls(); // the caller sets every fall state (restore, reset)
 }
 
 std::uint64_t GridSweep::wholeWord(int w) const {
@@ -964,7 +964,7 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
         result.moves += t.moves;
         result.visited += t.visited;
     };
-    [[maybe_unused]] const std::int64_t asleepBefore = gatherersAsleep_;
+    [[maybe_unused]] const std::int64_t asleepBefore = fallsAsleep_;
     if constexpr (Granular) {
         // The sleepers whose fall reaches a cell in this step (or whose longest sleep ends), woken
         // before any visit: a column that falls asleep again in this step puts its riders back to
@@ -1024,11 +1024,11 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
             log.sleepsEnded = 0;
             for (const StripLog::Sleeper& sleeper : log.sleepers)
                 timers_[std::size_t(sleeper.wakeStep % kTimerSlots)].push_back(sleeper.cell);
-            gatherersAsleep_ += std::int64_t(log.sleepers.size());
+            fallsAsleep_ += std::int64_t(log.sleepers.size());
             log.sleepers.clear();
         }
         speedChangesLastSweep_ += asleepBefore - ended;
-        gatherersAsleep_ -= ended;
+        fallsAsleep_ -= ended;
     }
     for (const SweepResult& t : stripTotals) add(t);
     return result;

@@ -150,7 +150,7 @@ public:
     void clear();                               ///< nothing awake, no gatherer asleep
     /// Granular: a sleeping gatherer or rider (FallState::gatheringSince) left the grid from
     /// outside a step.
-    void sleepingGathererRemoved() { --gatherersAsleep_; }
+    void sleepingFallRemoved() { --fallsAsleep_; }
 
     /// When set, a cell of this grid's top layer that empties wakes the cell of `above`'s
     /// layer 0 at the same x and z (the lower grid wakes the upper grid's outlet row).
@@ -301,8 +301,8 @@ private:
     // kLongestSleep all the same, so the ring could not wrap under a longer one.
     static constexpr int kTimerSlots = 64, kLongestSleep = kTimerSlots - 1;
     std::array<std::vector<StripLog::SleeperCell>, kTimerSlots> timers_;
-    std::int64_t gatherersAsleep_ = 0;
-    void forgetSleepingGatherers();
+    std::int64_t fallsAsleep_ = 0;
+    void forgetSleepingFalls();
     void wakeIfInMotion(int x, int y, int z); // an edit next to a grain that may sleep in its fall
 };
 

@@ -468,7 +468,7 @@ bool Scene::removeGrain(GridLevel level, std::uint32_t cell) {
     if (cell >= grid.cellCount() || grid[cell] < 0) return false;
     const std::uint32_t id = std::uint32_t(grid[cell]);
     grid[cell] = kEmpty;
-    if (grains_.fallOf(id).gatheringSince) sweepOf(level).sleepingGathererRemoved();
+    if (grains_.fallOf(id).gatheringSince) sweepOf(level).sleepingFallRemoved();
     const std::uint32_t moved = grains_.removeBySwap(id);
     if (moved != id) gridRef(grains_.level[id])[grains_.place[id].cell] = CellValue(id);
     // The last step's list follows the renumbering: the removed grain leaves it, the last takes its id.
