@@ -206,10 +206,10 @@ private:
     void listTurnStrips(int y, bool sleeping); // granular: turnStrips_ for layer y
     template <bool Granular> void wakeAroundEmptiedBy(const CellGrid& grid, int x, int y, int z);
     void wakeOutletAbove(int x, int y, int z); // a top-layer cell emptied: the grid above's outlet cell
-    // Granular, at the end of layer y's turn: the cells left in it become EMPTY in the kept bits,
-    // and the own-layer wakes of the cells left in the turn before, still EMPTY, are done.
-    void endGranularTurn(const CellGrid& grid, int y);
-    void wakeAroundCellsLeftEarlier(const CellGrid& grid); // those own-layer wakes
+    // Granular, at the end of layer y's turn: the cells left in it become EMPTY in the kept bits;
+    // their own-layer wakes wait for the sweep's end (wakeAroundCellsLeftEarlier).
+    void endGranularTurn(int y);
+    void wakeAroundCellsLeftEarlier(const CellGrid& grid); // those own-layer wakes, of cells still EMPTY
     // classic rules; true when a grain moved
     bool visitCell(const SweepContext& context, StripLog& log, int x, int y, int z);
     struct GranularStrip;
@@ -232,6 +232,7 @@ private:
     void wakeSpan(std::size_t row, int x0, int x1);
     void wakeIfOccupied(int x, int y, int z); // wakeAt, but only when the cell's occupied bit is set
     void wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove);
+    void wakeSleepingGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove, std::uint64_t sleeping); // its rest
     // Where a granular window's 7 columns around x lie in a row's words of bits.
     struct WindowColumns {
         int word, offset, dropped; // first word, the bit the window starts at in it, columns left of 0
@@ -239,6 +240,7 @@ private:
     };
     WindowColumns windowColumnsAround(int x) const;
     std::uint64_t sleepingGrainsAround(int x, int y, int z) const;
+    std::uint64_t sleepingGrainsAroundSide(int x, int y, int z) const; // near the grid's sides
     void wakeWindow(int x, int y, int z, std::uint64_t woken);
     // Granular: the cell under cell `from` (not in layer 0) is INVALID, read from the kept bits.
     bool liesOnVessel(const CellGrid& grid, std::uint32_t from) const { return !layout_.open(from - grid.layerSize()); }
