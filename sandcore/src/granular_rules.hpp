@@ -202,11 +202,25 @@ public:
     /// ditherKey: ditherKey(seed). Inline: the wakes ask it for many grains, most of which it
     /// answers from the threshold alone.
     bool needsDepth(std::uint64_t ditherKey, std::uint64_t stream, std::uint32_t from, int k, int depth) const {
-        const std::uint32_t threshold = offsets_[std::size_t(k)].thresholdQ8;
-        const int whole = int(threshold >> 8);
+        const int whole = int(offsets_[std::size_t(k)].thresholdQ8 >> 8);
         if (whole != depth - 1) return whole >= depth;
+        return carries(ditherKey, stream, from, k);
+    }
+    /// True when the dither of slide k of the grain in cell `from` carries its threshold past the
+    /// whole cells: it needs the column one cell deeper than the threshold's whole part.
+    bool carries(std::uint64_t ditherKey, std::uint64_t stream, std::uint32_t from, int k) const {
         const auto dither = (ditherGroup(ditherCellHash(ditherKey, stream, from), k / 8) >> (k % 8 * 8)) & 0xffu;
         return dither > restComplement_[std::size_t(k)];
+    }
+    /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
+    /// column has a threshold of `whole` whole cells (and a fraction): so needsDepth(d) is true
+    /// for them when d <= whole, false when d > whole + 1, and their dither tells at d = whole + 1.
+    std::uint64_t towardsCentreWithWhole(int whole) const {
+        return whole >= 0 && whole < int(towardsCentreByWhole_.size()) ? towardsCentreByWhole_[std::size_t(whole)] : 0;
+    }
+    /// The same, with a threshold of at least `whole` whole cells.
+    std::uint64_t towardsCentreWithWholeAtLeast(int whole) const {
+        return whole < int(towardsCentreAtLeast_.size()) ? towardsCentreAtLeast_[std::size_t(std::max(whole, 0))] : 0;
     }
     /// The slide (index into offset()) to the column (dx, dz) away, both within kGranularReach.
     static constexpr int offsetIndex(int dx, int dz) {
@@ -258,6 +272,7 @@ private:
     int maxDrop_ = 1;
     std::uint32_t gravity_ = 0;
     std::vector<std::uint64_t> wakeMasks_;
+    std::vector<std::uint64_t> towardsCentreByWhole_, towardsCentreAtLeast_; // towardsCentreWithWhole(AtLeast)
     // towardsBlockedBy_[r][taken]: of the grains around a column c (window bits), those whose slide
     // into c's column crosses, at their own level, a taken cell of window row r around c.
     RowBlockTable towardsBlockedBy_{};

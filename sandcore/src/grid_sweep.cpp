@@ -331,21 +331,36 @@ std::uint64_t GridSweep::deepEnoughForSlidesInto(const CellGrid& grid, std::uint
     const int under = y - layersAbove - 1;
     const bool deeperEmpty = under >= 0 && empty_.isEmpty(x, under, z);
     if (layersAbove == 1 && deeperEmpty) return woken;
-    constexpr int reach = kGranularReach;
-    for (std::uint64_t grains = woken; grains; grains &= grains - 1) {
-        const int bit = __builtin_ctzll(grains);
-        const int dx = bit % kGranularWindow - reach, dz = bit / kGranularWindow - reach; // the grain, from (x, z)
-        const std::uint32_t from = grid.index(x + dx, y, z + dz);
-        const int slide = GranularRules::offsetIndex(-dx, -dz);
-        // It gains when its need reaches the emptied cell and, unless the cell under it is EMPTY,
-        // ends there; on the vessel a grain needs one cell, so only the target can matter to it.
-        const bool needsMore = granular_->needsDepth(ditherKey_, stream(), from, slide, layersAbove + 1);
-        const bool gains = layersAbove >= 2 ? granular_->needsDepth(ditherKey_, stream(), from, slide, layersAbove) &&
-                                                  (deeperEmpty || !needsMore)
-                                            : !needsMore || liesOnVessel(grid, from);
-        if (!gains) woken &= ~(std::uint64_t{1} << bit);
+    // By the whole cells w of each grain's threshold for its slide into the column (its need is w,
+    // or w + 1 where its dither carries; GranularRules::needsDepth): it gains when its need
+    // reaches the emptied cell and, unless the cell under that is EMPTY, ends there; on the vessel
+    // a grain needs one cell, so only the target (layersAbove 1) can matter to it. Only the grains
+    // whose need the dither decides, or which may lie on the vessel, are looked at one by one.
+    const GranularRules& rules = *granular_;
+    std::uint64_t gaining, ifCarried = 0, unlessCarried = 0, ifOnVessel = 0;
+    if (layersAbove >= 2) {
+        gaining = deeperEmpty ? woken & rules.towardsCentreWithWholeAtLeast(layersAbove) : 0;
+        if (!deeperEmpty) unlessCarried = woken & rules.towardsCentreWithWhole(layersAbove);
+        ifCarried = woken & rules.towardsCentreWithWhole(layersAbove - 1);
+    } else { // the emptied cell is the target, the one under it taken
+        gaining = woken & rules.towardsCentreWithWhole(0);
+        unlessCarried = woken & rules.towardsCentreWithWhole(1);
+        ifOnVessel = woken & rules.towardsCentreWithWholeAtLeast(2);
     }
-    return woken;
+    constexpr int reach = kGranularReach;
+    auto eachGrain = [&](std::uint64_t grains, auto&& gains) {
+        for (; grains; grains &= grains - 1) {
+            const int bit = __builtin_ctzll(grains);
+            const int dx = bit % kGranularWindow - reach, dz = bit / kGranularWindow - reach; // the grain, from (x, z)
+            if (gains(grid.index(x + dx, y, z + dz), GranularRules::offsetIndex(-dx, -dz))) gaining |= std::uint64_t{1} << bit;
+        }
+    };
+    eachGrain(ifCarried, [&](std::uint32_t from, int slide) { return rules.carries(ditherKey_, stream(), from, slide); });
+    eachGrain(unlessCarried, [&](std::uint32_t from, int slide) {
+        return (layersAbove == 1 && liesOnVessel(grid, from)) || !rules.carries(ditherKey_, stream(), from, slide);
+    });
+    eachGrain(ifOnVessel, [&](std::uint32_t from, int) { return liesOnVessel(grid, from); });
+    return gaining;
 }
 
 // The grains whose granular options an EMPTY (x, y, z) can widen (granular_rules.hpp says what a

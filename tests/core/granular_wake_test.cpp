@@ -134,3 +134,42 @@ TEST_CASE("granular: sand against the grid's sides and on its lowest layers move
         }
     }
 }
+
+TEST_CASE("granular wake tables: the grains around a column by the whole cells of their slide's need agree with "
+          "needsDepth grain by grain") {
+    std::mt19937_64 random(11);
+    for (float repose : {20.0f, 33.0f, 45.0f}) {
+        CAPTURE(repose);
+        PhysicsSettings physics;
+        physics.level = PhysicsLevel::Granular;
+        physics.reposeDegrees = repose;
+        const GranularRules rules(physics);
+        std::uint64_t covered = 0;
+        for (int whole = 0; whole <= rules.maxDrop(); ++whole) {
+            CHECK((covered & rules.towardsCentreWithWhole(whole)) == 0); // each grain has one whole part
+            covered |= rules.towardsCentreWithWhole(whole);
+        }
+        CHECK(covered == rules.towardsCentreWithWholeAtLeast(0));
+        CHECK(rules.towardsCentreWithWhole(rules.maxDrop() + 1) == 0);
+        for (int bit = 0; bit < kWindow * kWindow; ++bit) {
+            const int dx = bit % kWindow - kReach, dz = bit / kWindow - kReach; // the grain, from the column
+            CHECK(((covered >> bit) & 1) == (dx != 0 || dz != 0 ? 1u : 0u));
+            if (dx == 0 && dz == 0) continue;
+            const int slide = GranularRules::offsetIndex(-dx, -dz);
+            int whole = 0;
+            while (!(rules.towardsCentreWithWhole(whole) >> bit & 1)) ++whole;
+            for (int trial = 0; trial < 50; ++trial) {
+                const auto from = std::uint32_t(random() >> 40);
+                const std::uint64_t key = random(), stream = random() & 1;
+                const bool carried = rules.carries(key, stream, from, slide);
+                for (int depth = 2; depth <= rules.maxDrop() + 1; ++depth) {
+                    const bool expected = depth <= whole || (depth == whole + 1 && carried);
+                    if (rules.needsDepth(key, stream, from, slide, depth) != expected)
+                        FAIL("grain at (" << dx << ", " << dz << "), depth " << depth << ", cell " << from);
+                    const bool atLeast = rules.towardsCentreWithWholeAtLeast(depth) >> bit & 1;
+                    CHECK(atLeast == (whole >= depth));
+                }
+            }
+        }
+    }
+}
