@@ -290,8 +290,8 @@ private:
     LayoutBits layout_;
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
     std::array<std::vector<int>, 2> turnStrips_; // granular: the strips of the current layer's turn, by phase
-    // Granular: the cells left in the last layer's turn whose own-layer wakes wait for the next
-    // turn's end, when most of them are taken again (the grain above falls in) and wake nobody.
+    // Granular: the cells left in this sweep's turns whose own-layer wakes wait for the sweep's
+    // end, when most of them are taken again (the grain above fell in) and wake nobody.
     std::vector<Int3> leftEarlier_;
     std::int64_t speedChangesLastSweep_ = 0;
     MoveFeed feed_;
