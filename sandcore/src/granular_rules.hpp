@@ -229,7 +229,7 @@ public:
     }
     /// g in cells per step squared, 16.16 fixed point.
     std::uint32_t gravity() const { return gravity_; }
-    /// The slope T the thresholds use for the asked angle (after calibration).
+    /// The slope T the thresholds use for the asked angle (calibratedThresholds).
     double thresholdSlope() const { return slope_; }
 
     /// One sideways move: the offset, and the cells of the grain's layer its path crosses.
@@ -327,8 +327,14 @@ inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits&
     return slide(grid, empty, ditherKey, stepKey, stream, x, y, z, from, grain, below == kInvalid);
 }
 
-/// The slope T that makes a poured cone stand at `reposeDegrees` (a measured calibration: the
-/// grains find the low-threshold paths, so T lies above tan of the angle).
-double calibratedThresholdSlope(double reposeDegrees);
+/// The thresholds that make a poured cone stand at `reposeDegrees`, as round as the lattice lets
+/// it (a measured calibration: the grains find the low-threshold paths, so T lies above tan of
+/// the angle). A slide at angle phi from the x axis, |e| columns away, needs a drop of
+/// T (1 + s sin^2 2phi) |e| cells.
+struct ThresholdCalibration {
+    double slope;              ///< T
+    double diagonalStiffening; ///< s
+};
+ThresholdCalibration calibratedThresholds(double reposeDegrees);
 
 } // namespace sandcore

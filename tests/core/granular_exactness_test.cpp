@@ -195,11 +195,11 @@ TEST_CASE("granular: recorded state hashes (classic's stay in determinism_test.c
     // say why in the commit. Classic's recorded hashes live in test_determinism.cpp.
     Scene hourglass = granularHourglass(7);
     for (int i = 0; i < 300; ++i) hourglass.step();
-    CHECK(hourglass.stateHash() == 0x441f53f5444221beull);
+    CHECK(hourglass.stateHash() == 0x1c48d14be6d3c493ull);
     Scene sculpture = granularSculpture(7);
     sculpture.setThreads(2);
     for (int i = 0; i < 100; ++i) sculpture.step();
-    CHECK(sculpture.stateHash() == 0xa46d0926f4e2c3bbull);
+    CHECK(sculpture.stateHash() == 0xdb0d0ea5d49034ceull);
 }
 
 TEST_CASE("granular: a slab wider than a word of bits collapses alike on 1 and 3 threads and in a full sweep, "
@@ -221,8 +221,9 @@ TEST_CASE("granular: a slab wider than a word of bits collapses alike on 1 and 3
     // The three above read the same kept bits, so a wrong read would agree with itself. This state
     // was first the one the rules reached when they read the cells themselves (the build before
     // the bits); since a layer's paths read it as its turn began (granular_rules.hpp), it is the
-    // one recorded then (every read of the bits is compared with the cells in empty_cell_bits_test.cpp).
-    CHECK(one.stateHash() == 0x149098fcaedd23f1ull);
+    // one recorded then, and since the thresholds were calibrated for a round cone at every angle,
+    // the one recorded then (every read of the bits is compared with the cells in empty_cell_bits_test.cpp).
+    CHECK(one.stateHash() == 0xfc9d66b165847128ull);
 }
 
 TEST_CASE("granular and classic differ, and switching the level mid-run takes effect") {
