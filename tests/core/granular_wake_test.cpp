@@ -53,6 +53,13 @@ StepSettings granular(std::uint64_t seed, float repose) {
     return step;
 }
 
+GranularRules granularRulesAt(float repose) {
+    PhysicsSettings physics;
+    physics.level = PhysicsLevel::Granular;
+    physics.reposeDegrees = repose;
+    return GranularRules(physics);
+}
+
 } // namespace
 
 TEST_CASE("granular wake tables: the grains with an open slide across a cell into each column are those the "
@@ -61,10 +68,7 @@ TEST_CASE("granular wake tables: the grains with an open slide across a cell int
     const std::uint64_t window = (std::uint64_t{1} << (kWindow * kWindow)) - 1;
     for (float repose : {20.0f, 33.0f, 45.0f}) {
         CAPTURE(repose);
-        PhysicsSettings physics;
-        physics.level = PhysicsLevel::Granular;
-        physics.reposeDegrees = repose;
-        const GranularRules rules(physics);
+        const GranularRules rules = granularRulesAt(repose);
         // Every slide whose path crosses c ends in one of the 5x5 columns: all open, every grain.
         int slides = 0;
         for (int t = 0; t < kAcrossWindow * kAcrossWindow; ++t)
@@ -140,10 +144,7 @@ TEST_CASE("granular wake tables: the grains around a column by the whole cells o
     std::mt19937_64 random(11);
     for (float repose : {20.0f, 33.0f, 45.0f}) {
         CAPTURE(repose);
-        PhysicsSettings physics;
-        physics.level = PhysicsLevel::Granular;
-        physics.reposeDegrees = repose;
-        const GranularRules rules(physics);
+        const GranularRules rules = granularRulesAt(repose);
         std::uint64_t covered = 0;
         for (int whole = 0; whole <= rules.maxDrop(); ++whole) {
             CHECK((covered & rules.towardsCentreWithWhole(whole)) == 0); // each grain has one whole part
