@@ -170,15 +170,17 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
         if (path & kOuterRows) throw std::logic_error("granular rules: a path towards a column crosses the window's outer rows");
         addPath(towardsBlockedBy_, path, (kGranularReach - o.dz) * kWindow + kGranularReach - o.dx);
     }
-    // Who may gain from an EMPTY cell c, by layer above c (see wakeMask): in c's layer and the one
-    // above, every grain of the window; d layers above c, only a grain whose deepest possible
-    // need towards c's column reaches d cells, since c lies d cells down that column.
+    // The grains around a column by the whole cells of their slide into it (towardsCentreWithWhole):
+    // the grain at -o slides into the column by o.
     towardsCentreByWhole_.assign(std::size_t(maxDrop_) + 1, 0);
-    for (const Offset& o : offsets_) // the grain at -o slides into the column by o
+    for (const Offset& o : offsets_)
         towardsCentreByWhole_[o.thresholdQ8 >> 8] |= std::uint64_t{1} << ((kGranularReach - o.dz) * kWindow + kGranularReach - o.dx);
     towardsCentreAtLeast_ = towardsCentreByWhole_;
     for (int whole = maxDrop_ - 1; whole >= 0; --whole)
         towardsCentreAtLeast_[std::size_t(whole)] |= towardsCentreAtLeast_[std::size_t(whole) + 1];
+    // Who may gain from an EMPTY cell c, by layer above c (see wakeMask): in c's layer and the one
+    // above, every grain of the window; d layers above c, only a grain whose deepest possible
+    // need towards c's column reaches d cells, since c lies d cells down that column.
     wakeMasks_.assign(std::size_t(maxDrop_) + 1, 0);
     wakeMasks_[0] = wakeMasks_[1] = (std::uint64_t{1} << (kWindow * kWindow)) - 1;
     for (const Offset& o : offsets_)

@@ -197,7 +197,7 @@ constexpr int kGranularWindow = 2 * kGranularReach + 1;
 // row's 7 bits are shifted into place and ANDed with the occupied bits, as wakeSpan does, so EMPTY
 // and INVALID cells stay asleep. That is exact: a grain that enters one of those cells later is
 // woken by its move. In the layers above, this runs before their turn in the step; in the
-// emptied cell's own layer, after it (endGranularTurn), for the next step.
+// emptied cell's own layer, at the sweep's end (wakeAroundCellsLeftEarlier), for the next step.
 inline void GridSweep::wakeGrainsAround(const CellGrid& grid, int x, int y, int z, int layersAbove) {
     // The grains in the window not yet awake: waking an awake one changes nothing.
     const std::uint64_t sleeping = granular_->wakeMask(layersAbove) & sleepingGrainsAround(x, y, z);
