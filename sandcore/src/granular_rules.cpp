@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 namespace sandcore {
@@ -197,11 +196,12 @@ std::uint64_t carriesOf(const std::uint64_t (&dithers)[GranularRules::kOffsets /
                         const std::array<std::uint8_t, GranularRules::kOffsets>& restComplement) {
     static_assert(GranularRules::kOffsets == 48);
 #if defined(__SSE2__)
-    std::uint8_t bytes[GranularRules::kOffsets];
-    std::memcpy(bytes, dithers, sizeof bytes);
+    // The dithers go into the vector registers straight from the general ones: stored and loaded
+    // again 16 bytes at a time, each load would wait for two 8-byte stores it cannot be forwarded
+    // from (2% of the granular drain's time).
     std::uint64_t notCarried = 0;
     for (int part = 0; part < 3; ++part) {
-        const __m128i dither = _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + 16 * part));
+        const __m128i dither = _mm_set_epi64x(std::int64_t(dithers[2 * part + 1]), std::int64_t(dithers[2 * part]));
         const __m128i rest = _mm_loadu_si128(reinterpret_cast<const __m128i*>(restComplement.data() + 16 * part));
         // dither - rest saturates at 0 exactly when dither <= rest: no carry
         const __m128i none = _mm_cmpeq_epi8(_mm_subs_epu8(dither, rest), _mm_setzero_si128());
