@@ -35,10 +35,13 @@ inline unsigned emptyBitsOf8(const CellValue* cells) {
 
 /// One bit per cell of a grid, set while the cell is EMPTY, in rows of 64-bit words: a window row
 /// of up to 16 cells is two words and shifts, where reading the cells is 16 to 36 bytes per row,
-/// rows a kilobyte apart. The rows carry a margin of cells that read as taken (kMarginX cells
-/// before x = 0 and a spare word after each row, kMarginZ rows on either side, kMarginBelow layers
-/// under y = 0), so a window near the grid's sides needs no bounds tests. Whoever changes a cell's
-/// content says so here (GridSweep keeps them for the granular rules, which read 7x7 windows).
+/// rows a kilobyte apart. Word w of the rows of a layer lie side by side (the layer's word 0 of
+/// every row, then word 1, ...), so the 7 rows of a window are 56 consecutive bytes, one or two
+/// cache lines, where rows kept whole lay a row's words apart and took a line each. The rows carry
+/// a margin of cells that read as taken (kMarginX cells before x = 0 and a spare word after each
+/// row, kMarginZ rows on either side, kMarginBelow layers under y = 0), so a window near the
+/// grid's sides needs no bounds tests. Whoever changes a cell's content says so here (GridSweep
+/// keeps them for the granular rules, which read 7x7 windows).
 class EmptyCellBits {
 public:
     static constexpr int kMarginX = 16, kMarginZ = 3, kMarginBelow = 2;
@@ -55,12 +58,11 @@ public:
         for (int y = 0; y < size_.y; ++y)
             for (int z = 0; z < size_.z; ++z) {
                 const CellValue* cells = grid.cells().data() + grid.index(0, y, z);
-                std::uint64_t* words = rowWords(y, z);
-                std::fill(words, words + stride_, 0);
+                for (int w = 0; w < stride_; ++w) words_[wordIndex(y, z, w)] = 0;
                 int x = 0;
                 static_assert(kMarginX % 8 == 0, "8 cells' bits lie in one word");
                 for (; x + 8 <= size_.x; x += 8)
-                    words[(kMarginX + x) >> 6] |= std::uint64_t(emptyBitsOf8(cells + x)) << ((kMarginX + x) & 63);
+                    words_[wordIndex(y, z, (kMarginX + x) >> 6)] |= std::uint64_t(emptyBitsOf8(cells + x)) << ((kMarginX + x) & 63);
                 for (; x < size_.x; ++x) setEmpty(x, y, z, cells[x] == kEmpty);
             }
     }
@@ -75,12 +77,12 @@ public:
     /// (x, y, z) in the grid.
     bool isEmpty(int x, int y, int z) const {
         const int at = kMarginX + x;
-        return (row(y, z)[at >> 6] >> (at & 63)) & 1u;
+        return (words_[wordIndex(y, z, at >> 6)] >> (at & 63)) & 1u;
     }
     /// (x, y, z) in the grid.
     void setEmpty(int x, int y, int z, bool empty) {
         const int at = kMarginX + x;
-        std::uint64_t& word = rowWords(y, z)[at >> 6];
+        std::uint64_t& word = words_[wordIndex(y, z, at >> 6)];
         const std::uint64_t bit = std::uint64_t{1} << (at & 63);
         word = empty ? word | bit : word & ~bit;
     }
@@ -92,28 +94,28 @@ public:
         constexpr int width = 2 * Reach + 1;
         constexpr std::uint64_t rowMask = (std::uint64_t{1} << width) - 1;
         const int at = kMarginX + x - Reach, offset = at & 63;
-        const std::uint64_t* words = row(y, z - Reach) + (at >> 6);
+        const std::uint64_t* words = words_.data() + wordIndex(y, z - Reach, at >> 6); // the window's rows, in a run
         std::uint64_t bits = 0;
         if (offset + width > 64) {
-            for (int r = 0; r < width; ++r, words += stride_)
-                bits |= (((words[0] >> offset) | (words[1] << (64 - offset))) & rowMask) << (r * width);
+            const std::uint64_t* next = words + rowsPerLayer_; // the rows' next word
+            for (int r = 0; r < width; ++r) bits |= (((words[r] >> offset) | (next[r] << (64 - offset))) & rowMask) << (r * width);
         } else {
-            for (int r = 0; r < width; ++r, words += stride_) bits |= ((words[0] >> offset) & rowMask) << (r * width);
+            for (int r = 0; r < width; ++r) bits |= ((words[r] >> offset) & rowMask) << (r * width);
         }
         return bits;
     }
 
 private:
-    // Row (y, z) with its margins: y >= -kMarginBelow, z from -kMarginZ to size.z + kMarginZ - 1.
-    const std::uint64_t* row(int y, int z) const {
-        return words_.data() + (std::size_t(y + kMarginBelow) * std::size_t(rowsPerLayer_) + std::size_t(z + kMarginZ)) *
-                                   std::size_t(stride_);
+    // Word w of row (y, z), margins included: y >= -kMarginBelow, z from -kMarginZ to size.z +
+    // kMarginZ - 1, w below stride_.
+    std::size_t wordIndex(int y, int z, int w) const {
+        return (std::size_t(y + kMarginBelow) * std::size_t(stride_) + std::size_t(w)) * std::size_t(rowsPerLayer_) +
+               std::size_t(z + kMarginZ);
     }
-    std::uint64_t* rowWords(int y, int z) { return const_cast<std::uint64_t*>(row(y, z)); }
 
     Int3 size_{};
     int stride_ = 1;       // words per row, margins and the spare one included
-    int rowsPerLayer_ = 0; // size.z and the margins
+    int rowsPerLayer_ = 0; // size.z and the margins: the distance between a row's words
     std::vector<std::uint64_t, LargePageAllocator<std::uint64_t>> words_; // in huge pages, as the grids (large_pages.hpp)
 };
 
