@@ -1,7 +1,8 @@
 // Measures the granular level from the command line while it is being tuned: the angle of a
 // poured cone in 16 directions, the fall time, the discharge through hourglass necks and the
 // cost against classic. Not part of the product; the bench report has the final figures.
-//   granular_probe pour DEG GRAINS [WIDTH]    cone poured at one column of a canvas
+//   granular_probe pour DEG GRAINS [WIDTH] [HEIGHT] [SEED] [g]  cone poured at one column of a
+//                                             canvas: 16 rays, then 16 sectors of 5 rays each
 //   granular_probe drain NECK [HEIGHT] [g]    discharge of a granular hourglass
 //   granular_probe cost HEIGHT THREADS        ms per step, classic vs granular drain
 //   granular_probe cost-in-turns HEIGHT THREADS  the same, both drains stepped in turns
@@ -43,8 +44,16 @@ int pour(double degrees, int grains, int width, int height, std::uint64_t seed, 
     std::printf("asked %.1f  grains %lld  steps %llu  %.1fs  peak %d at (%.1f, %.1f)\n", degrees,
                 (long long)scene.grainCount(), (unsigned long long)scene.counters().stepsDone, seconds(start),
                 slopes.peakHeight, slopes.peakX, slopes.peakZ);
-    for (double d : slopes.degrees) std::printf(" %.1f", d);
+    for (double d : slopes.degrees) std::printf(" %.2f", d);
     std::printf("\nmean %.2f min %.2f max %.2f\n", slopes.meanDegrees(), slopes.minDegrees(), slopes.maxDegrees());
+    // The same directions, each the mean of 5 rays over its 22.5-degree sector: the flank's
+    // grain-sized roughness, which one ray reads, averaged out.
+    PileSlopeSettings sectors;
+    sectors.raysPerDirection = 5;
+    const PileSlopes smooth = measurePileSlopes(scene.grid(GridLevel::Lower), sectors);
+    std::printf("sectors");
+    for (double d : smooth.degrees) std::printf(" %.2f", d);
+    std::printf("\nsector mean %.2f min %.2f max %.2f\n", smooth.meanDegrees(), smooth.minDegrees(), smooth.maxDegrees());
     return 0;
 }
 

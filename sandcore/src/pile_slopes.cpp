@@ -45,8 +45,8 @@ PileSlopes measurePileSlopes(const CellGrid& grid, const PileSlopeSettings& sett
                (1 - tx) * tz * heightAt(x0, z0 + 1) + tx * tz * heightAt(x0 + 1, z0 + 1);
     };
     const double low = settings.fromShare * result.peakHeight, high = settings.toShare * result.peakHeight;
-    for (int d = 0; d < settings.directions; ++d) {
-        const double phi = 2.0 * M_PI * d / settings.directions;
+    // The least-squares angle of the heights along the ray at angle phi (0 if too few points).
+    auto rayDegrees = [&](double phi) {
         const double ux = std::cos(phi), uz = std::sin(phi);
         std::vector<double> distance, height;
         for (double r = 0.5;; r += 0.5) {
@@ -58,19 +58,22 @@ PileSlopes measurePileSlopes(const CellGrid& grid, const PileSlopeSettings& sett
             distance.push_back(r);
             height.push_back(h);
         }
-        double angle = 0.0;
-        if (distance.size() >= 3) {
-            const double n = double(distance.size());
-            const double meanD = std::accumulate(distance.begin(), distance.end(), 0.0) / n;
-            const double meanH = std::accumulate(height.begin(), height.end(), 0.0) / n;
-            double covariance = 0, variance = 0;
-            for (std::size_t i = 0; i < distance.size(); ++i) {
-                covariance += (distance[i] - meanD) * (height[i] - meanH);
-                variance += (distance[i] - meanD) * (distance[i] - meanD);
-            }
-            angle = std::atan(std::abs(covariance / variance)) * 180.0 / M_PI;
+        if (distance.size() < 3) return 0.0;
+        const double n = double(distance.size());
+        const double meanD = std::accumulate(distance.begin(), distance.end(), 0.0) / n;
+        const double meanH = std::accumulate(height.begin(), height.end(), 0.0) / n;
+        double covariance = 0, variance = 0;
+        for (std::size_t i = 0; i < distance.size(); ++i) {
+            covariance += (distance[i] - meanD) * (height[i] - meanH);
+            variance += (distance[i] - meanD) * (distance[i] - meanD);
         }
-        result.degrees.push_back(angle);
+        return std::atan(std::abs(covariance / variance)) * 180.0 / M_PI;
+    };
+    const int rays = std::max(settings.raysPerDirection, 1);
+    for (int d = 0; d < settings.directions; ++d) {
+        double sum = 0;
+        for (int i = 0; i < rays; ++i) sum += rayDegrees(2.0 * M_PI * (d + ((i + 0.5) / rays - 0.5)) / settings.directions);
+        result.degrees.push_back(sum / rays);
     }
     return result;
 }

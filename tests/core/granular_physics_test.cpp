@@ -233,6 +233,34 @@ TEST_CASE("repose: a pile measured from a known cone gives the cone's angle in e
     CHECK(slopes.peakX == doctest::Approx(40.5));
     CHECK(slopes.peakZ == doctest::Approx(40.5));
     for (double d : slopes.degrees) CHECK(d == doctest::Approx(std::atan(0.6) * 180.0 / M_PI).epsilon(0.02));
+    PileSlopeSettings sectors;
+    sectors.raysPerDirection = 5;
+    const PileSlopes smooth = measurePileSlopes(grid, sectors);
+    REQUIRE(smooth.degrees.size() == 16);
+    for (double d : smooth.degrees) CHECK(d == doctest::Approx(std::atan(0.6) * 180.0 / M_PI).epsilon(0.02));
+}
+
+TEST_CASE("repose: a direction's sector averages out a groove that its one ray reads") {
+    // The cone above with the row under the +x ray steeper (slope 0.75, 36.9 degrees): the ray
+    // along +x reads the groove; the mean of 5 rays over its 22.5-degree sector lies near the cone.
+    CellGrid grid({81, 40, 81});
+    for (int z = 0; z < 81; ++z)
+        for (int x = 0; x < 81; ++x) {
+            const double r = std::hypot(x + 0.5 - 40.5, z + 0.5 - 40.5);
+            const double slope = z == 40 && x > 40 ? 0.75 : 0.6;
+            const int height = int(std::lround(std::max(0.0, 30.0 - slope * r)));
+            for (int y = 0; y < height; ++y) grid[grid.index(x, y, z)] = 0;
+        }
+    const double cone = std::atan(0.6) * 180.0 / M_PI;
+    const double ray = measurePileSlopes(grid).degrees[0];
+    PileSlopeSettings sectors;
+    sectors.raysPerDirection = 5;
+    const PileSlopes smooth = measurePileSlopes(grid, sectors);
+    CAPTURE(ray);
+    CAPTURE(smooth.degrees[0]);
+    CHECK(ray > cone + 4.0);
+    CHECK(std::abs(smooth.degrees[0] - cone) < 2.0);
+    CHECK(smooth.degrees[8] == doctest::Approx(cone).epsilon(0.02)); // -x: no groove there
 }
 
 TEST_CASE("neck flow: the hourglass drains at Beverloo's rate, constant while the bulb empties") {

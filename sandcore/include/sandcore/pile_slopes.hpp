@@ -13,6 +13,9 @@ struct PileSlopeSettings {
     int directions = 16;      ///< evenly spaced directions out of the peak (the first along +x)
     double fromShare = 0.15;  ///< fit only heights at or above this share of the peak's (skips the toe)
     double toShare = 0.85;    ///< ... and at or below this share (skips the rounded top)
+    /// Rays fitted per direction, spread evenly over its sector (360 / directions degrees wide);
+    /// the direction's angle is their mean. 1: the one ray along the direction.
+    int raysPerDirection = 1;
 };
 
 /// Angles of a heap's flanks.
@@ -25,9 +28,10 @@ struct PileSlopes {
     double maxDegrees() const;    ///< largest of the directions
 };
 
-/// The flanks of the heap in `grid`: column heights are sampled every half cell along each
-/// direction (bilinear between column centres) and a line is fitted over the heights between
-/// fromShare and toShare of the peak's.
+/// The flanks of the heap in `grid`: column heights are sampled every half cell along each ray
+/// out of the peak (bilinear between column centres) and a line is fitted over the heights
+/// between fromShare and toShare of the peak's. A single ray reads the grain-sized roughness of
+/// the flank along its line; rays spread over each direction's sector average it out.
 PileSlopes measurePileSlopes(const CellGrid& grid, const PileSlopeSettings& settings = {});
 
 } // namespace sandcore
