@@ -35,9 +35,9 @@ inline unsigned emptyBitsOf8(const CellValue* cells) {
 
 /// One bit per cell of a grid, set while the cell is EMPTY, in rows of 64-bit words: a window row
 /// of up to 16 cells is two words and shifts, where reading the cells is 16 to 36 bytes per row,
-/// rows a kilobyte apart. Word w of the rows of a layer lie side by side (the layer's word 0 of
-/// every row, then word 1, ...), so the 7 rows of a window are 56 consecutive bytes, one or two
-/// cache lines, where rows kept whole lay a row's words apart and took a line each. The rows carry
+/// rows a kilobyte apart. A layer keeps word 0 of all its rows side by side, then word 1, and so
+/// on, so the 7 rows of a window are 56 consecutive bytes, one or two cache lines, where rows kept
+/// whole lay a row's words apart and took a line each. The rows carry
 /// a margin of cells that read as taken (kMarginX cells before x = 0 and a spare word after each
 /// row, kMarginZ rows on either side, kMarginBelow layers under y = 0), so a window near the
 /// grid's sides needs no bounds tests. Whoever changes a cell's content says so here (GridSweep
