@@ -31,7 +31,7 @@ sandcore::StepSettings granularStep(const ReportOptions& options, float gravity,
 std::string reposePart(const ReportOptions& options, std::ostream& log, bool& passed) {
     const int grains = options.quick ? 8000 : 80000, width = options.quick ? 64 : 140;
     const float asked[] = {25.0f, 33.0f, 40.0f};
-    Table table{{"asked (deg)", "mean", "min", "max", "16 directions from +x, counter-clockwise"}, {}};
+    Table table{{"asked (deg)", "mean", "min", "max", "16 directions from +x, counter-clockwise", "sectors: min", "sectors: max"}, {}};
     Table csv{{"asked", "direction (deg)", "measured (deg)"}, {}};
     LinePlot plot{"repose", "Poured cones: angle in 16 directions", "direction out of the peak (deg)", "angle (deg)",
                   false, "right top", {}};
@@ -46,6 +46,9 @@ std::string reposePart(const ReportOptions& options, std::ostream& log, bool& pa
         while (!scene.settled()) scene.step();
         passed = passed && scene.grainCount() == grains;
         const sandcore::PileSlopes slopes = sandcore::measurePileSlopes(scene.grid(GridLevel::Lower));
+        sandcore::PileSlopeSettings sectorRays;
+        sectorRays.raysPerDirection = 5;
+        const sandcore::PileSlopes sectors = sandcore::measurePileSlopes(scene.grid(GridLevel::Lower), sectorRays);
         std::string each;
         PlotSeries series{"asked " + fixed(angle, 0) + " deg", {}, {}};
         for (std::size_t d = 0; d < slopes.degrees.size(); ++d) {
@@ -56,7 +59,7 @@ std::string reposePart(const ReportOptions& options, std::ostream& log, bool& pa
             series.points.push_back({direction, slopes.degrees[d]});
         }
         table.rows.push_back({fixed(angle, 0), fixed(slopes.meanDegrees(), 2), fixed(slopes.minDegrees(), 2),
-                              fixed(slopes.maxDegrees(), 2), each});
+                              fixed(slopes.maxDegrees(), 2), each, fixed(sectors.minDegrees(), 2), fixed(sectors.maxDegrees(), 2)});
         plot.series.push_back(std::move(series));
     }
     writeCsv(csv, options.outDir / "repose.csv");
@@ -64,7 +67,9 @@ std::string reposePart(const ReportOptions& options, std::ostream& log, bool& pa
     return "Repose (PH2): a cone of " + std::to_string(grains) + " grains poured one a step at the centre of a " +
            std::to_string(width) + "-cell canvas floor (g = 1 cell/step^2, seed " + std::to_string(options.step.seed) +
            "), measured from its column heights along 16 directions out of the peak: a least-squares line over "
-           "the flank between 15% and 85% of the peak's height (`sandcore::measurePileSlopes`).\n\n" +
+           "the flank between 15% and 85% of the peak's height (`sandcore::measurePileSlopes`). One ray reads the "
+           "flank's grain-sized roughness; the last two columns take each direction as the mean of 5 rays over its "
+           "22.5-degree sector (`PileSlopeSettings::raysPerDirection`).\n\n" +
            toMarkdown(table) + "\n![repose](repose.png)\n\n";
 }
 
