@@ -1,6 +1,7 @@
 #include "bench/plausibility.hpp"
 
 #include "sandcore/normals.hpp"
+#include "sandcore/pile_slopes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,19 +55,6 @@ double coefficientOfVariation(const std::vector<double>& values) {
 
 namespace {
 
-// Least-squares slope of height over distance.
-double fittedSlope(const std::vector<double>& distance, const std::vector<double>& height) {
-    const double n = double(distance.size());
-    const double meanD = std::accumulate(distance.begin(), distance.end(), 0.0) / n;
-    const double meanH = std::accumulate(height.begin(), height.end(), 0.0) / n;
-    double covariance = 0.0, variance = 0.0;
-    for (std::size_t i = 0; i < distance.size(); ++i) {
-        covariance += (distance[i] - meanD) * (height[i] - meanH);
-        variance += (distance[i] - meanD) * (distance[i] - meanD);
-    }
-    return variance > 0.0 ? covariance / variance : 0.0;
-}
-
 // True when the column holds an INVALID cell at or above its sand: the pile meets a wall there.
 bool blockedColumn(const CellGrid& grid, int x, int z, int height) {
     for (int y = std::max(height - 1, 0); y < grid.size().y; ++y)
@@ -112,7 +100,7 @@ ReposeAngles measureReposeAngles(const CellGrid& grid) {
             height.push_back(h);
         }
         if (distance.size() < 3) continue;
-        const double angle = std::atan(std::abs(fittedSlope(distance, height))) * 180.0 / M_PI;
+        const double angle = std::atan(std::abs(sandcore::leastSquaresSlope(distance, height))) * 180.0 / M_PI;
         if (d[0] != 0 && d[1] != 0) {
             diagonalSum += angle;
             ++diagonalCount;

@@ -14,6 +14,19 @@ double PileSlopes::meanDegrees() const {
 double PileSlopes::minDegrees() const { return degrees.empty() ? 0.0 : *std::min_element(degrees.begin(), degrees.end()); }
 double PileSlopes::maxDegrees() const { return degrees.empty() ? 0.0 : *std::max_element(degrees.begin(), degrees.end()); }
 
+double leastSquaresSlope(const std::vector<double>& x, const std::vector<double>& y) {
+    if (x.empty()) return 0.0;
+    const double n = double(x.size());
+    const double meanX = std::accumulate(x.begin(), x.end(), 0.0) / n;
+    const double meanY = std::accumulate(y.begin(), y.end(), 0.0) / n;
+    double covariance = 0.0, variance = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        covariance += (x[i] - meanX) * (y[i] - meanY);
+        variance += (x[i] - meanX) * (x[i] - meanX);
+    }
+    return variance > 0.0 ? covariance / variance : 0.0;
+}
+
 PileSlopes measurePileSlopes(const CellGrid& grid, const PileSlopeSettings& settings) {
     const Int3 s = grid.size();
     const std::vector<int> heights = columnHeights(grid);
@@ -59,15 +72,7 @@ PileSlopes measurePileSlopes(const CellGrid& grid, const PileSlopeSettings& sett
             height.push_back(h);
         }
         if (distance.size() < 3) return 0.0;
-        const double n = double(distance.size());
-        const double meanD = std::accumulate(distance.begin(), distance.end(), 0.0) / n;
-        const double meanH = std::accumulate(height.begin(), height.end(), 0.0) / n;
-        double covariance = 0, variance = 0;
-        for (std::size_t i = 0; i < distance.size(); ++i) {
-            covariance += (distance[i] - meanD) * (height[i] - meanH);
-            variance += (distance[i] - meanD) * (distance[i] - meanD);
-        }
-        return std::atan(std::abs(covariance / variance)) * 180.0 / M_PI;
+        return std::atan(std::abs(leastSquaresSlope(distance, height))) * 180.0 / M_PI;
     };
     const int rays = std::max(settings.raysPerDirection, 1);
     for (int d = 0; d < settings.directions; ++d) {

@@ -28,6 +28,9 @@ struct PileSlopes {
     double maxDegrees() const;    ///< largest of the directions
 };
 
+/// Least-squares slope of y over x (0 when x does not vary); x and y of equal length.
+double leastSquaresSlope(const std::vector<double>& x, const std::vector<double>& y);
+
 /// The flanks of the heap in `grid`: column heights are sampled every half cell along each ray
 /// out of the peak (bilinear between column centres) and a line is fitted over the heights
 /// between fromShare and toShare of the peak's. A single ray reads the grain-sized roughness of
