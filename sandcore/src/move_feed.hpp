@@ -7,18 +7,31 @@
 // from both threads made a two-thread step slower than one thread). So neither sweep writes a
 // record: each feeds its moves here, and the thread whose sweep ends first writes the records of
 // both, the other's while that one still sweeps. The longer sweep is then relieved of its own
-// record writes, which balances the two threads.
+// record writes, which balances the two threads. The writes left when the longer sweep ends
+// (in the million-grain classic drain, most steps) are shared: that thread claims chunks of
+// them too, while the first lists every move (a helper; no sweep runs any more, and the two
+// threads' chunks are far apart in the feed).
 
 #include "sandcore/grain_store.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <thread>
 #include <vector>
 
 namespace sandcore {
+
+/// What writes the records of a feed's moves: record(move) writes one, and record.ask(move) asks
+/// for the cache line that record(move) will write.
+template <class Record>
+concept MoveRecorder = requires(Record& record, const GrainMove& move) {
+    record(move);
+    record.ask(move);
+};
 
 class MoveFeed {
 public:
@@ -36,6 +49,7 @@ public:
         overflow_.clear();
         published_.store(0, std::memory_order_relaxed);
         done_.store(false, std::memory_order_relaxed);
+        claimedChunks_.store(0, std::memory_order_relaxed);
     }
 
     /// Producer: appends a move, not yet visible to the consumer.
@@ -56,17 +70,27 @@ public:
         done_.store(true, std::memory_order_release);
     }
 
-    /// Consumer: calls write(move) for every move in order, waiting for the producer's until it
-    /// has finished. Returns at once for a finished feed.
-    template <class Write> void drain(Write&& write) const {
+    /// Consumer: calls list(moves) for every move in order, a span of moves at a time, waiting
+    /// for the producer's until it has finished, and record(move) for each move in a chunk of
+    /// kChunk moves that no helper claimed first; the chunks it records it claims itself.
+    /// Returns at once for a finished feed that is all claimed, having listed every move.
+    template <class List, MoveRecorder Record> void drain(List&& list, Record&& record) {
         std::size_t next = 0;
         for (int idle = 0;;) {
             const bool done = done_.load(std::memory_order_acquire);
             const std::size_t end = published_.load(std::memory_order_acquire); // final once done
-            if (next < end) idle = 0;
-            for (; next < end; ++next) write(moves_[next]);
+            const std::size_t whole = done ? end : end / kChunk * kChunk;       // chunks that may be claimed
+            if (next < whole) idle = 0;
+            for (; next < whole; next += kChunk) {
+                const std::size_t chunkEnd = std::min(next + kChunk, end);
+                std::size_t chunk = next / kChunk; // every chunk before it is claimed
+                if (claimedChunks_.compare_exchange_strong(chunk, chunk + 1, std::memory_order_relaxed))
+                    recordChunk(next, chunkEnd, record);
+                list(std::span<const GrainMove>(moves_.get() + next, chunkEnd - next));
+            }
             if (done) {
-                for (const GrainMove& move : overflow_) write(move);
+                for (const GrainMove& move : overflow_) record(move);
+                list(std::span<const GrainMove>(overflow_));
                 return;
             }
             // The producer is another thread that is running; yield only when it seems not to be.
@@ -76,9 +100,40 @@ public:
 #endif
         }
     }
+    /// Consumer, where nothing needs recording: calls list(moves) for every move in order.
+    template <class List> void drain(List&& list) { drain(list, NoRecord{}); }
+
+    /// Any thread, once the producer has finished (and the caller has seen it finish): calls
+    /// record(move) for the moves of each chunk it claims before the consumer does, until none is
+    /// left, so a thread with nothing else to do shares the consumer's writes. Lists nothing; the
+    /// overflow stays the consumer's.
+    template <MoveRecorder Record> void help(Record&& record) {
+        const std::size_t end = published_.load(std::memory_order_acquire);
+        for (;;) {
+            const std::size_t begin = claimedChunks_.fetch_add(1, std::memory_order_relaxed) * kChunk;
+            if (begin >= end) return;
+            recordChunk(begin, std::min(begin + kChunk, end), record);
+        }
+    }
 
 private:
+    struct NoRecord {
+        void operator()(const GrainMove&) const {}
+        void ask(const GrainMove&) const {}
+    };
     static constexpr std::size_t kBatch = 32;
+    // Moves claimed at once by the consumer or a helper; each record write misses the cache, so
+    // the line of the record kAhead moves on is asked for first and several misses overlap.
+    static constexpr std::size_t kChunk = 64;
+    static constexpr std::size_t kAhead = 16;
+
+    template <class Record> void recordChunk(std::size_t begin, std::size_t end, Record& record) const {
+        for (std::size_t n = begin; n < std::min(begin + kAhead, end); ++n) record.ask(moves_[n]);
+        for (std::size_t n = begin; n < end; ++n) {
+            if (n + kAhead < end) record.ask(moves_[n + kAhead]);
+            record(moves_[n]);
+        }
+    }
 
     void publish() {
         sharedSize_ = size_;
@@ -93,6 +148,7 @@ private:
     std::vector<GrainMove> overflow_; // moves beyond capacity_, read by the consumer once done_
     alignas(64) std::atomic<std::size_t> published_{0};
     std::atomic<bool> done_{false};
+    alignas(64) std::atomic<std::size_t> claimedChunks_{0}; // chunks whose records are taken, in order
 };
 
 } // namespace sandcore

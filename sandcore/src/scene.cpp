@@ -2,6 +2,7 @@
 
 #include "granular_rules.hpp"
 #include "grid_sweep.hpp"
+#include "move_feed.hpp"
 #include "neck_flow.hpp"
 #include "sandcore/counter_random.hpp"
 #include "sandcore/worker_pool.hpp"
@@ -34,6 +35,14 @@ template <class Visit> void forEachCellIn(const CellGrid& grid, CellBox box, Vis
         for (int z = box.min.z; z < box.max.z; ++z)
             for (int x = box.min.x; x < box.max.x; ++x) visit(grid.index(x, y, z));
 }
+
+// Writes the grain records of a step's moves fed by the sweeps (MoveFeed::drain and help).
+struct RecordWriter {
+    GrainStore& grains;
+    std::uint64_t step;
+    void operator()(const GrainMove& move) const { grains.recordMove(move.grain, move.cell, move.cameFrom, step); }
+    void ask(const GrainMove& move) const { __builtin_prefetch(grains.place.data() + move.grain, 1); }
+};
 
 } // namespace
 
@@ -174,16 +183,20 @@ void Scene::step() {
             (grid == 0 ? lower : upper) = sweep.sweep(grid == 0 ? lowerContext : upperContext, nullptr);
             if (!feeding) return;
             sweep.feed().finish();
-            auto write = [&](const GrainMove& move) {
-                grains_.recordMove(move.grain, move.cell, move.cameFrom, stepNumber);
-                movedGrains_.push_back(move);
-            };
+            const RecordWriter record{grains_, stepNumber};
+            auto list = [&](std::span<const GrainMove> moves) { movedGrains_.insert(movedGrains_.end(), moves.begin(), moves.end()); };
             auto drainGrid = [&](int which) {
                 if (which == 1) upperMovesBegin_ = movedGrains_.size();
-                (which == 0 ? *lowerSweep_ : *upperSweep_).feed().drain(write);
+                (which == 0 ? *lowerSweep_ : *upperSweep_).feed().drain(list, record);
             };
             if (writesItsOwn) return drainGrid(grid);
-            if (sweepsDone.fetch_add(1, std::memory_order_acq_rel) != 0) return; // the other one writes
+            if (sweepsDone.fetch_add(1, std::memory_order_acq_rel) != 0) {
+                // The other thread lists the moves and writes records, behind this sweep: share
+                // its writes, this grid's first (it is at them by now).
+                sweep.feed().help(record);
+                (grid == 0 ? *upperSweep_ : *lowerSweep_).feed().help(record);
+                return;
+            }
             drainGrid(grid);
             state = kWaiting;
             if (sweepState[1 - grid].compare_exchange_strong(state, kWritesItsOwn, std::memory_order_acq_rel)) return;

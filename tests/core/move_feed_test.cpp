@@ -2,11 +2,15 @@
 // grain records): every move arrives once and in order while the producer still runs, also the
 // moves beyond the room given at start, which wait in an overflow until the sweep ends. A sweep
 // never moves more grains than it has, so no scene reaches the overflow: only this test does.
+// A helper that claims chunks of a finished feed's records shares the writes: each record is
+// written exactly once, by one of the two, and the consumer still lists every move in order.
 #include "move_feed.hpp"
 
 #include <doctest/doctest.h>
 
+#include <atomic>
 #include <cstdint>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -16,6 +20,18 @@ namespace {
 
 GrainMove moveNumber(std::uint32_t n) {
     return {n, 1000 + n, MoveCode(n % 27), n % 2 == 0 ? GridLevel::Lower : GridLevel::Upper};
+}
+
+// Counts the record writes of each move (by grain) and the look-aheads.
+struct CountingRecorder {
+    std::vector<std::atomic<int>>* writes;
+    std::atomic<int>* asked;
+    void operator()(const GrainMove& move) const { (*writes)[move.grain].fetch_add(1, std::memory_order_relaxed); }
+    void ask(const GrainMove&) const { asked->fetch_add(1, std::memory_order_relaxed); }
+};
+
+auto appendTo(std::vector<GrainMove>& drained) {
+    return [&drained](std::span<const GrainMove> moves) { drained.insert(drained.end(), moves.begin(), moves.end()); };
 }
 
 // Feeds `count` moves from another thread (publishing as a sweep does) while this thread drains
@@ -30,7 +46,7 @@ std::vector<GrainMove> feedAndDrain(MoveFeed& feed, std::size_t room, std::uint3
         feed.finish();
     });
     std::vector<GrainMove> drained;
-    feed.drain([&](const GrainMove& move) { drained.push_back(move); });
+    feed.drain(appendTo(drained));
     producer.join();
     return drained;
 }
@@ -69,6 +85,60 @@ TEST_CASE("a finished move feed drains at once, and an empty one gives nothing")
     for (std::uint32_t n = 0; n < 9; ++n) feed.push(moveNumber(n));
     feed.finish();
     std::vector<GrainMove> drained;
-    feed.drain([&](const GrainMove& move) { drained.push_back(move); });
+    feed.drain(appendTo(drained));
     checkInOrder(drained, 9);
+}
+
+TEST_CASE("a helper shares a move feed's record writes: each record is written once, every move listed in order") {
+    constexpr std::uint32_t count = 20000;
+    for (const std::size_t room : {std::size_t(count), std::size_t(5000)}) { // 15,000 past the room
+        CAPTURE(room);
+        MoveFeed feed;
+        feed.start(room);
+        std::vector<std::atomic<int>> writes(count);
+        std::atomic<int> asked{0};
+        const CountingRecorder record{&writes, &asked};
+        std::atomic<bool> finished{false};
+        // The producer finishes, then helps, as the thread whose sweep ends last does.
+        std::thread producer([&] {
+            for (std::uint32_t n = 0; n < count; ++n) {
+                feed.push(moveNumber(n));
+                feed.publishSome();
+            }
+            feed.finish();
+            finished.store(true, std::memory_order_release);
+            feed.help(record);
+        });
+        std::vector<GrainMove> drained;
+        feed.drain(appendTo(drained), record);
+        producer.join();
+        checkInOrder(drained, count);
+        int wrongCounts = 0;
+        for (const std::atomic<int>& n : writes) wrongCounts += n.load() == 1 ? 0 : 1;
+        CHECK(wrongCounts == 0);
+        CHECK(asked.load() == int(std::min<std::size_t>(room, count))); // every move in the room asked for ahead, once
+        CHECK(finished.load());
+    }
+}
+
+TEST_CASE("a helper of a feed drained already, or of an empty one, writes nothing") {
+    MoveFeed feed;
+    std::vector<std::atomic<int>> writes(100);
+    std::atomic<int> asked{0};
+    const CountingRecorder record{&writes, &asked};
+    feed.start(100);
+    for (std::uint32_t n = 0; n < 100; ++n) feed.push(moveNumber(n));
+    feed.finish();
+    std::vector<GrainMove> drained;
+    feed.drain(appendTo(drained), record);
+    feed.help(record);
+    checkInOrder(drained, 100);
+    for (const std::atomic<int>& n : writes) CHECK(n.load() == 1);
+    feed.start(100);
+    feed.finish();
+    feed.help(record);
+    drained.clear();
+    feed.drain(appendTo(drained), record);
+    CHECK(drained.empty());
+    for (const std::atomic<int>& n : writes) CHECK(n.load() == 1);
 }
