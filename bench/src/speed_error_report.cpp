@@ -157,7 +157,7 @@ Section throughputSection(const ReportOptions& options, std::ostream& log) {
         "Moves per second while the procedural hourglass at resolution " + std::to_string(resolution) +
         " drains until settled (sleeping grains skipped), the runs taking turns of 16 steps in one process (so "
         "a burst of load from elsewhere hits every run alike; the other run's steps evict what a step would find "
-        "in the caches, which on a quiet 2-thread host cost the 2-thread step 6-8% against a run alone, "
+        "in the caches, which on a quiet 2-thread host cost an earlier build's 2-thread step 6-8% against a run alone, "
         "docs/performance.md, Threads), next to what "
         "this machine's memory does at all, measured just before: a copy of a buffer larger than the caches and "
         "4-byte writes to random places in it. A move writes two cells of the grid (often in one cache line) and "
