@@ -862,7 +862,10 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
     // neither the look ahead nor the visit loads it again (about 1%). The classic loop keeps its
     // row-ahead hint: the same queue made its step 14-20% slower.
     std::vector<StripLog::Cell>& queue = logs_[std::size_t(strips.front())].awake;
-    queue.clear();
+    const std::size_t most = strips.size() * std::size_t(kStripRows) * std::size_t(size_.x);
+    if (queue.size() < most) queue.resize(most);
+    StripLog::Cell* const queued = queue.data();
+    std::size_t count = 0;
     forEachRow([&](int z) {
         const std::uint32_t row = std::uint32_t(y) * std::uint32_t(size_.z) + std::uint32_t(z);
         if (!rowAwake_[row]) return;
@@ -879,7 +882,7 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
             stillAwake |= visitedEarly;
             const std::uint64_t moving = motion[w].inMotion;
             forEachBit(w, bits, [&](int x) {
-                queue.push_back({std::uint32_t(x), std::uint32_t((moving >> (x & 63)) & 1), std::uint32_t(z)});
+                queued[count++] = {std::uint32_t(x), std::uint32_t((moving >> (x & 63)) & 1), std::uint32_t(z)};
             });
         }
         rowAwake_[row] = stillAwake != 0;
@@ -887,22 +890,21 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
     const std::uint32_t layerRowStart = std::uint32_t(y) * std::uint32_t(size_.z);
     const auto rowOf = [&](const StripLog::Cell& c) { return layerRowStart + c.z; };
     const auto cellOf = [&](const StripLog::Cell& c) { return rowOf(c) * std::uint32_t(size_.x) + c.x; };
-    const std::size_t count = queue.size();
     for (std::size_t n = 0; n < count; ++n) {
         if (n + kCellsAhead < count) {
-            const CellValue* cell = strip.cells + cellOf(queue[n + kCellsAhead]);
+            const CellValue* cell = strip.cells + cellOf(queued[n + kCellsAhead]);
             __builtin_prefetch(cell);
             __builtin_prefetch(cell - strip.grid.layerSize());
         }
         if (n + kStatesAhead < count) {
-            const StripLog::Cell ahead = queue[n + kStatesAhead];
+            const StripLog::Cell ahead = queued[n + kStatesAhead];
             if (ahead.inMotion) {
                 const CellValue grain = strip.cells[cellOf(ahead)];
                 if (grain >= 0) __builtin_prefetch(strip.falls.data() + grain);
             }
         }
-        const StripLog::Cell at = queue[n];
-        if (context.feed && n > 0 && at.z != queue[n - 1].z) context.feed->publishSome(); // a row done
+        const StripLog::Cell at = queued[n];
+        if (context.feed && n > 0 && at.z != queued[n - 1].z) context.feed->publishSome(); // a row done
         visit(int(at.x), int(at.z), at.inMotion);
     }
     if (context.feed) context.feed->publishSome();

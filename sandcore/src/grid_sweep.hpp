@@ -60,7 +60,9 @@ struct StripLog {
     /// Granular: grains whose fall changed without a move in this sweep (SceneCounters).
     std::int64_t speedChanges = 0;
     /// Granular: the awake cells a sweep of this strip visits in the current layer's turn (of all
-    /// the strips of its phase, where one thread sweeps them), in visiting order.
+    /// the strips of its phase, where one thread sweeps them), in visiting order: room for every
+    /// cell of those strips, filled from the front through a plain pointer (a push_back's end
+    /// pointer, stored and read back each time, chained the pushes), the count kept by the loop.
     struct Cell {
         std::uint32_t x : 31;
         /// Its in-motion bit as the queue was made: a layer's in-motion bits change in its turn
