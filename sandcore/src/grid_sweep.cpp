@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cassert>
 #include <cstring>
 #include <span>
 #include <utility>
@@ -861,7 +862,9 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
     // carries its cell's in-motion bit, read with the carried-early word of the same cells, so
     // neither the look ahead nor the visit loads it again (about 1%). The classic loop keeps its
     // row-ahead hint: the same queue made its step 14-20% slower.
-    std::vector<StripLog::Cell>& queue = logs_[std::size_t(strips.front())].awake;
+    // One strip (threads sharing a phase) in that strip's queue, a phase on one thread in the
+    // sweep's: each has room for every cell it may hold, made once.
+    std::vector<StripLog::Cell>& queue = strips.size() == 1 ? logs_[std::size_t(strips.front())].awake : phaseQueue_;
     const std::size_t most = strips.size() * std::size_t(kStripRows) * std::size_t(size_.x);
     if (queue.size() < most) queue.resize(most);
     StripLog::Cell* const queued = queue.data();
@@ -882,6 +885,7 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
             stillAwake |= visitedEarly;
             const std::uint64_t moving = motion[w].inMotion;
             forEachBit(w, bits, [&](int x) {
+                assert(count < most); // awake bits lie only on cells of the strips' rows
                 queued[count++] = {std::uint32_t(x), std::uint32_t((moving >> (x & 63)) & 1), std::uint32_t(z)};
             });
         }

@@ -59,10 +59,11 @@ struct StripLog {
     std::vector<std::uint32_t> left;
     /// Granular: grains whose fall changed without a move in this sweep (SceneCounters).
     std::int64_t speedChanges = 0;
-    /// Granular: the awake cells a sweep of this strip visits in the current layer's turn (of all
-    /// the strips of its phase, where one thread sweeps them), in visiting order: room for every
-    /// cell of those strips, filled from the front through a plain pointer (a push_back's end
-    /// pointer, stored and read back each time, chained the pushes), the count kept by the loop.
+    /// Granular: the awake cells a sweep of this strip visits in the current layer's turn, where
+    /// threads share the phase's strips (one thread's phase: GridSweep::phaseQueue_), in visiting
+    /// order: room for every cell of the strip, filled from the front through a plain pointer (a
+    /// push_back's end pointer, stored and read back each time, chained the pushes), the count
+    /// kept by the loop.
     struct Cell {
         std::uint32_t x : 31;
         /// Its in-motion bit as the queue was made: a layer's in-motion bits change in its turn
@@ -292,6 +293,7 @@ private:
     LayoutBits layout_;
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
     std::array<std::vector<int>, 2> turnStrips_; // granular: the strips of the current layer's turn, by phase
+    std::vector<StripLog::Cell> phaseQueue_;      // granular: the awake cells of a phase one thread sweeps (StripLog::awake)
     // Granular: the cells left in this sweep's turns whose own-layer wakes wait for the sweep's
     // end, when most of them are taken again (the grain above fell in) and wake nobody.
     std::vector<Int3> leftEarlier_;

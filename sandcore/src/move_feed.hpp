@@ -1,6 +1,7 @@
 #pragma once
 // The moves of one grid's sweep, handed while the sweep runs to the thread that writes
-// their grain records (one producer, one consumer). Private to sandcore.
+// their grain records (one producer, one consumer, and once the producer has finished any number
+// of helpers that share the record writes). Private to sandcore.
 //
 // When the two grids are swept side by side, grains moving in both at once have nearby ids, so
 // two threads writing grain records would keep stealing each other's cache lines (writing them
@@ -9,8 +10,9 @@
 // both, the other's while that one still sweeps. The longer sweep is then relieved of its own
 // record writes, which balances the two threads. The writes left when the longer sweep ends
 // (in the million-grain classic drain, most steps) are shared: that thread claims chunks of
-// them too, while the first lists every move (a helper; no sweep runs any more, and the two
-// threads' chunks are far apart in the feed).
+// them too, while the first lists every move (a helper). Then no sweep runs any more; the two
+// threads write records of neighbouring chunks, whose ids lie apart but for a shared line now
+// and then, which the timings show no cost of.
 
 #include "sandcore/grain_store.hpp"
 

@@ -171,8 +171,10 @@ void Scene::step() {
         // The thread whose sweep ends first writes the records of both grids' moves and lists
         // them: its own grid's at once, then the other's as they are fed. A sweep that no thread
         // has started by then (its worker is not running) writes its own after it, on whichever
-        // thread takes it: nobody waits for a sweep that has not begun. Only one thread at a time
-        // writes grain records or movedGrains_ during the loop; a sweep reads neither.
+        // thread takes it: nobody waits for a sweep that has not begun. While a sweep runs, only
+        // one thread writes grain records, and only one ever writes movedGrains_; a sweep reads
+        // neither. Once both sweeps are over, the thread whose sweep ended last writes records of
+        // the chunks it claims too (MoveFeed::help), each record still written by one thread.
         enum : int { kWaiting, kStarted, kWritesItsOwn };
         std::atomic<int> sweepState[2] = {kWaiting, kWaiting};
         std::atomic<int> sweepsDone{0};
@@ -192,7 +194,7 @@ void Scene::step() {
             if (writesItsOwn) return drainGrid(grid);
             if (sweepsDone.fetch_add(1, std::memory_order_acq_rel) != 0) {
                 // The other thread lists the moves and writes records, behind this sweep: share
-                // its writes, this grid's first (it is at them by now).
+                // the writes still left, this grid's first (usually where the other thread is).
                 sweep.feed().help(record);
                 (grid == 0 ? *upperSweep_ : *lowerSweep_).feed().help(record);
                 return;

@@ -98,8 +98,10 @@ TEST_CASE("a helper shares a move feed's record writes: each record is written o
         std::vector<std::atomic<int>> writes(count);
         std::atomic<int> asked{0};
         const CountingRecorder record{&writes, &asked};
+        // The producer finishes, then helps, as the thread whose sweep ends last does with its
+        // own feed; a third thread helps once it has seen the producer finish, as that thread
+        // does with the other grid's feed.
         std::atomic<bool> finished{false};
-        // The producer finishes, then helps, as the thread whose sweep ends last does.
         std::thread producer([&] {
             for (std::uint32_t n = 0; n < count; ++n) {
                 feed.push(moveNumber(n));
@@ -109,16 +111,42 @@ TEST_CASE("a helper shares a move feed's record writes: each record is written o
             finished.store(true, std::memory_order_release);
             feed.help(record);
         });
+        std::thread helper([&] {
+            while (!finished.load(std::memory_order_acquire)) std::this_thread::yield();
+            feed.help(record);
+        });
         std::vector<GrainMove> drained;
         feed.drain(appendTo(drained), record);
         producer.join();
+        helper.join();
         checkInOrder(drained, count);
         int wrongCounts = 0;
         for (const std::atomic<int>& n : writes) wrongCounts += n.load() == 1 ? 0 : 1;
         CHECK(wrongCounts == 0);
-        CHECK(asked.load() == int(std::min<std::size_t>(room, count))); // every move in the room asked for ahead, once
-        CHECK(finished.load());
+        // Each record written from the room (not the overflow) had its line asked for first.
+        CHECK(asked.load() == int(std::min<std::size_t>(room, count)));
     }
+}
+
+TEST_CASE("a helper that comes first writes every record of the room, and the consumer lists all and writes the overflow's") {
+    constexpr std::uint32_t count = 6000, room = 5000;
+    MoveFeed feed;
+    feed.start(room);
+    for (std::uint32_t n = 0; n < count; ++n) feed.push(moveNumber(n));
+    feed.finish();
+    std::vector<std::atomic<int>> byHelper(count), byConsumer(count);
+    std::atomic<int> asked{0};
+    feed.help(CountingRecorder{&byHelper, &asked});
+    std::vector<GrainMove> drained;
+    feed.drain(appendTo(drained), CountingRecorder{&byConsumer, &asked});
+    checkInOrder(drained, count);
+    int wrong = 0;
+    for (std::uint32_t n = 0; n < count; ++n)
+        wrong += (n < room ? byHelper[n].load() == 1 && byConsumer[n].load() == 0
+                           : byHelper[n].load() == 0 && byConsumer[n].load() == 1)
+                     ? 0
+                     : 1;
+    CHECK(wrong == 0);
 }
 
 TEST_CASE("a helper of a feed drained already, or of an empty one, writes nothing") {
