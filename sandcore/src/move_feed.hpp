@@ -102,9 +102,6 @@ public:
 #endif
         }
     }
-    /// Consumer, where nothing needs recording: calls list(moves) for every move in order.
-    template <class List> void drain(List&& list) { drain(list, NoRecord{}); }
-
     /// Any thread, once the producer has finished (and the caller has seen it finish): calls
     /// record(move) for the moves of each chunk it claims before the consumer does, until none is
     /// left, so a thread with nothing else to do shares the consumer's writes. Lists nothing; the
@@ -119,10 +116,6 @@ public:
     }
 
 private:
-    struct NoRecord {
-        void operator()(const GrainMove&) const {}
-        void ask(const GrainMove&) const {}
-    };
     static constexpr std::size_t kBatch = 32;
     // Moves claimed at once by the consumer or a helper; each record write misses the cache, so
     // the line of the record kAhead moves on is asked for first and several misses overlap.
