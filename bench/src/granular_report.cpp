@@ -160,7 +160,7 @@ std::string neckPart(const ReportOptions& options, std::ostream& log, bool& pass
            "alone the rate follows the supply around the neck, not the neck. The model lets through "
            "C sqrt(g) (D - k)^2.5 grains a step (C = 0.58, k = 1.5 cells, a cell being one grain), D from the "
            "neck row's open cells; the sand around the neck must keep up, which it does up to about 0.15 grains "
-           "per neck cell and step (a neck of radius 4.5 at this gravity asks 0.157 and gets 0.149, CV 10.7%). Mankoc et al. (2007) measured the same law, with C = 0.58 "
+           "per neck cell and step (a neck of radius 4.5 at this gravity asks 0.157 and gets 0.150, CV 9.2%). Mankoc et al. (2007) measured the same law, with C = 0.58 "
            "and k = 1.5 grain diameters, for orifices of 1.5 to 30 grain diameters; here it is imposed, so the "
            "agreement shows that the cells deliver what the model asks, not that they explain it.\n\n" +
            toMarkdown(table) + "\nFitted exponent n of Q = c (D - 1.5)^n over the four necks: **" + fixed(exponent, 3) +

@@ -18,24 +18,25 @@ constexpr std::uint32_t kMaxFallSpeed = 4096u * kOneCell;
 
 // Measured: for each slope T and diagonal stiffening s (thresholds T (1 + s sin^2 2phi) |e| for a
 // slide at angle phi from the grid's x axis), the mean angle of a cone poured at one column
-// (granular_probe pour). Grains find the lowest of the thresholds around them, so the cone stands
-// well below atan(T); the lattice favours some directions, differently at each angle, and s evens
-// them out. From 28.5 to 38 degrees each point's s was chosen so the 4 diagonal directions stand
-// within 0.3 degrees of the 4 axis directions (means over 8 cones of 80,000 grains): there the
-// diagonals had stood up to 1.8 degrees steeper and are lowered. Below, they need raising (the
-// points up to 27 degrees keep their earlier thresholds); from 40 degrees on too, as the
-// lattice's own 45-degree facets take over along the axes above about 41 degrees (the points
-// from 40 keep their earlier thresholds: diagonals within 0.4 degrees of the axes at 40, 1.0
-// at 43, 1.2 at 45).
+// (granular_probe pour; means over 16 cones of 40,000 grains, 16 directions each). Grains find
+// the lowest of the thresholds around them, so the cone stands well below atan(T); the lattice
+// favours some directions, differently at each angle, and each point's s was chosen so the 4
+// diagonal directions stand within 0.3 degrees of the 4 axis directions (0.43 at 20.9 degrees).
+// Above about 41 degrees the lattice's own 45-degree facets can take over along the axes (a cone
+// then stands at 45 along the axes and 2 degrees lower along the diagonals): there the points are
+// those that kept the axes off them (diagonals within 0.3 degrees of the axes up to 43.8, 0.7
+// and 0.4 at 44.4 and 44.9).
 namespace {
 struct CalibrationPoint {
     double degrees, slope, diagonalStiffening;
 };
 constexpr CalibrationPoint kCalibration[] = {
-    {18.30, 0.5000, 0.080}, {20.73, 0.5577, 0.080}, {22.60, 0.5962, 0.080},  {24.33, 0.6202, 0.080},
-    {27.27, 0.7404, 0.026}, {28.55, 0.8467, -0.100}, {29.66, 0.8757, -0.091}, {30.71, 0.9000, -0.100},
-    {32.19, 0.9200, -0.100}, {33.36, 0.9350, -0.100}, {35.01, 0.9400, -0.040}, {36.32, 0.9500, 0.025},
-    {37.92, 0.9700, 0.080},  {40.07, 0.9850, 0.184},  {43.18, 1.0300, 0.256},  {46.36, 1.1000, 0.300},
+    {18.56, 0.5000, 0.080},  {18.98, 0.5577, -0.050}, {20.87, 0.5962, -0.030}, {22.17, 0.6202, -0.010},
+    {24.98, 0.6500, 0.060},  {26.89, 0.7000, 0.080},  {27.36, 0.7404, 0.026},  {28.91, 0.8467, -0.080},
+    {30.25, 0.8757, -0.070}, {30.89, 0.9000, -0.100}, {32.24, 0.9200, -0.100}, {33.13, 0.9350, -0.100},
+    {34.09, 0.9450, -0.100}, {36.06, 0.9500, 0.000},  {37.57, 0.9700, 0.047},  {39.91, 0.9860, 0.140},
+    {40.80, 0.9900, 0.200},  {41.90, 0.9950, 0.250},  {42.75, 0.9980, 0.280},  {43.80, 1.0100, 0.320},
+    {44.35, 1.0700, 0.270},  {44.85, 1.0800, 0.280},
 };
 } // namespace
 
@@ -263,7 +264,7 @@ GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, 
     return outcome;
 }
 
-GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty, std::uint64_t ditherKey, std::uint64_t stepKey,
+GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty, const ThresholdDither& dither, std::uint64_t stepKey,
                                      std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain,
                                      bool onVessel) const {
     const std::int64_t row = grid.size().x, layer = grid.layerSize();
@@ -283,12 +284,11 @@ GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty,
     std::uint64_t open = ((emptyBelow & kBelowCentre) | ((emptyBelow >> 1) & ~kBelowCentre)) & ~blocked;
     // On the glass (smoother than the sand) one free cell down is enough; on sand the column under
     // the path's end must be `need` deep, need = max(1, floor((T|e| + dither) / 256)) with a fixed
-    // dither per cell and offset (8 bits each, 8 offsets to a draw). The slides that need d cells
+    // dither per column and offset (8 bits each, 8 offsets to a word). The slides that need d cells
     // are a mask; layer by layer down, those whose column ends above it drop out.
     if (!onVessel && (open & (wholeAtLeast_[2] | wholeExactly_[1]))) {
-        const std::uint64_t cellHash = ditherCellHash(ditherKey, stream, from);
         std::uint64_t dithers[kOffsets / 8];
-        for (int group = 0; group < kOffsets / 8; ++group) dithers[group] = ditherGroup(cellHash, group);
+        for (int group = 0; group < kOffsets / 8; ++group) dithers[group] = dither.group(x, z, group);
         const std::uint64_t carry = carriesOf(dithers, restComplement_);
         std::uint64_t deep = ~std::uint64_t{0}; // columns EMPTY from layer y - 2 down to layer y - d
         for (int d = 2; d <= maxDrop_; ++d) {

@@ -9,9 +9,10 @@
 // 2. slide: a grain resting on something at rest may move to the cell one layer down in any
 //    column up to 3 cells away (48 offsets e) when the sideways path at its own level is clear
 //    and the column there is at least `need` cells deep, need = floor(T|e| + u): T a calibrated
-//    slope and u in [0, 1) a hash of (seed, cell, offset) that never changes with the step, so a
-//    grain that wakes up draws the same threshold and piles do not creep (PH2). The dither makes
-//    the angle continuous in T instead of locked to integer heights. Every move goes down at
+//    slope and u in [0, 1) fixed per column and offset (ThresholdDither: blue noise, picked by
+//    the seed) that never changes with the step, so a grain that wakes up meets the same
+//    threshold and piles do not creep (PH2). The dither makes the angle continuous in T instead
+//    of locked to integer heights. Every move goes down at
 //    least one layer, so grains never swap back and forth. One of the possible moves is chosen
 //    by a counter hash of (seed, step, grid, cell) (R3).
 //    A grain lying on the vessel (an INVALID cell below it) slides on the glass, which is smoother
@@ -33,6 +34,7 @@
 // they are: two grains of one layer never enter the same cell.
 
 #include "empty_cells.hpp"
+#include "threshold_dither.hpp"
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/counter_random.hpp"
 #include "sandcore/grain_store.hpp"
@@ -81,12 +83,8 @@ public:
 
     explicit GranularRules(const PhysicsSettings& physics);
 
-    /// The key of the thresholds' fixed dither for StepSettings::seed: the part of every dither
-    /// hash that depends on the seed alone, computed once per sweep rather than per grain.
-    static constexpr std::uint64_t ditherKey(std::uint64_t seed) { return mix64(seed ^ kDitherStream); }
-
     /// Applies the rules to the grain at (x, y, z), y >= 1, of `grid`, for the step whose
-    /// counterRandomStepKey is `stepKey`; `ditherKey`: ditherKey(seed); `stream`
+    /// counterRandomStepKey is `stepKey`; `dither`: the grid's under the seed; `stream`
     /// tells the grids apart in the random draws. bottomIsOutlet: the grid's layer 0 is open
     /// below (the upper grid), so a grain falling onto it keeps its speed. `falls`: the fall
     /// states of this grid's grains (GrainStore::fall of its level). A move changes the grid's
@@ -96,7 +94,7 @@ public:
     /// to date (the slides read their windows there; the caller updates them after a move).
     /// `step`: this step's number (a grain landing on a sleeping gatherer reads its state
     /// caughtUp to it). The visited grain's own state must be up to date (not asleep).
-    GranularOutcome visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls, std::uint64_t ditherKey,
+    GranularOutcome visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls, const ThresholdDither& dither,
                           std::uint64_t stepKey, std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z,
                           std::uint32_t from, std::uint64_t step, MotionHints hints = {}) const;
 
@@ -196,21 +194,20 @@ public:
     std::uint64_t grainsWithOpenPathTowardsCentre(std::uint64_t clear) const {
         return ~blockedTowardsCentre(clear) & ((std::uint64_t{1} << (kWindow * kWindow)) - 1);
     }
-    /// True when the grain in cell `from` of grid `stream` (off the vessel) needs the column of
-    /// slide k at least `depth` >= 2 cells deep: the dither of its threshold is fixed per cell
-    /// and offset, so a wake can tell that a cell emptied deeper down is none of its business.
-    /// ditherKey: ditherKey(seed). Inline: the wakes ask it for many grains, most of which it
-    /// answers from the threshold alone.
-    bool needsDepth(std::uint64_t ditherKey, std::uint64_t stream, std::uint32_t from, int k, int depth) const {
+    /// True when a grain in column (x, z) of the grid whose dither is `dither` (off the vessel)
+    /// needs the column of slide k at least `depth` >= 2 cells deep: the dither of its threshold
+    /// is fixed per column and offset, so a wake can tell that a cell emptied deeper down is none
+    /// of its business. Inline: the wakes ask it for many grains, most of which it answers from
+    /// the threshold alone.
+    bool needsDepth(const ThresholdDither& dither, int x, int z, int k, int depth) const {
         const int whole = int(offsets_[std::size_t(k)].thresholdQ8 >> 8);
         if (whole != depth - 1) return whole >= depth;
-        return carries(ditherKey, stream, from, k);
+        return carries(dither, x, z, k);
     }
-    /// True when the dither of slide k of the grain in cell `from` carries its threshold past the
+    /// True when the dither of slide k of a grain in column (x, z) carries its threshold past the
     /// whole cells: it needs the column one cell deeper than the threshold's whole part.
-    bool carries(std::uint64_t ditherKey, std::uint64_t stream, std::uint32_t from, int k) const {
-        const auto dither = (ditherGroup(ditherCellHash(ditherKey, stream, from), k / 8) >> (k % 8 * 8)) & 0xffu;
-        return dither > restComplement_[std::size_t(k)];
+    bool carries(const ThresholdDither& dither, int x, int z, int k) const {
+        return dither.of(x, z, k) > restComplement_[std::size_t(k)];
     }
     /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
     /// column has a threshold of `whole` whole cells (and a fraction): so needsDepth(d) is true
@@ -243,19 +240,11 @@ public:
     const Offset& offset(int k) const { return offsets_[std::size_t(k)]; }
 
 private:
-    // Stream of the fixed per-cell dither, apart from the per-step streams (the grid levels 0, 1).
-    static constexpr std::uint64_t kDitherStream = 0x3d;
-    // The dithers of a cell: one hash of (seed, grid, cell), then 8 offsets' bytes to a draw.
-    static std::uint64_t ditherCellHash(std::uint64_t ditherKey, std::uint64_t stream, std::uint32_t from) {
-        return mix64(ditherKey ^ (std::uint64_t(from) + (stream << 40)));
-    }
-    static std::uint64_t ditherGroup(std::uint64_t cellHash, int group) {
-        return mix64(cellHash + std::uint64_t(group) * 0x9e3779b97f4a7c15ull);
-    }
+    static_assert(ThresholdDither::kGroups * 8 == kOffsets, "a dither word holds 8 slides' bytes");
 
     GranularOutcome fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
                          std::uint32_t from, CellValue grain, bool mayBeMoving, std::uint64_t step) const;
-    GranularOutcome slide(CellGrid& grid, const EmptyCellBits& empty, std::uint64_t ditherKey, std::uint64_t stepKey,
+    GranularOutcome slide(CellGrid& grid, const EmptyCellBits& empty, const ThresholdDither& dither, std::uint64_t stepKey,
                           std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const;
 
     std::array<Offset, kOffsets> offsets_{};
@@ -297,7 +286,7 @@ private:
 
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.
 inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls,
-                                            std::uint64_t ditherKey, std::uint64_t stepKey, std::uint64_t stream, bool bottomIsOutlet,
+                                            const ThresholdDither& dither, std::uint64_t stepKey, std::uint64_t stream, bool bottomIsOutlet,
                                             int x, int y, int z, std::uint32_t from, std::uint64_t step,
                                             MotionHints hints) const {
     const CellValue grain = grid[from];
@@ -320,11 +309,11 @@ inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits&
     }
     if (hints.grain && (falls[id].speed | falls[id].fraction)) { // it was in motion and stops here
         falls[id] = FallState{};
-        GranularOutcome outcome = slide(grid, empty, ditherKey, stepKey, stream, x, y, z, from, grain, below == kInvalid);
+        GranularOutcome outcome = slide(grid, empty, dither, stepKey, stream, x, y, z, from, grain, below == kInvalid);
         outcome.stopped = outcome.kind == GranularOutcome::Resting;
         return outcome;
     }
-    return slide(grid, empty, ditherKey, stepKey, stream, x, y, z, from, grain, below == kInvalid);
+    return slide(grid, empty, dither, stepKey, stream, x, y, z, from, grain, below == kInvalid);
 }
 
 /// The thresholds that make a poured cone stand at `reposeDegrees`, as round as the lattice lets

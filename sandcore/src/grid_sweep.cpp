@@ -46,7 +46,7 @@ constexpr auto kNthSetBit = [] {
 } // namespace
 
 GridSweep::GridSweep(Int3 gridSize, bool bottomIsOutlet)
-    : size_(gridSize), bottomIsOutlet_(bottomIsOutlet), ditherKey_(GranularRules::ditherKey(0)), rowWords_((gridSize.x + 63) / 64) {
+    : size_(gridSize), bottomIsOutlet_(bottomIsOutlet), dither_(0, stream()), rowWords_((gridSize.x + 63) / 64) {
     const std::size_t rows = std::size_t(gridSize.y) * std::size_t(gridSize.z);
     words_.assign(rows * std::size_t(rowWords_), RowWord{});
     rowAwake_.assign(rows, 0);
@@ -61,7 +61,7 @@ void GridSweep::setGranular(const GranularRules* granular) {
     layout_ = granular ? LayoutBits(size_) : LayoutBits();
 }
 
-void GridSweep::setSeed(std::uint64_t seed) { ditherKey_ = GranularRules::ditherKey(seed); }
+void GridSweep::setSeed(std::uint64_t seed) { dither_ = ThresholdDither(seed, stream()); }
 
 void GridSweep::readEmptyCells(const CellGrid& grid) {
     if (!granular_) return;
@@ -241,7 +241,7 @@ void GridSweep::wakeSleepingGrainsAround(const CellGrid& grid, int x, int y, int
                 const int dx = bit % kGranularWindow - kGranularReach, dz = bit / kGranularWindow - kGranularReach;
                 const std::uint32_t from = grid.index(x + dx, y, z + dz);
                 const int slide = GranularRules::offsetIndex(t % (2 * across + 1) - across - dx, t / (2 * across + 1) - across - dz);
-                if (liesOnVessel(grid, from) || !granular_->needsDepth(ditherKey_, stream(), from, slide, 2))
+                if (liesOnVessel(grid, from) || !granular_->needsDepth(dither_, x + dx, z + dz, slide, 2))
                     gaining |= std::uint64_t{1} << bit;
             }
         }
@@ -353,14 +353,14 @@ std::uint64_t GridSweep::deepEnoughForSlidesInto(const CellGrid& grid, std::uint
         for (; grains; grains &= grains - 1) {
             const int bit = __builtin_ctzll(grains);
             const int dx = bit % kGranularWindow - reach, dz = bit / kGranularWindow - reach; // the grain, from (x, z)
-            if (gains(grid.index(x + dx, y, z + dz), GranularRules::offsetIndex(-dx, -dz))) gaining |= std::uint64_t{1} << bit;
+            if (gains(x + dx, z + dz, GranularRules::offsetIndex(-dx, -dz))) gaining |= std::uint64_t{1} << bit;
         }
     };
-    eachGrain(ifCarried, [&](std::uint32_t from, int slide) { return rules.carries(ditherKey_, stream(), from, slide); });
-    eachGrain(unlessCarried, [&](std::uint32_t from, int slide) {
-        return (layersAbove == 1 && liesOnVessel(grid, from)) || !rules.carries(ditherKey_, stream(), from, slide);
+    eachGrain(ifCarried, [&](int gx, int gz, int slide) { return rules.carries(dither_, gx, gz, slide); });
+    eachGrain(unlessCarried, [&](int gx, int gz, int slide) {
+        return (layersAbove == 1 && liesOnVessel(grid, grid.index(gx, y, gz))) || !rules.carries(dither_, gx, gz, slide);
     });
-    eachGrain(ifOnVessel, [&](std::uint32_t from, int) { return liesOnVessel(grid, from); });
+    eachGrain(ifOnVessel, [&](int gx, int gz, int) { return liesOnVessel(grid, grid.index(gx, y, gz)); });
     return gaining;
 }
 
@@ -582,7 +582,8 @@ struct GridSweep::GranularStrip {
     CellGrid& grid;
     CellValue* cells;
     std::span<FallState> falls;
-    std::uint64_t ditherKey, stepKey, stream; // GridSweep::ditherKey_, SweepContext::stepKey
+    const ThresholdDither& dither; // GridSweep::dither_
+    std::uint64_t stepKey, stream; // SweepContext::stepKey
     std::size_t layerWords; // words of awake and in-motion bits per layer
     RowWord* words;
     MotionWord* motion;
@@ -633,7 +634,7 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
             strip.rowAwake[row - std::uint32_t(strip.sizeZ)] = 1;
         }
     }
-    const GranularOutcome outcome = granular_->visit(strip.grid, empty_, strip.falls, strip.ditherKey, strip.stepKey, strip.stream,
+    const GranularOutcome outcome = granular_->visit(strip.grid, empty_, strip.falls, strip.dither, strip.stepKey, strip.stream,
                                                      bottomIsOutlet_, x, y, z, from, context.step, hints);
     // The bit follows the grain's state: cleared where it was, set where it is when in motion.
     if (outcome.kind == GranularOutcome::Moved) {
@@ -793,7 +794,7 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
     const GranularStrip strip{context.grid,
                               context.grid.cells().data(),
                               context.grains.fall[std::size_t(context.level)],
-                              ditherKey_, // the wakes' key too: one source for both
+                              dither_, // the wakes' too: one source for both
                               context.stepKey,
                               std::uint64_t(context.level),
                               std::size_t(size_.z) * std::size_t(rowWords_),

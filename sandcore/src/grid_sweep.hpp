@@ -259,7 +259,7 @@ private:
     bool bottomIsOutlet_;
     GridSweep* above_ = nullptr;
     const GranularRules* granular_ = nullptr;
-    std::uint64_t ditherKey_; // GranularRules::ditherKey of the seed (of seed 0 until setSeed)
+    ThresholdDither dither_; // the granular thresholds' under the seed (seed 0 until setSeed)
     bool deferWakesAbove_ = false;
     std::vector<std::uint32_t> deferredWakesAbove_; // x + sizeX * z of the outlet cells to wake
     int rowWords_;                       // 64-bit words per row of awake bits

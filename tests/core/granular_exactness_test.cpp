@@ -120,8 +120,9 @@ TEST_CASE("granular: the upper bulb empties to the last grain, since grains on t
     // the sand's thresholds on the glass too, the last grains of this drain (2 for seed 1) stayed
     // in the upper grid. (Some seeds pile this small lower bulb up into the neck either way, as
     // classic does: 5 grains stay with its rules. Since the granular sweep turns its order with
-    // the step, seeds 1, 2, 5 and 7 do so: their lower pile reaches the neck row.)
-    for (std::uint64_t seed : {3u, 4u, 6u}) {
+    // the step, seeds 1, 2, 5 and 7 did so: their lower pile reached the neck row. Since the
+    // thresholds' dither is blue noise, seeds 3 and 12 of 1-12 do.)
+    for (std::uint64_t seed : {4u, 6u, 7u}) {
         Scene scene = granularHourglass(seed, 32, 2.5f, 0.02f);
         const std::int64_t grains = scene.grainCount();
         REQUIRE(grains > 1000);
@@ -137,7 +138,7 @@ TEST_CASE("granular: grains lying on the glass are woken as a full sweep finds t
     // A grain on the vessel needs one free cell down where a grain on sand may need its column
     // deeper, so the wakes that look at a grain's need must tell the two apart. The end of a
     // drain, when the last grains slide down the glass of the upper bulb, is where that matters.
-    Scene sleeping = granularHourglass(3, 32, 2.5f, 0.02f), full = granularHourglass(3, 32, 2.5f, 0.02f);
+    Scene sleeping = granularHourglass(4, 32, 2.5f, 0.02f), full = granularHourglass(4, 32, 2.5f, 0.02f);
     full.setSleeping(false);
     int steps = 0;
     while (!sleeping.settled() && steps < 20'000) {
@@ -195,11 +196,11 @@ TEST_CASE("granular: recorded state hashes (classic's stay in determinism_test.c
     // say why in the commit. Classic's recorded hashes live in test_determinism.cpp.
     Scene hourglass = granularHourglass(7);
     for (int i = 0; i < 300; ++i) hourglass.step();
-    CHECK(hourglass.stateHash() == 0x1c48d14be6d3c493ull);
+    CHECK(hourglass.stateHash() == 0x7284faa0d024bd2eull);
     Scene sculpture = granularSculpture(7);
     sculpture.setThreads(2);
     for (int i = 0; i < 100; ++i) sculpture.step();
-    CHECK(sculpture.stateHash() == 0xdb0d0ea5d49034ceull);
+    CHECK(sculpture.stateHash() == 0xff33c3eb371c1916ull);
 }
 
 TEST_CASE("granular: a slab wider than a word of bits collapses alike on 1 and 3 threads and in a full sweep, "
@@ -222,8 +223,9 @@ TEST_CASE("granular: a slab wider than a word of bits collapses alike on 1 and 3
     // was first the one the rules reached when they read the cells themselves (the build before
     // the bits); since a layer's paths read it as its turn began (granular_rules.hpp), it is the
     // one recorded then, and since the thresholds were calibrated for a round cone at every angle,
-    // the one recorded then (every read of the bits is compared with the cells in empty_cell_bits_test.cpp).
-    CHECK(one.stateHash() == 0xfc9d66b165847128ull);
+    // and again since their dither is blue noise, the one recorded then (every read of the bits
+    // is compared with the cells in empty_cell_bits_test.cpp).
+    CHECK(one.stateHash() == 0x4ecff909cdf9e30full);
 }
 
 TEST_CASE("granular and classic differ, and switching the level mid-run takes effect") {

@@ -160,13 +160,13 @@ TEST_CASE("granular wake tables: the grains around a column by the whole cells o
             int whole = 0;
             while (!(rules.towardsCentreWithWhole(whole) >> bit & 1)) ++whole;
             for (int trial = 0; trial < 50; ++trial) {
-                const auto from = std::uint32_t(random() >> 40);
-                const std::uint64_t key = random(), stream = random() & 1;
-                const bool carried = rules.carries(key, stream, from, slide);
+                const int x = int(random() % 500), z = int(random() % 500);
+                const ThresholdDither dither(random(), random() & 1);
+                const bool carried = rules.carries(dither, x, z, slide);
                 for (int depth = 2; depth <= rules.maxDrop() + 1; ++depth) {
                     const bool expected = depth <= whole || (depth == whole + 1 && carried);
-                    if (rules.needsDepth(key, stream, from, slide, depth) != expected)
-                        FAIL("grain at (" << dx << ", " << dz << "), depth " << depth << ", cell " << from);
+                    if (rules.needsDepth(dither, x, z, slide, depth) != expected)
+                        FAIL("grain at (" << dx << ", " << dz << "), depth " << depth << ", column " << x << ", " << z);
                     const bool atLeast = rules.towardsCentreWithWholeAtLeast(depth) >> bit & 1;
                     CHECK(atLeast == (whole >= depth));
                 }
