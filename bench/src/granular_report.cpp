@@ -260,7 +260,7 @@ GranularSection granularSection(const ReportOptions& options, std::ostream& log)
     const std::string cost = costPart(options, log, passed);
     section.passed = passed;
     section.markdown = "## Granular physics\n\n`--physics granular` (SPEC PH1-PH7): slides up to 3 columns away "
-                       "against a dithered, calibrated threshold; gravity with multi-cell falls; the hourglass's "
+                       "against a calibrated threshold dithered by blue noise; gravity with multi-cell falls; the hourglass's "
                        "neck at Beverloo's rate.\n\n" + repose + fall + necks + cost;
     return section;
 }
