@@ -96,7 +96,7 @@ const std::array<std::uint64_t, kDitherTileSide * kDitherTileSide>& ThresholdDit
     return words;
 }
 
-ThresholdDither::ThresholdDither(std::uint64_t seed, std::uint64_t stream) {
+ThresholdDither::ThresholdDither(std::uint64_t seed, std::uint64_t stream) : words_(wordTile().data()) {
     const std::uint64_t key = mix64(mix64(seed ^ 0x3d) ^ stream);
     // Each word's 8 views lie 8 columns apart in x; the words' views apart in z by 10 or 11 rows
     // (64 / 6), from a z picked by the seed, and anywhere in x: no two of the 48 views are within

@@ -47,7 +47,7 @@ public:
     /// j is slide 8 * group + j's.
     std::uint64_t group(int x, int z, int group) const {
         const auto g = std::size_t(group);
-        return wordTile()[std::size_t((x + shiftX_[g]) & kMask) | std::size_t((z + shiftZ_[g]) & kMask) << kBits];
+        return words_[std::size_t((x + shiftX_[g]) & kMask) | std::size_t((z + shiftZ_[g]) & kMask) << kBits];
     }
     /// The dither of slide k (0..47) of a grain in column (x, z), 0..255.
     std::uint32_t of(int x, int z, int k) const { return std::uint32_t(group(x, z, k / 8) >> (k % 8 * 8)) & 0xffu; }
@@ -57,6 +57,7 @@ private:
     static_assert(1 << kBits == kDitherTileSide);
     // Entry (x, z): byte j is the tile at (x + 8j, z): the 8 offsets of a word, 8 columns apart.
     static const std::array<std::uint64_t, kDitherTileSide * kDitherTileSide>& wordTile();
+    const std::uint64_t* words_; // wordTile(), held so a look-up needs no check that it is made
     std::array<int, kGroups> shiftX_{}, shiftZ_{};
 };
 
