@@ -25,9 +25,11 @@ constexpr std::uint32_t kMaxFallSpeed = 4096u * kOneCell;
 // Above about 41 degrees the lattice's own 45-degree facets can take over along the axes (a cone
 // then stands at 45 along the axes and 2 degrees lower along the diagonals): there the points are
 // those that kept the axes off them (diagonals within 0.3 degrees of the axes up to 42.9, then
-// steeper by 0.4, 1.35, 0.7 and 0.4 at 43.3, 43.8, 44.4 and 44.9). A slope T of 1.0 to 1.005
-// makes the axis slides' needs whole numbers, and cones then take the facets: the two points
-// measured at 43.80 (T 0.998 and 1.01) are entered 0.01 degrees apart so the table steps over it.
+// steeper by 0.4, 1.35, 1.1, 0.7, 0.4 and 0.6 at 43.3, 43.8, 44.1, 44.4, 44.9 and 45.0). Near
+// T = 1 the needs of the slides along the axes are whole numbers, or nearly, and there cones took
+// the facets (asked 43 with a table that interpolated T 1.0009, s 0.29 there: axes at 44.97,
+// diagonals at 42.97): the two points measured at 43.80, T 0.998 and 1.01, are both entered at
+// 43.80, so the table steps from one to the other (the search below never pairs them).
 namespace {
 struct CalibrationPoint {
     double degrees, slope, diagonalStiffening;
@@ -38,7 +40,8 @@ constexpr CalibrationPoint kCalibration[] = {
     {30.25, 0.8757, -0.070}, {30.89, 0.9000, -0.100}, {32.24, 0.9200, -0.100}, {33.13, 0.9350, -0.100},
     {34.09, 0.9450, -0.100}, {36.06, 0.9500, 0.000},  {37.57, 0.9700, 0.047},  {39.91, 0.9860, 0.140},
     {40.80, 0.9900, 0.200},  {41.90, 0.9950, 0.250},  {42.88, 0.9980, 0.300},  {43.32, 0.9980, 0.340},
-    {43.80, 0.9980, 0.380},  {43.81, 1.0100, 0.320},  {44.35, 1.0700, 0.270},  {44.85, 1.0800, 0.280},
+    {43.80, 0.9980, 0.380},  {43.80, 1.0100, 0.320},  {44.08, 1.0500, 0.290},  {44.35, 1.0700, 0.270},
+    {44.85, 1.0800, 0.280},  {44.99, 1.0850, 0.280},
 };
 } // namespace
 

@@ -160,7 +160,7 @@ TEST_CASE("granular: switching sleeping off and on mid-run keeps the result") {
 }
 
 TEST_CASE("granular: a new seed wakes the grains at rest, whose thresholds it redraws") {
-    // A slide's threshold is dithered by a hash of the seed (granular_rules.hpp): a pile that
+    // The seed picks a slide's threshold dither (threshold_dither.hpp): a pile that
     // stands under one seed may not under another, so a sleeping grain must look again. Piles
     // settled under one seed, then stepped on under another, sleeping and in a full sweep.
     for (std::uint64_t seed : {1ull, 2ull, 3ull}) {

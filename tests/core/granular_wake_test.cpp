@@ -161,7 +161,8 @@ TEST_CASE("granular wake tables: the grains around a column by the whole cells o
             while (!(rules.towardsCentreWithWhole(whole) >> bit & 1)) ++whole;
             for (int trial = 0; trial < 50; ++trial) {
                 const int x = int(random() % 500), z = int(random() % 500);
-                const ThresholdDither dither(random(), random() & 1);
+                const std::uint64_t seed = random(), grid = random() & 1; // drawn in this order
+                const ThresholdDither dither(seed, grid);
                 const bool carried = rules.carries(dither, x, z, slide);
                 for (int depth = 2; depth <= rules.maxDrop() + 1; ++depth) {
                     const bool expected = depth <= whole || (depth == whole + 1 && carried);
