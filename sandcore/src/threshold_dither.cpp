@@ -5,10 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 namespace sandcore {
 
 std::vector<std::uint8_t> blueNoiseTile(int side, double sigma, std::uint32_t seed) {
+    // A start of a tenth of the cells needs at least one point; beyond a side of 4096 the int cell
+    // counts and the quadratic time are out of bounds.
+    if (side < 4 || side > 4096 || !(sigma > 0))
+        throw std::invalid_argument("blueNoiseTile: the side must be 4 to 4096 and sigma positive");
     const int cells = side * side;
     // The energy a point puts on the cells around it: a Gaussian of the distance across the
     // wrap, in integers so that sums and comparisons are exact.

@@ -32,7 +32,8 @@ extern const std::array<std::uint8_t, kDitherTileSide * kDitherTileSide> kDither
 /// A blue-noise tile of side x side bytes, row after row, by void and cluster: each of the side^2
 /// cells ranked by where it leaves the fewest gaps and clusters in the pattern of those ranked
 /// before it (energies in integers, so the result does not depend on the platform's rounding).
-/// The rank r becomes the byte r * 256 / side^2. `seed`: the initial random pattern.
+/// The rank r becomes the byte r * 256 / side^2. `seed`: the initial random pattern. Throws
+/// std::invalid_argument unless 4 <= side <= 4096 and sigma > 0.
 std::vector<std::uint8_t> blueNoiseTile(int side, double sigma, std::uint32_t seed);
 
 /// The dithers of one grid under one seed: a byte per column and offset, 8 offsets to a word.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 using namespace sandcore;
@@ -58,6 +59,8 @@ TEST_CASE("threshold dither: the kept tile is the generator's") {
     const std::vector<std::uint8_t> generated = blueNoiseTile(kSide, 1.9, 1);
     REQUIRE(generated.size() == kDitherTile.size());
     CHECK(std::equal(generated.begin(), generated.end(), kDitherTile.begin()));
+    CHECK_THROWS_AS(blueNoiseTile(3, 1.9, 1), std::invalid_argument); // too small for a start pattern
+    CHECK_THROWS_AS(blueNoiseTile(8, 0.0, 1), std::invalid_argument);
 }
 
 TEST_CASE("threshold dither: the tile holds every value equally often, spread as blue noise") {
