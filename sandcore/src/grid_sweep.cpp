@@ -264,25 +264,33 @@ GridSweep::WindowColumns GridSweep::windowColumnsAround(int x) const {
 }
 
 // The 7x7 cells around (x, z) of layer y (bit (dz + 3) * 7 + (dx + 3)) that hold a grain and are
-// not awake. Away from the grid's sides, where the 7 cells of a row lie in one word, a row is a
-// load and two shifts.
+// not awake. Away from the grid's sides, a row is a load and two shifts, or two loads where its 7
+// cells straddle two words.
 inline std::uint64_t GridSweep::sleepingGrainsAround(int x, int y, int z) const {
     constexpr int reach = kGranularReach, window = kGranularWindow;
     constexpr std::uint64_t rowMask = (std::uint64_t{1} << window) - 1;
     const int x0 = x - reach, offset = x0 & 63;
     const std::size_t stride = std::size_t(rowWords_);
-    if (x0 >= 0 && offset + window <= 64 && z >= reach && z + reach < size_.z) {
-        const RowWord* row = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z - reach)) * stride +
-                             std::size_t(x0 >> 6);
-        // Spelled out row by row: each row's place in the window is then a constant.
+    if (x0 < 0 || z < reach || z + reach >= size_.z) return sleepingGrainsAroundSide(x, y, z);
+    const RowWord* row =
+        words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z - reach)) * stride + std::size_t(x0 >> 6);
+    auto sleeping = [](const RowWord& word) { return word.occupied & ~word.awake; };
+    // Spelled out row by row: each row's place in the window is then a constant.
+    if (offset + window <= 64)
         return [&]<std::size_t... r>(std::index_sequence<r...>) {
-            return ((((row[r * stride].occupied & ~row[r * stride].awake) >> offset & rowMask) << (r * window)) | ...);
+            return (((sleeping(row[r * stride]) >> offset & rowMask) << (r * window)) | ...);
         }(std::make_index_sequence<window>{});
-    }
+    // Across two words (one window in ten): the next word's low bits follow on.
+    if ((x0 >> 6) + 1 < rowWords_)
+        return [&]<std::size_t... r>(std::index_sequence<r...>) {
+            return ((((sleeping(row[r * stride]) >> offset | sleeping(row[r * stride + 1]) << (64 - offset)) & rowMask)
+                     << (r * window)) |
+                    ...);
+        }(std::make_index_sequence<window>{});
     return sleepingGrainsAroundSide(x, y, z);
 }
 
-// Near a side (windowColumnsAround), or across two words; rows outside the grid are skipped.
+// Near a side (windowColumnsAround); rows outside the grid are skipped.
 std::uint64_t GridSweep::sleepingGrainsAroundSide(int x, int y, int z) const {
     constexpr int reach = kGranularReach, window = kGranularWindow;
     constexpr std::uint64_t rowMask = (std::uint64_t{1} << window) - 1;
@@ -434,16 +442,15 @@ inline void GridSweep::wakeOutletAbove(int x, int y, int z) {
 // granular step of the million-grain drain.
 void GridSweep::endGranularTurn(int y) {
     const auto sizeX = std::uint32_t(size_.x);
-    for (const std::vector<int>& strips : turnStrips_)
-        for (const int strip : strips) {
-            StripLog& log = logs_[std::size_t(strip)];
-            for (const std::uint32_t column : log.left) {
-                const int x = int(column % sizeX), z = int(column / sizeX);
-                empty_.setEmpty(x, y, z, true);
-                leftEarlier_.push_back({x, y, z});
-            }
-            log.left.clear();
+    for (const int strip : turnStrips_) {
+        StripLog& log = logs_[std::size_t(strip)];
+        for (const std::uint32_t column : log.left) {
+            const int x = int(column % sizeX), z = int(column / sizeX);
+            empty_.setEmpty(x, y, z, true);
+            leftEarlier_.push_back({x, y, z});
         }
+        log.left.clear();
+    }
 }
 
 void GridSweep::wakeAroundCellsLeftEarlier(const CellGrid& grid) {
@@ -781,7 +788,7 @@ int GridSweep::carryRiders(const SweepContext& context, const GranularStrip& str
 }
 
 // The granular strip loop: the strips `strips` one after another (one strip where threads share a
-// phase's strips, else the phase's strips that listTurnStrips found awake). A grain
+// phase's strips, else all the strips of the turn that listTurnStrips found awake). A grain
 // visited later finds the cells of the layer below taken by one visited earlier, so a fixed order
 // would let grains run one way more easily than the other and cones would lean (PH2). The order
 // therefore turns with the step: x ascending or descending by bit 0 of the step number, z by bit
@@ -859,13 +866,14 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
     // for the cells kCellsAhead visits on, and for the fall state kStatesAhead visits on, by when
     // that grain's cell has arrived. The loads of several visits are then in flight together
     // instead of one after another (12% off the granular step of the million-grain drain, and 3%
-    // more with one queue for all strips of a phase where one thread sweeps them). Each entry
+    // more with one queue for all strips of a phase where one thread sweeps them; one for the
+    // whole turn, both phases, spares a call and a queue per layer). Each entry
     // carries its cell's in-motion bit, read with the carried-early word of the same cells, so
     // neither the look ahead nor the visit loads it again (about 1%). The classic loop keeps its
     // row-ahead hint: the same queue made its step 14-20% slower.
-    // One strip (threads sharing a phase) in that strip's queue, a phase on one thread in the
+    // One strip (threads sharing a phase) in that strip's queue, a turn on one thread in the
     // sweep's: each has room for every cell it may hold, made once.
-    std::vector<StripLog::Cell>& queue = strips.size() == 1 ? logs_[std::size_t(strips.front())].awake : phaseQueue_;
+    std::vector<StripLog::Cell>& queue = strips.size() == 1 ? logs_[std::size_t(strips.front())].awake : turnQueue_;
     const std::size_t most = strips.size() * std::size_t(kStripRows) * std::size_t(size_.x);
     if (queue.size() < most) queue.resize(most);
     StripLog::Cell* const queued = queue.data();
@@ -937,21 +945,31 @@ void GridSweep::prefetchFirstAwake(const CellGrid& grid, int y, int z) const {
 // strips running beside it keep apart, the layers below are done, and a strip of the other phase
 // runs before or after it), so it is skipped whole: most strips of a busy layer are idle.
 bool GridSweep::anyRowAwake(int y, int z0, int z1) const {
-    const auto first = rowAwake_.begin() + std::ptrdiff_t(std::size_t(y) * std::size_t(size_.z));
-    return std::any_of(first + z0, first + z1, [](std::uint8_t flag) { return flag != 0; });
+    // Eight flags a load (a whole strip's in one; a layer's rows need not start aligned).
+    const std::uint8_t* flag = rowAwake_.data() + std::size_t(y) * std::size_t(size_.z) + std::size_t(z0);
+    const std::uint8_t* const end = flag + (z1 - z0);
+    for (; end - flag >= 8; flag += 8) {
+        std::uint64_t flags;
+        std::memcpy(&flags, flag, sizeof flags);
+        if (flags) return true;
+    }
+    return std::any_of(flag, end, [](std::uint8_t f) { return f != 0; });
 }
 
-// The strips of layer y's turn, by phase: those holding awake rows (all of them in a full sweep).
+// The strips of layer y's turn, even ones first: those holding awake rows (all of them in a full sweep).
 // A strip without any has nothing to visit in the turn, and nothing can wake its rows before the
 // turn ends (anyRowAwake). Listed once, the phases, the carried counts and the turn's end go over
 // those only, where each went over every strip (1.7% of the granular step of the million-grain
 // drain).
 void GridSweep::listTurnStrips(int y, bool sleeping) {
     const int strips = int(logs_.size()); // one log per strip
-    for (std::vector<int>& phase : turnStrips_) phase.clear();
-    for (int strip = 0; strip < strips; ++strip)
-        if (!sleeping || anyRowAwake(y, strip * kStripRows, std::min((strip + 1) * kStripRows, size_.z)))
-            turnStrips_[std::size_t(strip % 2)].push_back(strip);
+    turnStrips_.clear();
+    for (int phase = 0; phase < 2; ++phase) {
+        if (phase == 1) oddStripsBegin_ = turnStrips_.size();
+        for (int strip = phase; strip < strips; strip += 2)
+            if (!sleeping || anyRowAwake(y, strip * kStripRows, std::min((strip + 1) * kStripRows, size_.z)))
+                turnStrips_.push_back(strip);
+    }
 }
 
 // The classic strip loop (the granular one is sweepGranularStrips): each word's awake bits taken at
@@ -1014,7 +1032,8 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
         due.clear();
     }
     for (int y = 1; y < size.y; ++y) {
-        const int awakeRows = context.sleeping ? awakeRowsInLayer(y) : size.z;
+        // The count of awake rows only decides whether threads share the layer's strips.
+        const int awakeRows = !context.sleeping ? size.z : threaded ? awakeRowsInLayer(y) : int(anyRowAwake(y, 0, size.z));
         if (awakeRows == 0) continue;
         const bool parallel = threaded && awakeRows >= kMinAwakeRowsForThreads;
         auto addStrip = [&](int strip, const SweepResult& t) {
@@ -1023,14 +1042,16 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
         };
         if constexpr (Granular) {
             listTurnStrips(y, context.sleeping);
-            for (const std::vector<int>& phase : turnStrips_) {
-                if (!parallel) { // one queue for the phase: its visits ask ahead across strips
-                    add(sweepGranularStrips(context, y, phase));
-                    continue;
-                }
-                pool->parallelFor(int(phase.size()), [&](int i) {
-                    addStrip(phase[std::size_t(i)], sweepGranularStrips(context, y, std::span(phase).subspan(std::size_t(i), 1)));
-                });
+            const std::span<const int> turn(turnStrips_);
+            if (!parallel) {
+                // One thread: one queue for the whole turn, even strips then odd, so its visits
+                // ask ahead across strips and phases (no visit wakes a cell of its own layer).
+                add(sweepGranularStrips(context, y, turn));
+            } else {
+                for (const std::span<const int> phase : {turn.first(oddStripsBegin_), turn.subspan(oddStripsBegin_)})
+                    pool->parallelFor(int(phase.size()), [&](int i) {
+                        addStrip(phase[std::size_t(i)], sweepGranularStrips(context, y, phase.subspan(std::size_t(i), 1)));
+                    });
             }
             endGranularTurn(y);
             continue;

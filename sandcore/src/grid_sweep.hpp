@@ -60,7 +60,7 @@ struct StripLog {
     /// Granular: grains whose fall changed without a move in this sweep (SceneCounters).
     std::int64_t speedChanges = 0;
     /// Granular: the awake cells a sweep of this strip visits in the current layer's turn, where
-    /// threads share the phase's strips (one thread's phase: GridSweep::phaseQueue_), in visiting
+    /// threads share the phase's strips (a turn on one thread: GridSweep::turnQueue_), in visiting
     /// order: room for every cell of the strip, filled from the front through a plain pointer (a
     /// push_back's end pointer, stored and read back each time, chained the pushes), the count
     /// kept by the loop.
@@ -292,8 +292,9 @@ private:
     // (a cache miss: the bits of a grid at res 248 take a megabyte, the cells 30).
     LayoutBits layout_;
     std::vector<StripLog> logs_;                // per strip: the moves of the current sweep
-    std::array<std::vector<int>, 2> turnStrips_; // granular: the strips of the current layer's turn, by phase
-    std::vector<StripLog::Cell> phaseQueue_;      // granular: the awake cells of a phase one thread sweeps (StripLog::awake)
+    std::vector<int> turnStrips_;    // granular: the strips of the current layer's turn, even ones first
+    std::size_t oddStripsBegin_ = 0; // where the odd ones (the second phase) begin in turnStrips_
+    std::vector<StripLog::Cell> turnQueue_;  // granular: the awake cells of a turn one thread sweeps (StripLog::awake)
     // Granular: the cells left in this sweep's turns whose own-layer wakes wait for the sweep's
     // end, when most of them are taken again (the grain above fell in) and wake nobody.
     std::vector<Int3> leftEarlier_;
