@@ -264,37 +264,42 @@ GridSweep::WindowColumns GridSweep::windowColumnsAround(int x) const {
 }
 
 // The 7x7 cells around (x, z) of layer y (bit (dz + 3) * 7 + (dx + 3)) that hold a grain and are
-// not awake. Away from the grid's sides, a row is a load and two shifts, or two loads where its 7
-// cells straddle two words.
+// not awake. Away from the grid's sides, where the 7 cells of a row lie in one word, a row is a
+// load and two shifts.
 inline std::uint64_t GridSweep::sleepingGrainsAround(int x, int y, int z) const {
     constexpr int reach = kGranularReach, window = kGranularWindow;
     constexpr std::uint64_t rowMask = (std::uint64_t{1} << window) - 1;
     const int x0 = x - reach, offset = x0 & 63;
     const std::size_t stride = std::size_t(rowWords_);
-    if (x0 < 0 || z < reach || z + reach >= size_.z) return sleepingGrainsAroundSide(x, y, z);
-    const RowWord* row =
-        words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z - reach)) * stride + std::size_t(x0 >> 6);
-    auto sleeping = [](const RowWord& word) { return word.occupied & ~word.awake; };
-    // Spelled out row by row: each row's place in the window is then a constant.
-    if (offset + window <= 64)
+    if (x0 >= 0 && offset + window <= 64 && z >= reach && z + reach < size_.z) {
+        const RowWord* row = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z - reach)) * stride +
+                             std::size_t(x0 >> 6);
+        // Spelled out row by row: each row's place in the window is then a constant.
         return [&]<std::size_t... r>(std::index_sequence<r...>) {
-            return (((sleeping(row[r * stride]) >> offset & rowMask) << (r * window)) | ...);
+            return ((((row[r * stride].occupied & ~row[r * stride].awake) >> offset & rowMask) << (r * window)) | ...);
         }(std::make_index_sequence<window>{});
-    // Across two words (one window in ten): the next word's low bits follow on.
-    if ((x0 >> 6) + 1 < rowWords_)
+    }
+    return sleepingGrainsAroundSide(x, y, z);
+}
+
+// Near a side (windowColumnsAround), or across two words; rows outside the grid are skipped.
+std::uint64_t GridSweep::sleepingGrainsAroundSide(int x, int y, int z) const {
+    constexpr int reach = kGranularReach, window = kGranularWindow;
+    constexpr std::uint64_t rowMask = (std::uint64_t{1} << window) - 1;
+    const std::size_t stride = std::size_t(rowWords_);
+    const int x0 = x - reach, offset = x0 & 63;
+    if (x0 >= 0 && (x0 >> 6) + 1 < rowWords_ && z >= reach && z + reach < size_.z) {
+        // Across two words, away from the sides (one window in ten): spelled out as above, the
+        // next word's low bits following on.
+        const RowWord* row = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z - reach)) * stride +
+                             std::size_t(x0 >> 6);
+        auto sleeping = [](const RowWord& word) { return word.occupied & ~word.awake; };
         return [&]<std::size_t... r>(std::index_sequence<r...>) {
             return ((((sleeping(row[r * stride]) >> offset | sleeping(row[r * stride + 1]) << (64 - offset)) & rowMask)
                      << (r * window)) |
                     ...);
         }(std::make_index_sequence<window>{});
-    return sleepingGrainsAroundSide(x, y, z);
-}
-
-// Near a side (windowColumnsAround); rows outside the grid are skipped.
-std::uint64_t GridSweep::sleepingGrainsAroundSide(int x, int y, int z) const {
-    constexpr int reach = kGranularReach, window = kGranularWindow;
-    constexpr std::uint64_t rowMask = (std::uint64_t{1} << window) - 1;
-    const std::size_t stride = std::size_t(rowWords_);
+    }
     std::uint64_t grains = 0;
     const WindowColumns at = windowColumnsAround(x);
     const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
@@ -944,7 +949,7 @@ void GridSweep::prefetchFirstAwake(const CellGrid& grid, int y, int z) const {
 // its turn comes has nothing to visit, and while it would run nothing else can wake its rows (the
 // strips running beside it keep apart, the layers below are done, and a strip of the other phase
 // runs before or after it), so it is skipped whole: most strips of a busy layer are idle.
-bool GridSweep::anyRowAwake(int y, int z0, int z1) const {
+inline bool GridSweep::anyRowAwake(int y, int z0, int z1) const {
     // Eight flags a load (a whole strip's in one; a layer's rows need not start aligned).
     const std::uint8_t* flag = rowAwake_.data() + std::size_t(y) * std::size_t(size_.z) + std::size_t(z0);
     const std::uint8_t* const end = flag + (z1 - z0);
