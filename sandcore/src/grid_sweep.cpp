@@ -446,13 +446,11 @@ inline void GridSweep::wakeOutletAbove(int x, int y, int z) {
 // Done together at the end rather than after the next turn, the same wakes took about 1% off the
 // granular step of the million-grain drain.
 void GridSweep::endGranularTurn(int y) {
-    const auto sizeX = std::uint32_t(size_.x);
     for (const int strip : turnStrips_) {
         StripLog& log = logs_[std::size_t(strip)];
-        for (const std::uint32_t column : log.left) {
-            const int x = int(column % sizeX), z = int(column / sizeX);
-            empty_.setEmpty(x, y, z, true);
-            leftEarlier_.push_back({x, y, z});
+        for (const StripLog::Column column : log.left) {
+            empty_.setEmpty(column.x, y, column.z, true);
+            leftEarlier_.push_back({column.x, y, column.z});
         }
         log.left.clear();
     }
@@ -702,7 +700,7 @@ inline GranularOutcome::Kind GridSweep::visitGranular(const SweepContext& contex
     if (to.y > 0 || bottomIsOutlet_) wakeAt(to.x, to.y, to.z); // it may move on next step
     // The cell it left is free: the layers above may use it in this step; its own layer in the
     // next (endGranularTurn).
-    log.left.push_back(std::uint32_t(x) + std::uint32_t(size_.x) * std::uint32_t(z));
+    log.left.push_back({x, z});
     if (wasAsleep && y + 1 < strip.sizeY) wakeAt(x, y + 1, z); // a rider that slept on it, unseen by the wakes
     wakeLayersAbove(strip.grid, x, y, z);
     wakeOutletAbove(x, y, z);
@@ -1037,8 +1035,12 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
         due.clear();
     }
     for (int y = 1; y < size.y; ++y) {
-        // The count of awake rows only decides whether threads share the layer's strips.
-        const int awakeRows = !context.sleeping ? size.z : threaded ? awakeRowsInLayer(y) : int(anyRowAwake(y, 0, size.z));
+        // The count of awake rows only decides whether threads share the layer's strips; on one
+        // thread, the granular turn finds an idle layer as it lists the strips.
+        const int awakeRows = !context.sleeping ? size.z
+                              : threaded        ? awakeRowsInLayer(y)
+                              : Granular        ? 1
+                                                : int(anyRowAwake(y, 0, size.z));
         if (awakeRows == 0) continue;
         const bool parallel = threaded && awakeRows >= kMinAwakeRowsForThreads;
         auto addStrip = [&](int strip, const SweepResult& t) {
@@ -1047,6 +1049,7 @@ template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& cont
         };
         if constexpr (Granular) {
             listTurnStrips(y, context.sleeping);
+            if (turnStrips_.empty()) continue; // nothing awake in the layer
             const std::span<const int> turn(turnStrips_);
             if (!parallel) {
                 // One thread: one queue for the whole turn, even strips then odd, so its visits

@@ -54,9 +54,12 @@ inline constexpr std::size_t kCellsAhead = 8, kStatesAhead = 4;
 /// grains it moved and where to (threads that share a layer's strips each append to their own).
 struct StripLog {
     std::vector<GrainMove> moved;
-    /// Granular: the cells (x + sizeX * z) its grains left in the current layer's turn, kept
+    /// Granular: the cells (their columns) its grains left in the current layer's turn, kept
     /// until the turn ends (granular_rules.hpp: a layer's paths see it as its turn began).
-    std::vector<std::uint32_t> left;
+    struct Column {
+        int x, z;
+    };
+    std::vector<Column> left;
     /// Granular: grains whose fall changed without a move in this sweep (SceneCounters).
     std::int64_t speedChanges = 0;
     /// Granular: the awake cells a sweep of this strip visits in the current layer's turn, where
