@@ -886,6 +886,7 @@ SweepResult GridSweep::sweepGranularStrips(const SweepContext& context, int y, s
         if (!rowAwake_[row]) return;
         RowWord* words = words_.data() + std::size_t(row) * std::size_t(rowWords_);
         MotionWord* motion = motion_.data() + std::size_t(row) * std::size_t(rowWords_);
+        __builtin_prefetch(motion - strip.layerWords); // the visits read the in-motion bits under the row
         std::uint64_t stillAwake = 0;
         for (int j = 0; j < rowWords_; ++j) {
             const int w = xDown ? rowWords_ - 1 - j : j;
