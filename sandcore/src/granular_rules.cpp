@@ -269,6 +269,12 @@ GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, 
     return outcome;
 }
 
+std::uint64_t GranularRules::carriedSlides(const ThresholdDither& dither, int x, int z) const {
+    std::uint64_t dithers[kOffsets / 8];
+    for (int group = 0; group < kOffsets / 8; ++group) dithers[group] = dither.group(x, z, group);
+    return carriesOf(dithers, restComplement_);
+}
+
 GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty, const ThresholdDither& dither, std::uint64_t stepKey,
                                      std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain,
                                      bool onVessel) const {
@@ -292,9 +298,7 @@ GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty,
     // dither per column and offset (8 bits each, 8 offsets to a word). The slides that need d cells
     // are a mask; layer by layer down, those whose column ends above it drop out.
     if (!onVessel && (open & (wholeAtLeast_[2] | wholeExactly_[1]))) {
-        std::uint64_t dithers[kOffsets / 8];
-        for (int group = 0; group < kOffsets / 8; ++group) dithers[group] = dither.group(x, z, group);
-        const std::uint64_t carry = carriesOf(dithers, restComplement_);
+        const std::uint64_t carry = carriedSlides(dither, x, z);
         std::uint64_t deep = ~std::uint64_t{0}; // columns EMPTY from layer y - 2 down to layer y - d
         for (int d = 2; d <= maxDrop_; ++d) {
             const std::uint64_t needing = (wholeAtLeast_[std::size_t(d)] | (wholeExactly_[std::size_t(d - 1)] & carry)) & open;

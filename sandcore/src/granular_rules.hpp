@@ -209,6 +209,9 @@ public:
     bool carries(const ThresholdDither& dither, int x, int z, int k) const {
         return dither.of(x, z, k) > restComplement_[std::size_t(k)];
     }
+    /// carries() of all the slides at once, bit k for slide k, as a slide reads them (16 compares
+    /// a vector instruction where the build has SSE2).
+    std::uint64_t carriedSlides(const ThresholdDither& dither, int x, int z) const;
     /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
     /// column has a threshold of `whole` whole cells (and a fraction): so needsDepth(d) is true
     /// for them when d <= whole, false when d > whole + 1, and their dither tells at d = whole + 1.

@@ -175,3 +175,31 @@ TEST_CASE("granular wake tables: the grains around a column by the whole cells o
         }
     }
 }
+
+TEST_CASE("granular thresholds: the slide's carries of all 48 slides at once agree with carries() slide by slide") {
+    // The slide reads them 16 at a time with saturating byte compares (SSE2); carries() compares
+    // one byte. Over several angles (other rests, so other compares), seeds, both grids and
+    // columns near and far from 0, including the 64-column tile's edges.
+    std::mt19937_64 random(23);
+    int carried = 0, notCarried = 0;
+    for (float repose : {20.0f, 25.0f, 33.0f, 40.0f, 43.0f, 45.0f}) {
+        CAPTURE(repose);
+        const GranularRules rules = granularRulesAt(repose);
+        for (int trial = 0; trial < 400; ++trial) {
+            const std::uint64_t seed = random(), grid = random() & 1; // drawn in this order
+            const ThresholdDither dither(seed, grid);
+            const int x = trial < 8 ? 63 * (trial & 1) + 64 * (trial >> 2) : int(random() % 1000);
+            const int z = trial < 8 ? 63 * ((trial >> 1) & 1) : int(random() % 1000);
+            const std::uint64_t all = rules.carriedSlides(dither, x, z);
+            CHECK((all >> GranularRules::kOffsets) == 0);
+            for (int k = 0; k < GranularRules::kOffsets; ++k) {
+                const bool one = rules.carries(dither, x, z, k);
+                if (bool(all >> k & 1) != one) FAIL("slide " << k << ", column " << x << ", " << z << ", seed " << seed);
+                ++(one ? carried : notCarried);
+            }
+        }
+    }
+    // Both answers occur often, so a mask that is always 0 or always full would fail above.
+    CHECK(carried > 10000);
+    CHECK(notCarried > 10000);
+}
