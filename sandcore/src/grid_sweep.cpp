@@ -276,7 +276,7 @@ inline std::uint64_t GridSweep::sleepingGrainsAround(int x, int y, int z) const 
                              std::size_t(x0 >> 6);
         // Spelled out row by row: each row's place in the window is then a constant.
         return [&]<std::size_t... r>(std::index_sequence<r...>) {
-            return ((((row[r * stride].occupied & ~row[r * stride].awake) >> offset & rowMask) << (r * window)) | ...);
+            return (((row[r * stride].sleeping() >> offset & rowMask) << (r * window)) | ...);
         }(std::make_index_sequence<window>{});
     }
     return sleepingGrainsAroundSide(x, y, z);
@@ -293,9 +293,8 @@ std::uint64_t GridSweep::sleepingGrainsAroundSide(int x, int y, int z) const {
         // next word's low bits following on.
         const RowWord* row = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(z - reach)) * stride +
                              std::size_t(x0 >> 6);
-        auto sleeping = [](const RowWord& word) { return word.occupied & ~word.awake; };
         return [&]<std::size_t... r>(std::index_sequence<r...>) {
-            return ((((sleeping(row[r * stride]) >> offset | sleeping(row[r * stride + 1]) << (64 - offset)) & rowMask)
+            return ((((row[r * stride].sleeping() >> offset | row[r * stride + 1].sleeping() << (64 - offset)) & rowMask)
                      << (r * window)) |
                     ...);
         }(std::make_index_sequence<window>{});
@@ -305,8 +304,8 @@ std::uint64_t GridSweep::sleepingGrainsAroundSide(int x, int y, int z) const {
     const int z0 = std::max(z - reach, 0), z1 = std::min(z + reach, size_.z - 1);
     for (int zz = z0; zz <= z1; ++zz) {
         const RowWord* row = words_.data() + (std::size_t(y) * std::size_t(size_.z) + std::size_t(zz)) * stride + std::size_t(at.word);
-        std::uint64_t bits = (row[0].occupied & ~row[0].awake) >> at.offset;
-        if (at.spills) bits |= (row[1].occupied & ~row[1].awake) << (64 - at.offset);
+        std::uint64_t bits = row[0].sleeping() >> at.offset;
+        if (at.spills) bits |= row[1].sleeping() << (64 - at.offset);
         grains |= ((bits << at.dropped) & rowMask) << ((zz - z + reach) * window);
     }
     return grains;

@@ -274,6 +274,7 @@ private:
     struct RowWord {
         std::uint64_t awake = 0;
         std::uint64_t occupied = 0;
+        std::uint64_t sleeping() const { return occupied & ~awake; } ///< cells that hold a grain, not awake
     };
     std::vector<RowWord, LargePageAllocator<RowWord>> words_; // row = y * sizeZ + z, padded to whole words
     // Granular only, per 64 cells of a row as words_: the cells whose grain may be in motion
