@@ -5,11 +5,13 @@
 //                                             canvas: 16 rays, then 16 sectors of 5 rays each
 //   granular_probe drain NECK [HEIGHT] [g]    discharge of a granular hourglass
 //   granular_probe cost HEIGHT THREADS        ms per step, classic vs granular drain
-//   granular_probe cost-in-turns HEIGHT THREADS  the same, both drains stepped in turns
+//   granular_probe cost-in-turns HEIGHT THREADS [CODE]  the same, both drains stepped in turns;
+//                                             CODE 0 fastest, 1 portable, 2 bmi2 (sandcore::SweepCode)
 #include "bench/granular_report.hpp"
 #include "sandcore/pile_slopes.hpp"
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
+#include "sandcore/sweep_code.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -126,14 +128,16 @@ int cost(int height, int threads) {
 
 // Both levels' drains in one process, stepped in turns (sandbench::drainCostInTurns, the bench
 // report's cost measure), so a busy machine slows both alike.
-int costInTurns(int height, int threads) {
+int costInTurns(int height, int threads, SweepCode code) {
     StepSettings step;
     step.threads = threads;
+    step.sweepCode = code;
     const auto costs = sandbench::drainCostInTurns(height, step);
-    for (std::size_t i = 0; i < costs.size(); ++i)
-        std::printf("%s: %llu steps, %.3f ms/step, %.0f moves/step, hash %016llx%s\n", i ? "granular" : "classic",
-                    (unsigned long long)costs[i].steps, costs[i].msPerStep, costs[i].movesPerStep,
-                    (unsigned long long)costs[i].hash, costs[i].conserved ? "" : " (grains lost)");
+    for (const auto& cost : costs)
+        std::printf("%s, %s code: %llu steps, %.3f ms/step, %.0f moves/step, hash %016llx%s\n",
+                    std::string(physicsLevelName(cost.kind.level)).c_str(),
+                    std::string(sweepCodeName(cost.kind.level, cost.kind.code)).c_str(), (unsigned long long)cost.steps,
+                    cost.msPerStep, cost.movesPerStep, (unsigned long long)cost.hash, cost.conserved ? "" : " (grains lost)");
     std::printf("granular / classic: %.2fx\n", costs[1].msPerStep / costs[0].msPerStep);
     return 0;
 }
@@ -146,7 +150,7 @@ int main(int argc, char** argv) {
     if (what == "pour") return pour(arg(2, 33), int(arg(3, 40000)), int(arg(4, 120)), int(arg(5, 50)), std::uint64_t(arg(6, 1)), arg(7, 1.0));
     if (what == "drain") return drain(arg(2, 4), int(arg(3, 96)), arg(4, 0.05), int(arg(5, 1)));
     if (what == "cost") return cost(int(arg(2, 248)), int(arg(3, 2)));
-    if (what == "cost-in-turns") return costInTurns(int(arg(2, 248)), int(arg(3, 2)));
+    if (what == "cost-in-turns") return costInTurns(int(arg(2, 248)), int(arg(3, 2)), SweepCode(int(arg(4, 0))));
     std::fprintf(stderr, "usage: granular_probe pour|drain|cost|cost-in-turns ...\n");
     return 2;
 }

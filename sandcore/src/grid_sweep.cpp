@@ -1007,8 +1007,22 @@ SweepResult GridSweep::sweepStrip(const SweepContext& context, int y, int strip)
 }
 
 SweepResult GridSweep::sweep(const SweepContext& context, WorkerPool* pool) {
+#if defined(SANDCORE_SWEEP_BMI2) && !defined(SANDCORE_SWEEP_BUILDING_BMI2)
+    if (runsBmi2Sweep(granular_ ? PhysicsLevel::Granular : PhysicsLevel::Classic, context.code))
+        return sandcoreSweepBmi2(*this, context, pool);
+#endif
+    return sweepWithThisBuild(context, pool);
+}
+
+SweepResult GridSweep::sweepWithThisBuild(const SweepContext& context, WorkerPool* pool) {
     return granular_ ? sweepBy<true>(context, pool) : sweepBy<false>(context, pool);
 }
+
+#ifdef SANDCORE_SWEEP_BUILDING_BMI2
+extern "C" SweepResult sandcoreSweepBmi2(GridSweep& sweep, const SweepContext& context, WorkerPool* pool) {
+    return sweep.sweepWithThisBuild(context, pool);
+}
+#endif
 
 template <bool Granular> SweepResult GridSweep::sweepBy(const SweepContext& context, WorkerPool* pool) {
     SweepResult result;

@@ -34,6 +34,7 @@
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
 #include "sandcore/layout_bits.hpp"
+#include "sandcore/sweep_code.hpp"
 
 #include <array>
 #include <cstdint>
@@ -115,7 +116,18 @@ struct SweepContext {
     /// When set (a sweep on one thread that writes records at once), the moves are appended here
     /// directly instead of to the strips' logs.
     std::vector<GrainMove>* movedList;
+    SweepCode code; ///< StepSettings::sweepCode: which build of the sweep runs
 };
+
+class GridSweep;
+
+#ifdef SANDCORE_SWEEP_BMI2
+/// GridSweep::sweep as built for BMI1 and BMI2 (sweep_code.hpp). grid_sweep.cpp and
+/// granular_rules.cpp are compiled a second time for those CPUs, linked into one object, and
+/// every symbol of it but this one made local (sandcore/CMakeLists.txt): the inline functions
+/// of both builds then never mix. Only GridSweep::sweep calls it (runsBmi2Sweep).
+extern "C" SweepResult sandcoreSweepBmi2(GridSweep& sweep, const SweepContext& context, WorkerPool* pool);
+#endif
 
 class GridSweep {
 public:
@@ -207,6 +219,10 @@ public:
     }
 
 private:
+#ifdef SANDCORE_SWEEP_BMI2
+    friend SweepResult sandcoreSweepBmi2(GridSweep& sweep, const SweepContext& context, WorkerPool* pool);
+#endif
+    SweepResult sweepWithThisBuild(const SweepContext& context, WorkerPool* pool); // what sweep runs here
     template <bool Granular> SweepResult sweepBy(const SweepContext& context, WorkerPool* pool);
     SweepResult sweepStrip(const SweepContext& context, int y, int strip); // classic
     void listTurnStrips(int y, bool sleeping); // granular: turnStrips_ for layer y

@@ -159,9 +159,9 @@ void Scene::step() {
     MoveFeed* lowerFeed = feeding ? &lowerSweep_->feed() : nullptr;
     MoveFeed* upperFeed = feeding ? &upperSweep_->feed() : nullptr;
     const SweepContext lowerContext{lower_,   grains_,           settings_.seed,      stepNumber, GridLevel::Lower,
-                                    settings_.sleeping, stepKey, lowerFeed, movedList};
+                                    settings_.sleeping, stepKey, lowerFeed, movedList, settings_.sweepCode};
     const SweepContext upperContext{upper_,   grains_,           settings_.seed,      stepNumber, GridLevel::Upper,
-                                    settings_.sleeping, stepKey, upperFeed, movedList};
+                                    settings_.sleeping, stepKey, upperFeed, movedList, settings_.sweepCode};
     if (sideBySide) {
         lowerSweep_->setDeferWakesAbove(true);
         if (feeding) {
@@ -399,6 +399,8 @@ void Scene::setSleeping(bool sleeping) {
     if (sleeping && !settings_.sleeping) markEverythingAwake();
     settings_.sleeping = sleeping;
 }
+
+void Scene::setSweepCode(SweepCode code) { settings_.sweepCode = code; }
 
 void Scene::markEverythingAwake() {
     upperSweep_->readEmptyCells(upper_);

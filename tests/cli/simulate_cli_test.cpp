@@ -33,6 +33,21 @@ TEST_CASE("simulate gives the same hash for 1 and 2 threads and with --full-swee
     CHECK(two["threads"] == 2);
 }
 
+TEST_CASE("simulate gives the same hash with either build of the sweep and names the one it ran") {
+    const std::string base = "simulate --res 32 --physics granular --gravity 0.1 --steps 300 --threads 2 --json";
+    const auto fastest = nlohmann::json::parse(runSandglass(base).out);
+    const auto portable = nlohmann::json::parse(runSandglass(base + " --sweep-code portable").out);
+    const auto bmi2 = nlohmann::json::parse(runSandglass(base + " --sweep-code BMI2").out);
+    CHECK(fastest["moves"].get<long long>() > 0);
+    CHECK(fastest["hash"] == portable["hash"]);
+    CHECK(fastest["hash"] == bmi2["hash"]);
+    CHECK(portable["sweep_code"] == "portable");
+    CHECK(bmi2["sweep_code"] == fastest["sweep_code"]); // granular steps take the BMI2 build where it runs
+    const auto bad = runSandglass("simulate --res 16 --steps 1 --sweep-code avx512");
+    CHECK(bad.exitCode != 0);
+    CHECK(bad.err.find("--sweep-code must be fastest, portable or bmi2, got 'avx512'") != std::string::npos);
+}
+
 TEST_CASE("simulate --pour releases one grain per step on the canvas") {
     const auto r = runSandglass("simulate --scene canvas --res 24 --pour 200 --until-settled --json");
     REQUIRE(r.exitCode == 0);
@@ -89,4 +104,5 @@ TEST_CASE("simulate --help describes the options and succeeds") {
     CHECK(r.exitCode == 0);
     CHECK(r.out.find("--until-settled") != std::string::npos);
     CHECK(r.out.find("--full-sweep") != std::string::npos);
+    CHECK(r.out.find("--sweep-code") != std::string::npos);
 }

@@ -6,10 +6,15 @@
 #include "bench/plausibility.hpp"
 #include "bench/speed_error_report.hpp"
 
+#include "sandcore/physics_settings.hpp"
+#include "sandcore/sweep_code.hpp"
+
 #include <array>
 #include <cstdint>
 #include <iosfwd>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace sandbench {
 
@@ -19,8 +24,16 @@ struct GranularSection {
     bool passed = true;   ///< conservation held and every plot was drawn
 };
 
-/// One level's drain in a cost comparison.
+/// One drain of a cost comparison: which rules, and which build of the sweep runs them
+/// (sandcore/sweep_code.hpp).
+struct DrainKind {
+    sandcore::PhysicsLevel level = sandcore::PhysicsLevel::Classic;
+    sandcore::SweepCode code = sandcore::SweepCode::Fastest;
+};
+
+/// One drain's cost in a cost comparison.
 struct DrainCost {
+    DrainKind kind;                ///< what drained
     std::int64_t grains = 0;       ///< grains in the scene (kept throughout when conserved)
     bool conserved = false;        ///< the scene still holds every grain at the end
     std::uint64_t steps = 0;       ///< steps until nothing moved
@@ -31,14 +44,19 @@ struct DrainCost {
     DischargeSeries discharge;     ///< grains into the lower grid, step by step
 };
 
-/// Granular steps in one turn of drainCostInTurns.
+/// Granular steps in one turn of drainsInTurns.
 inline constexpr int kGranularStepsPerTurn = 100;
 
-/// PH6: the procedural hourglass of this height drained until nothing moves under the classic
-/// rules ([0]) and the granular ones ([1]), `step`'s other settings for both, in one process and
-/// in turns: after each kGranularStepsPerTurn granular steps, classic steps until it has passed as
-/// large a share of its sand. A busy machine then slows both alike, which one drain after the other does not
-/// (their ratio moved from 2.8x to 6.5x within hours on a shared machine).
+/// PH6: the procedural hourglass of this height drained until nothing moves once per kind,
+/// `step`'s other settings for all, in one process and in turns: after each
+/// kGranularStepsPerTurn steps of every granular drain, each classic drain steps until it has
+/// passed as large a share of its sand as the first granular one (without a granular drain,
+/// the classic ones run to the end in turns of as many steps). A busy machine then slows all
+/// alike, which one drain after the other does not (the ratio of two levels moved from 2.8x to
+/// 6.5x within hours on a shared machine). Costs in the order of `kinds`.
+std::vector<DrainCost> drainsInTurns(int height, const sandcore::StepSettings& step, std::span<const DrainKind> kinds);
+
+/// drainsInTurns of the classic rules ([0]) and the granular ones ([1]), both with step.sweepCode.
 std::array<DrainCost, 2> drainCostInTurns(int height, const sandcore::StepSettings& step);
 
 /// Measures the granular level and writes repose.csv, fall_time.csv, necks.csv, cost.csv and
