@@ -7,6 +7,8 @@
 //   granular_probe cost HEIGHT THREADS        ms per step, classic vs granular drain
 //   granular_probe cost-in-turns HEIGHT THREADS [CODE]  the same, both drains stepped in turns;
 //                                             CODE 0 fastest, 1 portable, 2 bmi2 (sandcore::SweepCode)
+//   granular_probe cost-kinds HEIGHT THREADS KIND...  drains in turns given one by one: c or g
+//                                             (the rules), then f, p or b (the sweep's build)
 #include "bench/granular_report.hpp"
 #include "sandcore/pile_slopes.hpp"
 #include "sandcore/procedural_shapes.hpp"
@@ -142,6 +144,28 @@ int costInTurns(int height, int threads, SweepCode code) {
     return 0;
 }
 
+// Drains in turns given one by one (sandbench::drainsInTurns): each KIND is the rules, c or g,
+// then the sweep's build, f(astest), p(ortable) or b(mi2); prints each one's ms per step.
+int costKinds(int height, int threads, int argc, char** argv) {
+    StepSettings step;
+    step.threads = threads;
+    std::vector<sandbench::DrainKind> kinds;
+    for (int i = 4; i < argc; ++i) {
+        const std::string kind = argv[i];
+        const auto code = kind.size() == 2 ? std::string_view("fpb").find(kind[1]) : std::string_view::npos;
+        if ((kind[0] != 'c' && kind[0] != 'g') || code == std::string_view::npos) {
+            std::fprintf(stderr, "granular_probe: a drain is c or g, then f, p or b; got '%s'\n", argv[i]);
+            return 2;
+        }
+        kinds.push_back({kind[0] == 'g' ? PhysicsLevel::Granular : PhysicsLevel::Classic, SweepCode(int(code))});
+    }
+    for (const auto& cost : sandbench::drainsInTurns(height, step, kinds))
+        std::printf("%s, %s code: %.3f ms/step, hash %016llx\n", std::string(physicsLevelName(cost.kind.level)).c_str(),
+                    std::string(sweepCodeName(cost.kind.level, cost.kind.code)).c_str(), cost.msPerStep,
+                    (unsigned long long)cost.hash);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -150,7 +174,8 @@ int main(int argc, char** argv) {
     if (what == "pour") return pour(arg(2, 33), int(arg(3, 40000)), int(arg(4, 120)), int(arg(5, 50)), std::uint64_t(arg(6, 1)), arg(7, 1.0));
     if (what == "drain") return drain(arg(2, 4), int(arg(3, 96)), arg(4, 0.05), int(arg(5, 1)));
     if (what == "cost") return cost(int(arg(2, 248)), int(arg(3, 2)));
+    if (what == "cost-kinds") return costKinds(int(arg(2, 248)), int(arg(3, 2)), argc, argv);
     if (what == "cost-in-turns") return costInTurns(int(arg(2, 248)), int(arg(3, 2)), SweepCode(int(arg(4, 0))));
-    std::fprintf(stderr, "usage: granular_probe pour|drain|cost|cost-in-turns ...\n");
+    std::fprintf(stderr, "usage: granular_probe pour|drain|cost|cost-in-turns|cost-kinds ...\n");
     return 2;
 }

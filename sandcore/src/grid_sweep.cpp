@@ -1020,6 +1020,7 @@ SweepResult GridSweep::sweepWithThisBuild(const SweepContext& context, WorkerPoo
 
 #ifdef SANDCORE_SWEEP_BUILDING_BMI2
 extern "C" SweepResult sandcoreSweepBmi2(GridSweep& sweep, const SweepContext& context, WorkerPool* pool) {
+    countBmi2Sweep();
     return sweep.sweepWithThisBuild(context, pool);
 }
 #endif

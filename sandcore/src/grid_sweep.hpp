@@ -121,13 +121,14 @@ struct SweepContext {
 
 class GridSweep;
 
-#ifdef SANDCORE_SWEEP_BMI2
-/// GridSweep::sweep as built for BMI1 and BMI2 (sweep_code.hpp). grid_sweep.cpp and
-/// granular_rules.cpp are compiled a second time for those CPUs, linked into one object, and
-/// every symbol of it but this one made local (sandcore/CMakeLists.txt): the inline functions
-/// of both builds then never mix. Only GridSweep::sweep calls it (runsBmi2Sweep).
+/// GridSweep::sweep as built for BMI1 and BMI2 (sweep_code.hpp), defined where sandcore is built
+/// with SANDCORE_SWEEP_BMI2: grid_sweep.cpp and granular_rules.cpp are compiled a second time for
+/// those CPUs, linked into one object, and every symbol of it but this one made local
+/// (sandcore/CMakeLists.txt), so the inline functions of both builds never mix. Only
+/// GridSweep::sweep calls it (runsBmi2Sweep).
 extern "C" SweepResult sandcoreSweepBmi2(GridSweep& sweep, const SweepContext& context, WorkerPool* pool);
-#endif
+/// Counts one sweep of the BMI2 build (bmi2SweepsRun); sweep_code.cpp, so both builds share it.
+void countBmi2Sweep();
 
 class GridSweep {
 public:
@@ -219,9 +220,7 @@ public:
     }
 
 private:
-#ifdef SANDCORE_SWEEP_BMI2
     friend SweepResult sandcoreSweepBmi2(GridSweep& sweep, const SweepContext& context, WorkerPool* pool);
-#endif
     SweepResult sweepWithThisBuild(const SweepContext& context, WorkerPool* pool); // what sweep runs here
     template <bool Granular> SweepResult sweepBy(const SweepContext& context, WorkerPool* pool);
     SweepResult sweepStrip(const SweepContext& context, int y, int strip); // classic

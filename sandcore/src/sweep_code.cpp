@@ -1,6 +1,9 @@
 #include "sandcore/sweep_code.hpp"
 
+#include "grid_sweep.hpp"
+
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 
 namespace sandcore {
@@ -24,6 +27,14 @@ bool bmi2SweepAvailable() {
     return false;
 #endif
 }
+
+namespace {
+std::atomic<std::uint64_t> bmi2Sweeps{0};
+} // namespace
+
+void countBmi2Sweep() { bmi2Sweeps.fetch_add(1, std::memory_order_relaxed); }
+
+std::uint64_t bmi2SweepsRun() { return bmi2Sweeps.load(std::memory_order_relaxed); }
 
 bool runsBmi2Sweep(PhysicsLevel level, SweepCode code) {
     if (!bmi2SweepAvailable()) return false;
@@ -52,7 +63,7 @@ std::optional<SweepCode> parseSweepCode(std::string_view name) {
     for (SweepCode code : {SweepCode::Fastest, SweepCode::Portable, SweepCode::Bmi2}) {
         const std::string_view known = sweepCodeChoiceName(code);
         if (name.size() == known.size() &&
-            std::equal(name.begin(), name.end(), known.begin(), [](char a, char b) { return std::tolower(a) == b; }))
+            std::equal(name.begin(), name.end(), known.begin(), [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; }))
             return code;
     }
     return std::nullopt;

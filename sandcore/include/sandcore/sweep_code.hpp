@@ -31,6 +31,9 @@ bool bmi2SweepAvailable();
 bool runsBmi2Sweep(PhysicsLevel level, SweepCode code);
 /// "bmi2" or "portable": the build a step of these rules, asking for `code`, runs here.
 std::string_view sweepCodeName(PhysicsLevel level, SweepCode code);
+/// Sweeps the BMI2 build has run in this process (a step sweeps each grid once): shows that
+/// the choice above is the one made.
+std::uint64_t bmi2SweepsRun();
 /// "fastest", "portable" or "bmi2": the choice itself, as the command line spells it.
 std::string_view sweepCodeChoiceName(SweepCode code);
 /// The choice spelt so (any case), or nothing.
