@@ -1,12 +1,13 @@
 #pragma once
-// Which build of the sweep's code runs a step. On x86-64 Linux with GCC or Clang, sandcore holds
-// the sweep (grid_sweep.cpp, granular_rules.cpp) twice: built for every x86-64 CPU, and built for
-// CPUs with BMI1 and BMI2 (Intel since 2013, AMD since 2015), whose shifts by a variable count
-// and and-not are one instruction each where the portable code needs several. The granular rules
-// read 7-cell windows of bit rows with such shifts in every wake and slide, and their steps run
-// a few percent faster in that build; the classic rules' steps ran a little slower in it, so they
-// keep the portable code. Both builds give the same result (docs/performance.md, "The sweep
-// built twice").
+// Which build of the sweep's code runs a step. On x86-64 Linux with GCC or Clang and GNU ld
+// (sandcore/CMakeLists.txt, SANDCORE_SWEEP_BMI2), sandcore holds the sweep (grid_sweep.cpp,
+// granular_rules.cpp) twice: built for every x86-64 CPU, and built for CPUs with BMI1 and BMI2
+// (Intel since 2013, AMD since 2015), whose shifts by a variable count and and-not are one
+// instruction each where the portable code needs several. The granular rules read 7-cell
+// windows of bit rows with such shifts in every wake and slide, and their steps run a few
+// percent faster in that build; the classic rules' steps ran a little slower in it, so they keep
+// the portable code. Both builds give the same result (docs/performance.md, "The sweep built
+// twice").
 
 #include "sandcore/physics_settings.hpp"
 
