@@ -130,16 +130,20 @@ int cost(int height, int threads) {
 
 // Both levels' drains in one process, stepped in turns (sandbench::drainCostInTurns, the bench
 // report's cost measure), so a busy machine slows both alike.
+// One drain of a cost comparison: its rules, the sweep's build it ran, steps, time, moves, hash.
+void printCost(const sandbench::DrainCost& cost) {
+    std::printf("%s, %s code: %llu steps, %.3f ms/step, %.0f moves/step, hash %016llx%s\n",
+                std::string(physicsLevelName(cost.kind.level)).c_str(),
+                std::string(sweepCodeName(cost.kind.level, cost.kind.code)).c_str(), (unsigned long long)cost.steps,
+                cost.msPerStep, cost.movesPerStep, (unsigned long long)cost.hash, cost.conserved ? "" : " (grains lost)");
+}
+
 int costInTurns(int height, int threads, SweepCode code) {
     StepSettings step;
     step.threads = threads;
     step.sweepCode = code;
     const auto costs = sandbench::drainCostInTurns(height, step);
-    for (const auto& cost : costs)
-        std::printf("%s, %s code: %llu steps, %.3f ms/step, %.0f moves/step, hash %016llx%s\n",
-                    std::string(physicsLevelName(cost.kind.level)).c_str(),
-                    std::string(sweepCodeName(cost.kind.level, cost.kind.code)).c_str(), (unsigned long long)cost.steps,
-                    cost.msPerStep, cost.movesPerStep, (unsigned long long)cost.hash, cost.conserved ? "" : " (grains lost)");
+    for (const auto& cost : costs) printCost(cost);
     std::printf("granular / classic: %.2fx\n", costs[1].msPerStep / costs[0].msPerStep);
     return 0;
 }
@@ -159,10 +163,7 @@ int costKinds(int height, int threads, int argc, char** argv) {
         }
         kinds.push_back({kind[0] == 'g' ? PhysicsLevel::Granular : PhysicsLevel::Classic, SweepCode(int(code))});
     }
-    for (const auto& cost : sandbench::drainsInTurns(height, step, kinds))
-        std::printf("%s, %s code: %.3f ms/step, hash %016llx\n", std::string(physicsLevelName(cost.kind.level)).c_str(),
-                    std::string(sweepCodeName(cost.kind.level, cost.kind.code)).c_str(), cost.msPerStep,
-                    (unsigned long long)cost.hash);
+    for (const auto& cost : sandbench::drainsInTurns(height, step, kinds)) printCost(cost);
     return 0;
 }
 
