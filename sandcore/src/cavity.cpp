@@ -124,8 +124,8 @@ TriangleMesh toGridSpace(const TriangleMesh& mesh, const VoxelPlacement& p) {
     return grid;
 }
 
-InsideMask surfaceCells(const TriangleMesh& gridMesh, Int3 size) {
-    InsideMask mask = InsideMask::empty(size);
+void appendSurfaceCells(const TriangleMesh& gridMesh, Int3 size, std::vector<std::uint32_t>& cells) {
+    const std::size_t first = cells.size();
     const int limits[3] = {size.x, size.y, size.z};
     for (const auto& t : gridMesh.triangles) {
         Vec corner[3];
@@ -143,12 +143,20 @@ InsideMask surfaceCells(const TriangleMesh& gridMesh, Int3 size) {
         for (int y = lo[1]; y <= hi[1]; ++y)
             for (int z = lo[2]; z <= hi[2]; ++z)
                 for (int x = lo[0]; x <= hi[0]; ++x) {
-                    if (mask.at(x, y, z)) continue;
                     const Vec centre{x + 0.5, y + 0.5, z + 0.5};
                     if (triangleTouchesBox(minus(corner[0], centre), minus(corner[1], centre), minus(corner[2], centre), 0.5))
-                        mask.set(x, y, z, true);
+                        cells.push_back(std::uint32_t(std::size_t(x) + std::size_t(size.x) * (std::size_t(z) + std::size_t(size.z) * std::size_t(y))));
                 }
     }
+    std::sort(cells.begin() + std::ptrdiff_t(first), cells.end());
+    cells.erase(std::unique(cells.begin() + std::ptrdiff_t(first), cells.end()), cells.end());
+}
+
+InsideMask surfaceCells(const TriangleMesh& gridMesh, Int3 size) {
+    InsideMask mask = InsideMask::empty(size);
+    std::vector<std::uint32_t> cells;
+    appendSurfaceCells(gridMesh, size, cells);
+    for (std::uint32_t n : cells) mask.inside[n] = 1;
     return mask;
 }
 

@@ -57,7 +57,17 @@ Scene makeCanvasScene(const CanvasSettings& canvas, const StepSettings& step) {
 }
 
 Scene makeHourglassScene(const InsideMask& untrimmed, const HourglassSettings& hourglass, const StepSettings& step) {
+    return makeHourglassScene(untrimmed, InsideMask{}, hourglass, step);
+}
+
+Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialSand, const HourglassSettings& hourglass,
+                         const StepSettings& step) {
     requireInside(untrimmed, "the vessel");
+    const bool modelled = !initialSand.inside.empty();
+    if (modelled && !(initialSand.size == untrimmed.size))
+        throw std::invalid_argument("the initial sand's mask differs in size from the vessel's");
+    int bottom = 0;
+    while (untrimmed.countInsideLayer(bottom) == 0) ++bottom;
     const InsideMask vessel = trimmedToInsideLayers(untrimmed);
     const int top = vessel.size.y - 1;
     const int neck = findNeckLayer(vessel);
@@ -76,8 +86,17 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const HourglassSettings& h
         }
         lowerLayout = layoutFromMask(lower);
     }
-    return Scene(SceneKind::Hourglass, layoutFromMask(upper), std::move(lowerLayout),
-                 fillFromBottom(upper, hourglass.fillFraction), step);
+    std::vector<std::uint32_t> fill;
+    if (modelled) {
+        // The modelled sand that lies in the (carved) upper bulb, in the order fillFromBottom uses.
+        const int firstLayer = bottom + (split ? neck : 0);
+        for (int y = 0; y < upper.size.y; ++y)
+            for (int z = 0; z < upper.size.z; ++z)
+                for (int x = 0; x < upper.size.x; ++x)
+                    if (upper.at(x, y, z) && initialSand.at(x, y + firstLayer, z)) fill.push_back(std::uint32_t(upper.indexOf(x, y, z)));
+    }
+    if (fill.empty()) fill = fillFromBottom(upper, hourglass.fillFraction);
+    return Scene(SceneKind::Hourglass, layoutFromMask(upper), std::move(lowerLayout), std::move(fill), step);
 }
 
 Scene makeSculptureScene(const InsideMask& model, const StepSettings& step) {

@@ -61,8 +61,13 @@ NeckProfile neckAlong(const InsideMask& mask, int axis) {
         for (int z = 0; z < mask.size.z; ++z)
             for (int x = 0; x < mask.size.x; ++x)
                 if (mask.at(x, y, z)) ++area[std::size_t(axis == 0 ? x : axis == 1 ? y : z)];
+    return neckOfAreas(area);
+}
+
+NeckProfile neckOfAreas(const std::vector<std::int64_t>& area) {
+    const int length = int(area.size());
     NeckProfile profile;
-    int low = 0, high = size[axis] - 1;
+    int low = 0, high = length - 1;
     while (low <= high && area[std::size_t(low)] == 0) ++low;
     while (high >= low && area[std::size_t(high)] == 0) --high;
     if (high - low < 4) return profile;

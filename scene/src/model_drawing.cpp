@@ -76,6 +76,23 @@ Vec3 ModelToWorld::apply(const Vec3& model) const {
     return {float(world[0]), float(world[1]), float(world[2])};
 }
 
+std::array<double, 3> ModelToWorld::toFile(const Vec3& world) const {
+    const sandcore::AxisTurn turn = sandcore::axisTurnFor(up);
+    const int size[3] = {placement.size.x, placement.size.y, placement.size.z};
+    const int origin[3] = {maskOrigin.x, maskOrigin.y, maskOrigin.z};
+    const double w[3] = {double(world.x), double(world.y), double(world.z)};
+    double grid[3];
+    for (int a = 0; a < 3; ++a) {
+        const int source = turn.source[a];
+        const double along = w[a] - double(origin[a]);
+        grid[source] = turn.sign[a] > 0 ? along : double(size[source]) - along;
+    }
+    std::array<double, 3> file{};
+    for (std::size_t a = 0; a < 3; ++a)
+        file[a] = (grid[a] - placement.padding[a]) / placement.scale[a] + placement.modelMin[a] + fileCentre[a];
+    return file;
+}
+
 void includeInBounds(const ModelDrawing& drawing, bool turnedOver, float cellSize, Vec3& lo, Vec3& hi) {
     for (const DrawnPart& part : drawing.parts)
         for (const ModelVertex& v : part.vertices) {

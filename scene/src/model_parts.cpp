@@ -3,6 +3,8 @@
 #include "checked_import.hpp"
 #include "scene/mesh_loader.hpp"
 
+#include "sandcore/mesh_shells.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -90,8 +92,23 @@ std::vector<ModelPart> loadModelParts(const std::string& path, const MeshLoadOpt
         parts.push_back(std::move(part));
     }
     nameUniquely(parts, path);
-    for (ModelPart& part : parts) part.closed = sandcore::closednessOf(part.mesh).closed;
-    return parts;
+    // W1: every connected shell is a part of its own, named after its object.
+    std::vector<ModelPart> shells;
+    for (ModelPart& object : parts) {
+        std::vector<sandcore::TriangleMesh> pieces = sandcore::splitIntoShells(object.mesh);
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+            ModelPart shell;
+            shell.object = object.name;
+            shell.name = pieces.size() == 1 ? object.name : object.name + " #" + std::to_string(k + 1);
+            shell.mesh = std::move(pieces[k]);
+            shell.hasColour = object.hasColour;
+            shell.colour = object.colour;
+            shell.closed = sandcore::closednessOf(shell.mesh).closed;
+            shell.fileCentre = checked.centre;
+            shells.push_back(std::move(shell));
+        }
+    }
+    return shells;
 }
 
 sandcore::TriangleMesh mergedMesh(const std::vector<ModelPart>& parts) {
@@ -100,38 +117,83 @@ sandcore::TriangleMesh mergedMesh(const std::vector<ModelPart>& parts) {
     return merged;
 }
 
-void chooseRoles(std::vector<ModelPart>& parts, sandcore::SceneKind kind, const std::vector<PartRoleChoice>& choices) {
-    if (kind == sandcore::SceneKind::Sculpture) {
-        std::size_t sand = 0;
-        for (std::size_t i = 0; i < parts.size(); ++i) {
-            const bool better = parts[i].closed != parts[sand].closed ? parts[i].closed
-                                                                      : parts[i].mesh.triangles.size() > parts[sand].mesh.triangles.size();
-            if (better) sand = i;
+namespace {
+
+// The sculpture's roles, decided for whole objects: the shells of a character (body, head, feet)
+// are one figure, not a figure on a pedestal of its own feet.
+void chooseSculptureRoles(std::vector<ModelPart>& parts) {
+    std::vector<std::string> objects;
+    std::vector<sandcore::TriangleMesh> meshes;
+    std::vector<bool> closed;
+    for (const ModelPart& part : parts) {
+        auto it = std::find(objects.begin(), objects.end(), part.object);
+        if (it == objects.end()) {
+            objects.push_back(part.object);
+            meshes.emplace_back();
+            closed.push_back(true);
+            it = objects.end() - 1;
         }
-        const sandcore::MeshBounds all = sandcore::boundsOf(mergedMesh(parts));
-        const sandcore::MeshBounds sandBounds = sandcore::boundsOf(parts[sand].mesh);
-        for (std::size_t i = 0; i < parts.size(); ++i) {
-            const sandcore::MeshBounds b = sandcore::boundsOf(parts[i].mesh);
-            const bool onFloor = b.min[1] - all.min[1] <= 0.01 * all.extent(1);
-            const bool low = b.max[1] <= sandBounds.min[1] + 0.25 * sandBounds.extent(1);
-            const bool pedestal = nameHasAny(parts[i].name, {"base", "pedestal", "plinth", "stand"}) || (onFloor && low);
-            parts[i].role = i != sand && pedestal ? PartRole::Static : PartRole::Sand;
-        }
-    } else {
-        for (ModelPart& part : parts) {
-            const bool glass = nameHasAny(part.name, {"glass", "vessel", "bulb"});
-            const bool frame = nameHasAny(part.name, {"frame", "base", "cap", "plate", "pillar", "post", "stand", "rod", "wood"});
-            part.role = frame && !glass ? PartRole::Frame : PartRole::Vessel;
-        }
+        const auto o = std::size_t(it - objects.begin());
+        meshes[o].append(part.mesh);
+        closed[o] = closed[o] && part.closed;
     }
+    std::size_t sand = 0;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const bool better = closed[i] != closed[sand] ? bool(closed[i]) : meshes[i].triangles.size() > meshes[sand].triangles.size();
+        if (better) sand = i;
+    }
+    const sandcore::MeshBounds all = sandcore::boundsOf(mergedMesh(parts));
+    const sandcore::MeshBounds sandBounds = sandcore::boundsOf(meshes[sand]);
+    std::vector<PartRole> roleOf(objects.size());
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const sandcore::MeshBounds b = sandcore::boundsOf(meshes[i]);
+        const bool onFloor = b.min[1] - all.min[1] <= 0.01 * all.extent(1);
+        const bool low = b.max[1] <= sandBounds.min[1] + 0.25 * sandBounds.extent(1);
+        const bool pedestal = nameHasAny(objects[i], {"base", "pedestal", "plinth", "stand"}) || (onFloor && low);
+        roleOf[i] = i != sand && pedestal ? PartRole::Static : PartRole::Sand;
+    }
+    for (ModelPart& part : parts) {
+        part.role = roleOf[std::size_t(std::find(objects.begin(), objects.end(), part.object) - objects.begin())];
+        part.roleFixed = true;
+    }
+}
+
+// A name is a hint the role keeps only for an object of one shell: an object "Glass" of several
+// shells may hold its posts or its sand too, and the sand-space search sorts them.
+void chooseHourglassRoles(std::vector<ModelPart>& parts) {
+    std::map<std::string, int> shellsOf;
+    for (const ModelPart& part : parts) ++shellsOf[part.object];
+    for (ModelPart& part : parts) {
+        std::string name = lowered(part.object);
+        // "hourglass" and "sandglass" name the whole model, not its glass or its sand.
+        for (const std::string whole : {"hourglass", "sandglass"})
+            for (std::size_t at = name.find(whole); at != std::string::npos; at = name.find(whole)) name.erase(at, whole.size());
+        const bool glass = nameHasAny(name, {"glass", "vessel", "bulb"});
+        const bool frame = nameHasAny(name, {"frame", "base", "cap", "plate", "pillar", "post", "stand", "rod", "wood"});
+        const bool sand = nameHasAny(name, {"sand"}) && !glass;
+        part.role = sand ? PartRole::Sand : frame && !glass ? PartRole::Frame : PartRole::Vessel;
+        part.roleFixed = sand || ((glass || frame) && shellsOf[part.object] == 1);
+    }
+}
+
+} // namespace
+
+void chooseRoles(std::vector<ModelPart>& parts, sandcore::SceneKind kind, const std::vector<PartRoleChoice>& choices) {
+    if (kind == sandcore::SceneKind::Sculpture) chooseSculptureRoles(parts);
+    else chooseHourglassRoles(parts);
     for (const PartRoleChoice& choice : choices) {
-        auto it = std::find_if(parts.begin(), parts.end(), [&](const ModelPart& p) { return p.name == choice.name; });
-        if (it == parts.end()) {
+        bool found = false;
+        for (ModelPart& part : parts)
+            if (part.name == choice.name || part.object == choice.name) {
+                part.role = choice.role;
+                part.roleFixed = true;
+                found = true;
+            }
+        if (!found) {
             std::string names;
             for (const ModelPart& p : parts) names += (names.empty() ? "" : ", ") + p.name;
             throw std::invalid_argument("--part: the model has no part '" + choice.name + "' (its parts: " + names + ")");
         }
-        it->role = choice.role;
     }
 }
 

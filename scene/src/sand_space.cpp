@@ -1,12 +1,14 @@
 #include "scene/sand_space.hpp"
 
+#include "scene/mesh_loader.hpp"
+
 #include "sandcore/cavity.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace sandglass {
-
-const char* vesselKindName(VesselKind kind) { return kind == VesselKind::Cavity ? "cavity" : "solid"; }
 
 namespace {
 
@@ -27,63 +29,128 @@ sandcore::InsideMask partCells(const ModelPart& part, const sandcore::VoxelPlace
     return cells;
 }
 
-bool isWall(PartRole role) { return role != PartRole::Sand; }
+sandcore::ShellRole shellRoleOf(PartRole role) {
+    switch (role) {
+    case PartRole::Vessel: return sandcore::ShellRole::Glass;
+    case PartRole::Sand: return sandcore::ShellRole::Sand;
+    case PartRole::Frame:
+    case PartRole::Static: return sandcore::ShellRole::Frame;
+    }
+    return sandcore::ShellRole::Glass;
+}
 
-} // namespace
+PartRole partRoleOf(sandcore::ShellRole role) {
+    switch (role) {
+    case sandcore::ShellRole::Glass: return PartRole::Vessel;
+    case sandcore::ShellRole::Frame: return PartRole::Frame;
+    case sandcore::ShellRole::Sand: return PartRole::Sand;
+    }
+    return PartRole::Vessel;
+}
 
-SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSettings& settings, ModelUse use,
-                        const ModelShapeRequest& request, std::uint64_t memoryLimit) {
-    SandSpace out;
-    out.parts = loadModelParts(path);
-    chooseRoles(out.parts, request.kind, request.roles);
-    out.model = voxelizeLoadedMesh(path, mergedMesh(out.parts), settings, use, memoryLimit);
+void findHourglass(SandSpace& out, const sandcore::VoxelizeSettings& settings, const ModelShapeRequest& request) {
+    const auto start = Clock::now();
+    std::vector<sandcore::ModelShell> shells;
+    shells.reserve(out.parts.size());
+    for (const ModelPart& part : out.parts) shells.push_back({part.mesh, shellRoleOf(part.role), part.roleFixed});
+    sandcore::HourglassSpaceSettings search;
+    search.voxelize = settings;
+    search.up = request.up;
+    sandcore::HourglassSpace found = sandcore::findHourglassSpace(shells, search);
+    out.cavityMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    for (std::size_t i = 0; i < out.parts.size(); ++i) out.parts[i].role = partRoleOf(found.roles[i]);
+    out.space = std::move(found.space);
+    if (found.modelledSand.countInside() > 0) out.modelledSand = std::move(found.modelledSand);
+    out.vessel = found.kind;
+    out.up = found.up;
+    out.upFound = found.upFound;
+    out.cavities = found.enclosedSpaces;
+    out.closingCells = found.closingCells;
+    out.neckOpened = found.neckOpened;
+    out.note = found.note;
+}
+
+void findSculpture(SandSpace& out, const sandcore::VoxelizeSettings& settings, const ModelShapeRequest& request) {
     const sandcore::VoxelPlacement& placement = out.model.voxels.placement;
-    const bool onePart = out.parts.size() == 1;
-    if (request.kind == sandcore::SceneKind::Hourglass) {
-        const auto start = Clock::now();
-        // One part: the model's own inside cells are the part's.
-        sandcore::InsideMask walls = onePart ? out.model.voxels.mask : sandcore::InsideMask::empty(placement.size);
-        for (const ModelPart& part : out.parts) {
-            if (!isWall(part.role)) continue;
-            if (onePart) addInto(walls, sandcore::surfaceCells(sandcore::toGridSpace(part.mesh, placement), placement.size));
-            else addInto(walls, partCells(part, placement, settings, true));
-        }
-        sandcore::CavitySearch search = sandcore::findCavities(walls);
-        out.cavityMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        out.cavities = search.cavities;
-        if (search.largestCells >= kMinCavityCells) {
-            out.vessel = VesselKind::Cavity;
-            out.space = std::move(search.largest);
-        } else {
-            out.space = out.model.voxels.mask;
-        }
+    bool allSand = true;
+    for (const ModelPart& part : out.parts) allSand = allSand && part.role == PartRole::Sand;
+    if (allSand) {
+        out.space = out.model.voxels.mask;
     } else {
-        bool allSand = true;
-        for (const ModelPart& part : out.parts) allSand = allSand && part.role == PartRole::Sand;
-        if (allSand) {
-            out.space = out.model.voxels.mask;
-        } else {
-            out.space = sandcore::InsideMask::empty(placement.size);
-            out.obstacles = sandcore::InsideMask::empty(placement.size);
-            for (const ModelPart& part : out.parts) {
-                if (part.role == PartRole::Sand) addInto(out.space, partCells(part, placement, settings, false));
-                else addInto(out.obstacles, partCells(part, placement, settings, true));
-            }
-            // An obstacle cell holds no sand.
-            for (std::size_t n = 0; n < out.space.inside.size(); ++n)
-                if (out.obstacles.inside[n]) out.space.inside[n] = 0;
+        out.space = sandcore::InsideMask::empty(placement.size);
+        out.obstacles = sandcore::InsideMask::empty(placement.size);
+        for (const ModelPart& part : out.parts) {
+            if (part.role == PartRole::Sand) addInto(out.space, partCells(part, placement, settings, false));
+            else addInto(out.obstacles, partCells(part, placement, settings, true));
         }
+        // An obstacle cell holds no sand.
+        for (std::size_t n = 0; n < out.space.inside.size(); ++n)
+            if (out.obstacles.inside[n]) out.space.inside[n] = 0;
     }
     if (request.up) {
         out.up = *request.up;
-    } else if (request.kind == sandcore::SceneKind::Hourglass) {
-        out.up = sandcore::findUpAxis(out.space);
-        out.upFound = true;
+    } else {
+        out.up = sculptureUpAxis(sandcore::boundsOf(mergedMesh(out.parts)));
+        out.upFound = out.up != sandcore::UpAxis::PlusY;
     }
-    out.space = sandcore::turnToUp(out.space, out.up);
+}
+
+} // namespace
+
+sandcore::UpAxis sculptureUpAxis(const sandcore::MeshBounds& bounds) {
+    const double x = bounds.extent(0), y = bounds.extent(1), z = bounds.extent(2);
+    return z > 1.1 * y && z >= x ? sandcore::UpAxis::PlusZ : sandcore::UpAxis::PlusY;
+}
+
+SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSettings& requested, ModelUse use,
+                        const ModelShapeRequest& request, std::uint64_t memoryLimit) {
+    SandSpace out;
+    const auto loadStart = Clock::now();
+    out.parts = loadModelParts(path);
+    out.loadMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - loadStart).count();
+    chooseRoles(out.parts, request.kind, request.roles);
+    sandcore::VoxelizeSettings settings = requested;
+    // W4: an open sculpture gets the robust inside test; parity would leave holes through it.
+    const bool sculpture = request.kind == sandcore::SceneKind::Sculpture;
+    if (sculpture)
+        for (const ModelPart& part : out.parts) settings.robust = settings.robust || !part.closed;
+    out.model = voxelizeLoadedMesh(path, mergedMesh(out.parts), settings, use, memoryLimit);
+    try {
+        if (sculpture) findSculpture(out, settings, request);
+        else findHourglass(out, settings, request);
+    } catch (const std::invalid_argument& e) {
+        throw ModelError(path, e.what());
+    }
+    // The hourglass's space comes turned from its search.
+    if (sculpture) out.space = sandcore::turnToUp(out.space, out.up);
     out.model.voxels.mask = sandcore::turnToUp(out.model.voxels.mask, out.up);
     if (!out.obstacles.inside.empty()) out.obstacles = sandcore::turnToUp(out.obstacles, out.up);
     return out;
+}
+
+std::string noCellInsideMessage(const std::vector<ModelPart>& parts, const sandcore::VoxelPlacement& placement,
+                                int resolution, bool closed) {
+    std::string message = "no cell lies inside the model at resolution " + std::to_string(resolution);
+    // Each part's thinnest extent in cells; the median part decides the resolution to suggest.
+    std::vector<double> thinnest;
+    for (const ModelPart& part : parts) {
+        const sandcore::MeshBounds b = sandcore::boundsOf(part.mesh);
+        double cells = 1e300;
+        for (int a = 0; a < 3; ++a) cells = std::min(cells, b.extent(a) * placement.scale[std::size_t(a)]);
+        thinnest.push_back(cells);
+    }
+    std::sort(thinnest.begin(), thinnest.end());
+    const double median = thinnest.empty() ? 0.0 : thinnest[thinnest.size() / 2];
+    if (median > 0.0 && median < 2.0) {
+        const int needed = int(std::ceil(resolution * 2.0 / median));
+        char text[200];
+        std::snprintf(text, sizeof text, ": its %zu part%s are about %.2f cells thin; --res %d would give them two cells across",
+                      parts.size(), parts.size() == 1 ? "" : "s", median, needed);
+        message += text;
+    } else if (!closed) {
+        message += " (the mesh is open; try --robust)";
+    }
+    return message;
 }
 
 } // namespace sandglass

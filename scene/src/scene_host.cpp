@@ -124,10 +124,12 @@ std::optional<BuildOutcome> SceneHost::pollBuild() {
             startBuild(*std::exchange(waiting_, std::nullopt));
             return std::nullopt;
         }
+        const std::string note = built.note;
         adopt(std::move(built), building_);
         outcome.adopted = true;
         outcome.message = std::string("built ") + sceneKindName(scene_->kind()) + ", " +
                           std::to_string(scene_->grainCount()) + " grains";
+        if (!note.empty()) outcome.message += "; " + note; // W5: what was done instead of an hourglass
     } catch (const std::exception& error) {
         if (waiting_) {
             startBuild(*std::exchange(waiting_, std::nullopt)); // its error no longer matters either

@@ -174,12 +174,13 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
     // carves the upper bulb with noSharpEdges (makeHourglassScene).
     const std::int64_t removed = request.noiseThreshold >= 0 ? sandcore::removeNoise(mask, request.noiseThreshold) : 0;
     if (mask.countInside() == 0)
-        throw ModelError(request.modelPath, "no cell lies inside the model at resolution " +
-                                                std::to_string(resolution) +
-                                                (space.model.voxels.closedness.closed ? "" : " (the mesh is open; try --robust)"));
+        throw ModelError(request.modelPath, noCellInsideMessage(space.parts, space.model.voxels.placement, resolution,
+                                                                space.model.voxels.closedness.closed));
     try {
-        sandcore::Scene scene = hourglass ? sandcore::makeHourglassScene(mask, settings, step)
-                                          : sandcore::makeSculptureScene(mask, space.obstacles, step);
+        sandcore::Scene scene = !hourglass ? sandcore::makeSculptureScene(mask, space.obstacles, step)
+                                : space.modelledSand.inside.empty()
+                                    ? sandcore::makeHourglassScene(mask, settings, step)
+                                    : sandcore::makeHourglassScene(mask, space.modelledSand, settings, step);
         BuiltScene built(std::move(scene));
         built.model = std::move(space.model);
         built.noiseCellsRemoved = removed;
@@ -188,10 +189,16 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
         built.upAxis = space.up;
         built.upAxisFound = space.upFound;
         built.cavityMilliseconds = space.cavityMilliseconds;
+        built.closingCells = space.closingCells;
+        built.neckOpened = space.neckOpened;
+        built.modelledSandCells = space.modelledSand.inside.empty() ? 0 : space.modelledSand.countInside();
+        built.note = space.note;
         built.sandSpaceCells = mask.countInside();
-        ModelToWorld toWorld{space.model.voxels.placement, space.up, sandcore::maskOriginInScene(request.kind, mask)};
+        ModelToWorld toWorld{space.model.voxels.placement, space.up, sandcore::maskOriginInScene(request.kind, mask),
+                             space.parts.front().fileCentre};
         const sandcore::Int3 upperOrigin = built.scene.gridOrigin(sandcore::GridLevel::Upper);
         const float height = float(upperOrigin.y + built.scene.grid(sandcore::GridLevel::Upper).size().y);
+        built.modelToWorld = toWorld;
         ModelDrawing drawing = makeModelDrawing(space.parts, toWorld, height);
         if (!drawing.parts.empty()) built.drawing = std::make_shared<const ModelDrawing>(std::move(drawing));
         return built;

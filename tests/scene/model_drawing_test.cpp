@@ -90,7 +90,7 @@ TEST_CASE("model drawing: a point goes where sandcore's quarter turns move its c
 }
 
 TEST_CASE("model drawing: the bundled hourglasses' sand space lies centred inside their drawn glass, upright") {
-    for (const char* file : {"framed_hourglass.obj", "framed_hourglass_z.stl", "capped_glass.obj"}) {
+    for (const std::string file : {"framed_hourglass.obj", "framed_hourglass_z.stl", "capped_glass.obj"}) {
         CAPTURE(file);
         SceneRequest request;
         request.modelPath = bundled(file);

@@ -29,6 +29,10 @@ void addModelShapeJson(nlohmann::ordered_json& out, const BuiltScene& built) {
     const auto& upper = built.scene.grid(sandcore::GridLevel::Upper).cells();
     out["upper_cells"] = std::count_if(upper.begin(), upper.end(), [](sandcore::CellValue c) { return c != sandcore::kInvalid; });
     out["cavity_milliseconds"] = built.cavityMilliseconds;
+    out["closing_cells"] = built.closingCells;
+    out["neck_opened"] = built.neckOpened;
+    out["modelled_sand_cells"] = built.modelledSandCells;
+    out["note"] = built.note;
 }
 
 } // namespace sandglass

@@ -181,6 +181,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         std::cout << out.dump() << "\n";
         return 0;
     }
+    if (!built.note.empty()) std::printf("%s\n", built.note.c_str());
     std::printf("scene %s: %lld grains (%lld at start), %lld in the upper grid, %lld in the lower grid\n",
                 sceneName.c_str(), (long long)scene.grainCount(), (long long)grainsInitial,
                 (long long)scene.counters().grainsUpper, (long long)scene.counters().grainsLower);

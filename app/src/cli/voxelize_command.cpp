@@ -83,6 +83,12 @@ int runVoxelize(const VoxelizeOptions& options) {
         out["sand_space_cells"] = space.space.countInside();
         out["cavities"] = space.cavities;
         out["cavity_milliseconds"] = space.cavityMilliseconds;
+        out["closing_cells"] = space.closingCells;
+        out["neck_opened"] = space.neckOpened;
+        out["modelled_sand_cells"] = space.modelledSand.inside.empty() ? 0 : space.modelledSand.countInside();
+        out["note"] = space.note;
+        out["load_milliseconds"] = space.loadMilliseconds;
+        out["total_milliseconds"] = space.loadMilliseconds + model.milliseconds + space.cavityMilliseconds;
         std::cout << out.dump() << "\n";
         return 0;
     }
@@ -105,6 +111,7 @@ int runVoxelize(const VoxelizeOptions& options) {
     std::printf("sand space: %s, %lld cells, %d cavities (%.2f ms), up axis %s%s\n", vesselKindName(space.vessel),
                 (long long)space.space.countInside(), space.cavities, space.cavityMilliseconds,
                 sandcore::upAxisName(space.up), space.upFound ? " (found)" : "");
+    if (!space.note.empty()) std::printf("%s\n", space.note.c_str());
     return 0;
 }
 

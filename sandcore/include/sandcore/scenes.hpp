@@ -23,6 +23,12 @@ Scene makeCanvasScene(const CanvasSettings& canvas = {}, const StepSettings& ste
 Scene makeHourglassScene(const InsideMask& vessel, const HourglassSettings& hourglass = {},
                          const StepSettings& step = {});
 
+/// W1: as above, with the upper bulb's cells that `initialSand` (a mask of the vessel's size)
+/// marks as the sand reset fills, in place of the fill fraction; an empty mask, or one that
+/// marks no cell of the upper bulb, fills by the fraction.
+Scene makeHourglassScene(const InsideMask& vessel, const InsideMask& initialSand, const HourglassSettings& hourglass,
+                         const StepSettings& step);
+
 /// A sculpture from a model's inside mask (MODE_SHAPE + SHAPE_LOSE): the grids of
 /// sceneGridSizes(SceneKind::Sculpture, model.size), the upper one twice as wide and deep as the
 /// model with the model filled in its middle; below it an EMPTY grid twice as wide, deep and

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace sandcore {
 
@@ -39,6 +40,9 @@ struct NeckProfile {
 /// The neck of the mask's inside cells along axis 0 (x), 1 (y) or 2 (z): the smallest non-empty
 /// cross-section in the middle half of the occupied span, ties to the middle.
 NeckProfile neckAlong(const InsideMask& mask, int axis);
+
+/// As neckAlong, from the inside cells of each layer along the axis, low end first.
+NeckProfile neckOfAreas(const std::vector<std::int64_t>& area);
 
 /// The axis along which the mask has the narrowest neck between two bulbs (plus direction);
 /// +y when no axis has one or on a tie with y.

@@ -23,9 +23,13 @@ struct ModelToWorld {
     sandcore::VoxelPlacement placement;          ///< model units to the voxel grid (S2)
     sandcore::UpAxis up = sandcore::UpAxis::PlusY; ///< the quarter turns applied to the mask (S9)
     sandcore::Int3 maskOrigin;                   ///< where the turned mask's cell (0,0,0) lies (sandcore::maskOriginInScene)
+    std::array<double, 3> fileCentre{};          ///< what the loader subtracted from the file's coordinates (ModelPart::fileCentre)
 
     /// The point in world cells.
     sandcore::Vec3 apply(const sandcore::Vec3& model) const;
+    /// W6: a point in world cells back in the file's own coordinates and units (apply's inverse,
+    /// with the loader's centring undone), in double: files far from the origin keep their digits.
+    std::array<double, 3> toFile(const sandcore::Vec3& world) const;
 };
 
 /// A drawn vertex: world cells and a unit normal.

@@ -37,14 +37,22 @@ struct PartRoleChoice {
 /// "NAME=ROLE" to a choice; throws std::invalid_argument with one line otherwise.
 PartRoleChoice parsePartRoleChoice(std::string_view text);
 
-/// One object of a model file.
+/// One connected shell of an object of a model file (W1): an object of several shells (a glass
+/// with its posts and plates, modelled sand) gives a part for each.
 struct ModelPart {
-    std::string name;            ///< the node's (or mesh's) name, made unique; "part N" when unnamed
+    std::string name;            ///< the object's name, with " #K" for its K-th shell when it has several; made unique
+    std::string object;          ///< the name of the object (node or mesh) the shell belongs to
     sandcore::TriangleMesh mesh; ///< its triangles with the node transforms applied, model units
     bool closed = false;         ///< no boundary edges (S5)
     PartRole role = PartRole::Vessel; ///< chosen by chooseRoles
+    /// The role came from the part's name or from the user; otherwise the hourglass's sand-space
+    /// search decides between vessel, frame and modelled sand (sandcore::ModelShell::roleFixed).
+    bool roleFixed = false;
     bool hasColour = false;      ///< the material gave a diffuse colour
     std::array<float, 3> colour{0.8f, 0.8f, 0.8f}; ///< diffuse colour, linear 0..1
+    /// The file's bounding-box centre, which the loader subtracted from every vertex: the file's
+    /// own coordinates are mesh + fileCentre (W6), model units.
+    std::array<double, 3> fileCentre{};
 };
 
 /// What is reported of a part (`parts` in the JSON).
@@ -55,8 +63,8 @@ struct PartSummary {
     PartRole role = PartRole::Vessel; ///< role in the scene
 };
 
-/// Reads every object of a model file as a part, in the order of assimp's node tree (the order
-/// loadMesh merges them), through the same importer child process and checks as loadMesh (a
+/// Reads every object of a model file, split into its connected shells, as parts, in the order of
+/// assimp's node tree (the order loadMesh merges them), through the same importer child process and checks as loadMesh (a
 /// corrupt file that crashes or hangs assimp, or a FIFO, costs one line of error, never the
 /// process). Vertices are moved as loadMesh moves them (bounding-box centre at the origin) and
 /// joined within each part. Throws ModelError ("FILE: cause") for every S1 bad input.
@@ -67,11 +75,12 @@ std::vector<ModelPart> loadModelParts(const std::string& path, const MeshLoadOpt
 sandcore::TriangleMesh mergedMesh(const std::vector<ModelPart>& parts);
 
 /// Gives every part its role. Automatic for the hourglass: names with glass/vessel/bulb are the
-/// vessel, frame/base/cap/plate/pillar/post/stand/rod/wood the frame, others the vessel. For the
-/// sculpture: the largest closed part is sand; a part named base/pedestal/plinth/stand, or one
-/// that rests on the floor and reaches no higher than the bottom quarter of the sand part, is
-/// static; others are sand. Then the user's choices; throws std::invalid_argument naming an
-/// unknown part and listing the parts.
+/// vessel, frame/base/cap/plate/pillar/post/stand/rod/wood the frame, sand the modelled sand
+/// (all fixed); others are the vessel until the sand-space search decides. For the sculpture,
+/// object by object (a shell takes its object's role): the largest closed object is sand; one
+/// named base/pedestal/plinth/stand, or one that rests on the floor and reaches no higher than
+/// the bottom quarter of the sand object, is static; others are sand. Then the user's choices,
+/// by part or by object name; throws std::invalid_argument naming an unknown part and listing the parts.
 void chooseRoles(std::vector<ModelPart>& parts, sandcore::SceneKind kind, const std::vector<PartRoleChoice>& choices);
 
 /// The reported view of the parts.

@@ -1,11 +1,13 @@
 #pragma once
-// SPEC S7-S9: a model file's parts, up axis and sand space. For the hourglass the sand space is
-// the largest cavity that the vessel and frame parts enclose together (a glass with thickness);
-// a model made as one surface of the sand space keeps its inside (S2). Sculptures keep +y.
+// SPEC S7-S9, W1-W5: a model file's parts, up axis and sand space. The hourglass's recipe is
+// sandcore's (findHourglassSpace); this layer loads the file, names the parts and reports.
+// Sculptures fill open meshes robustly and stand a model up along +y, or +z when it is clearly
+// taller that way.
 
 #include "scene/model_parts.hpp"
 #include "scene/model_voxelizer.hpp"
 
+#include "sandcore/hourglass_space.hpp"
 #include "sandcore/inside_mask.hpp"
 #include "sandcore/up_axis.hpp"
 
@@ -15,36 +17,34 @@
 
 namespace sandglass {
 
-/// Where the sand of an hourglass lives.
-enum class VesselKind : std::uint8_t {
-    Solid,  ///< the model is the sand space's surface: its inside cells
-    Cavity, ///< the largest cavity enclosed by the vessel and frame parts
-};
-/// "solid" or "cavity".
-const char* vesselKindName(VesselKind kind);
-
-/// Fewest cells a cavity needs to count as the sand space (a 3x3x3 room); smaller ones are gaps
-/// between touching parts.
-inline constexpr std::int64_t kMinCavityCells = 27;
+/// Where the sand of an hourglass lives (sandcore::SandSpaceKind).
+using VesselKind = sandcore::SandSpaceKind;
+/// "solid", "cavity", "open" or "model".
+inline const char* vesselKindName(VesselKind kind) { return sandcore::sandSpaceKindName(kind); }
 
 /// What the user asks of a model beyond the voxelization settings.
 struct ModelShapeRequest {
     sandcore::SceneKind kind = sandcore::SceneKind::Hourglass; ///< hourglass looks for a cavity and the up axis
     std::vector<PartRoleChoice> roles;  ///< --part NAME=ROLE, applied after the automatic roles
-    std::optional<sandcore::UpAxis> up; ///< --up; none = found (hourglass) or +y (sculpture)
+    std::optional<sandcore::UpAxis> up; ///< --up; none = found (hourglass) or by the sculpture's rule
 };
 
 /// A model file turned into the cells a scene is built from.
 struct SandSpace {
     ModelVoxelization model;            ///< the whole model's voxelization (S2, S6), turned to the up axis
-    std::vector<ModelPart> parts;       ///< the parts with their roles (model units, not turned)
+    std::vector<ModelPart> parts;       ///< the parts (shells) with their roles (model units, not turned)
     sandcore::InsideMask space;         ///< sand space (hourglass) or sand cells (sculpture), turned
     sandcore::InsideMask obstacles;     ///< sculpture: cells of static parts, turned; empty size otherwise
+    sandcore::InsideMask modelledSand;  ///< hourglass: the modelled sand's cells, turned; empty size when none
     VesselKind vessel = VesselKind::Solid; ///< hourglass: where the sand lives
     sandcore::UpAxis up = sandcore::UpAxis::PlusY; ///< the model axis that points up
     bool upFound = false;               ///< the up axis was found, not given
-    int cavities = 0;                   ///< cavities the walls enclose (hourglass)
-    double cavityMilliseconds = 0.0;    ///< time of the walls' voxelization and the cavity search, ms
+    int cavities = 0;                   ///< spaces the walls enclose (hourglass)
+    int closingCells = 0;               ///< hourglass: gaps in the walls closed, cells (0 = none)
+    bool neckOpened = false;            ///< hourglass: a neck under a cell was opened to one cell
+    std::string note;                   ///< W5: why no hourglass was found and what was done instead; empty otherwise
+    double cavityMilliseconds = 0.0;    ///< time of the sand-space search (hourglass), ms
+    double loadMilliseconds = 0.0;      ///< time of reading the file and splitting it into parts, ms
 };
 
 /// Loads the parts of `path`, chooses their roles, voxelizes the model (memory checked first,
@@ -52,5 +52,14 @@ struct SandSpace {
 /// for bad input and std::invalid_argument for an unknown part name.
 SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSettings& settings, ModelUse use,
                         const ModelShapeRequest& request, std::uint64_t memoryLimit = 0);
+
+/// The sculpture's up axis when none is given: +z when the model is clearly taller along z than
+/// along y and z is its largest extent (a figure modelled Z-up lies on its back otherwise), else +y.
+sandcore::UpAxis sculptureUpAxis(const sandcore::MeshBounds& bounds);
+
+/// S1: why no cell lies inside the model at `resolution`, with the resolution that would give
+/// most of its parts two cells across when they are thinner than that (one line).
+std::string noCellInsideMessage(const std::vector<ModelPart>& parts, const sandcore::VoxelPlacement& placement,
+                                int resolution, bool closed);
 
 } // namespace sandglass

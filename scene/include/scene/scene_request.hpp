@@ -75,7 +75,11 @@ struct BuiltScene {
     std::optional<ModelVoxelization> model; ///< set when request.modelPath was given
     std::int64_t noiseCellsRemoved = 0;     ///< cells the S3 noNoise clean-up removed from the model
     std::vector<PartSummary> parts;         ///< S7: the model's parts with their roles; empty without a model
-    VesselKind vessel = VesselKind::Solid;  ///< S8: hourglass from a model: its inside or its cavity
+    VesselKind vessel = VesselKind::Solid;  ///< S8, W2: hourglass from a model: where its sand lives
+    int closingCells = 0;                   ///< W2: gaps in the walls closed to find the sand space, cells
+    bool neckOpened = false;                ///< W2: a neck under a cell was opened to one cell
+    std::int64_t modelledSandCells = 0;     ///< W1: cells of modelled sand in the sand space (0: filled by --fill)
+    std::string note;                       ///< W5: why no hourglass was found and what was done instead; empty otherwise
     std::optional<sandcore::UpAxis> upAxis; ///< S9: the model axis turned up; set when a model was loaded
     bool upAxisFound = false;               ///< S9: the up axis was found, not given
     double cavityMilliseconds = 0.0;        ///< S8: time of the walls' voxelization and cavity search, ms
@@ -83,6 +87,8 @@ struct BuiltScene {
     /// S10: the model's parts as modelled, in the scene's world cells (upright); null without a
     /// model or when no part is drawn (a sculpture that is all sand).
     std::shared_ptr<const ModelDrawing> drawing;
+    /// W6: how the model's points became world cells (and back); set when a model was loaded.
+    std::optional<ModelToWorld> modelToWorld;
 };
 
 /// "hourglass", "sculpture" or "canvas" to a scene kind; throws std::invalid_argument otherwise.

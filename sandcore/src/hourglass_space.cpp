@@ -1,0 +1,457 @@
+#include "sandcore/hourglass_space.hpp"
+
+#include "sandcore/cavity.hpp"
+#include "sandcore/mesh_shells.hpp"
+#include "wall_cavities.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace sandcore {
+
+const char* sandSpaceKindName(SandSpaceKind kind) {
+    switch (kind) {
+    case SandSpaceKind::Solid: return "solid";
+    case SandSpaceKind::Cavity: return "cavity";
+    case SandSpaceKind::OpenVessel: return "open";
+    case SandSpaceKind::Model: return "model";
+    }
+    return "cavity";
+}
+
+namespace {
+
+// Fewest cells a space needs to count (a 3x3x3 room): smaller ones are gaps between touching parts.
+constexpr std::size_t kMinSpaceCells = 27;
+// A space is an hourglass when its narrowest middle layer has at most this share of the smaller
+// bulb's widest layer.
+constexpr double kNeckRatio = 0.8;
+// A space found only with wider gaps closed must be this much larger to replace one found with
+// narrower gaps closed: the same space grown back differs by a few cells, a sealed leak by far more.
+constexpr double kLargerSpace = 1.2;
+// Modelled sand fills part of one bulb: on some axis it spans less than this share of the walls.
+constexpr double kPartOfOneBulb = 0.55;
+// A shell the sand space borders on with at least this share of its cells within kNearCells is glass.
+constexpr double kGlassShare = 0.5;
+constexpr int kNearCells = 3;
+// Walls thinner than this many cells between two bulbs are cut through to open a neck.
+constexpr int kMaxNeckWall = 3;
+// Two spaces are the two bulbs of one hourglass only when the smaller holds at least this share
+// of the larger: a sliver in a wall or a post's inside is no bulb.
+constexpr double kBulbShare = 0.2;
+
+struct Grid {
+    Int3 size;
+    std::size_t cells() const { return std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z); }
+    std::array<int, 3> coordinates(std::uint32_t n) const {
+        const std::size_t row = std::size_t(size.x), layer = row * std::size_t(size.z);
+        return {int(n % row), int(n / layer), int((n / row) % std::size_t(size.z))};
+    }
+    std::uint32_t index(const std::array<int, 3>& c) const {
+        return std::uint32_t(std::size_t(c[0]) + std::size_t(size.x) * (std::size_t(c[2]) + std::size_t(size.z) * std::size_t(c[1])));
+    }
+    int length(int axis) const { return axis == 0 ? size.x : axis == 1 ? size.y : size.z; }
+};
+
+// A shell in the model's grid.
+struct GridShell {
+    CellList surface;           // cells its triangles touch
+    CellList inside;            // cells whose centres it encloses (closed shells only)
+    bool closed = false;
+    std::array<double, 3> low{}, high{}; // bounds, cells
+};
+
+// The cells whose centres a closed grid-space mesh encloses, voxelized within its own bounds only.
+CellList insideCells(const TriangleMesh& gridMesh, const Grid& grid, const GridShell& shell, int threads) {
+    std::array<int, 3> from{}, sub{};
+    for (std::size_t a = 0; a < 3; ++a) {
+        from[a] = std::clamp(int(std::floor(shell.low[a])), 0, grid.length(int(a)));
+        const int to = std::clamp(int(std::ceil(shell.high[a])), 0, grid.length(int(a)));
+        sub[a] = to - from[a];
+        if (sub[a] <= 0) return {};
+    }
+    TriangleMesh moved = gridMesh;
+    for (Vec3& v : moved.vertices) v = {v.x - float(from[0]), v.y - float(from[1]), v.z - float(from[2])};
+    VoxelizeSettings settings;
+    settings.threads = threads;
+    const InsideMask part = voxelizeGridSpace(moved, {sub[0], sub[1], sub[2]}, settings);
+    CellList cells;
+    for (int y = 0; y < sub[1]; ++y)
+        for (int z = 0; z < sub[2]; ++z)
+            for (int x = 0; x < sub[0]; ++x)
+                if (part.at(x, y, z)) cells.push_back(grid.index({x + from[0], y + from[1], z + from[2]}));
+    return cells;
+}
+
+// Does a wall of another shell lie along all six axis rays from the cell?
+bool enclosedByOthers(std::uint32_t cell, std::uint32_t shell, const std::vector<std::uint32_t>& owner, const Grid& grid) {
+    const std::array<int, 3> start = grid.coordinates(cell);
+    for (int axis = 0; axis < 3; ++axis)
+        for (int step : {-1, 1}) {
+            std::array<int, 3> c = start;
+            bool hit = false;
+            for (c[std::size_t(axis)] += step; !hit && c[std::size_t(axis)] >= 0 && c[std::size_t(axis)] < grid.length(axis);
+                 c[std::size_t(axis)] += step) {
+                const std::uint32_t o = owner[grid.index(c)];
+                hit = o != UINT32_MAX && o != shell;
+            }
+            if (!hit) return false;
+        }
+    return true;
+}
+
+// Modelled sand (W1): a closed shell that the other shells enclose on every side and that fills
+// only part of one bulb. A nested shell that spans the walls (a glass's inner surface) stays a wall.
+bool looksLikeModelledSand(std::uint32_t s, const GridShell& shell, const std::vector<std::uint32_t>& owner,
+                           const std::array<double, 3>& wallExtent, const Grid& grid) {
+    if (!shell.closed || shell.inside.empty()) return false;
+    bool partial = false;
+    for (std::size_t a = 0; a < 3; ++a) partial = partial || shell.high[a] - shell.low[a] < kPartOfOneBulb * wallExtent[a];
+    if (!partial) return false;
+    const std::size_t samples = std::min<std::size_t>(32, shell.inside.size());
+    std::size_t enclosed = 0;
+    for (std::size_t i = 0; i < samples; ++i)
+        enclosed += enclosedByOthers(shell.inside[i * shell.inside.size() / samples], s, owner, grid) ? 1 : 0;
+    return enclosed * 4 >= samples * 3;
+}
+
+struct Candidate {
+    CellList cells;
+    int source = 0;        // -1: a closed glass's inside; 0, 1, 2...: the walls' gaps closed by that many cells
+    bool neckOpened = false;
+    NeckProfile neck;      // along neckAxis
+    int neckAxis = -1;     // -1: no neck between two bulbs
+};
+
+// The narrowest neck of the cells along x, y or z (y first: ties keep the model's own up).
+void findNeck(Candidate& candidate, const Grid& grid) {
+    std::array<std::vector<std::int64_t>, 3> area;
+    for (int a = 0; a < 3; ++a) area[std::size_t(a)].assign(std::size_t(grid.length(a)), 0);
+    for (std::uint32_t n : candidate.cells) {
+        const std::array<int, 3> c = grid.coordinates(n);
+        for (std::size_t a = 0; a < 3; ++a) ++area[a][std::size_t(c[a])];
+    }
+    for (int axis : {1, 0, 2}) {
+        const NeckProfile profile = neckOfAreas(area[std::size_t(axis)]);
+        if (profile.hasNeck && profile.ratio <= kNeckRatio && (candidate.neckAxis < 0 || profile.ratio < candidate.neck.ratio)) {
+            candidate.neck = profile;
+            candidate.neckAxis = axis;
+        }
+    }
+}
+
+// W2: two bulbs that a wall under kMaxNeckWall cells separates along an axis (a neck narrower
+// than a cell, sealed by its own surface cells) joined through one column of cells.
+bool joinAcrossNeck(const CellList& a, const CellList& b, const Grid& grid, CellList& joined) {
+    struct Best { int gap = kMaxNeckWall + 1; int axis = -1; std::array<int, 3> from{}; double offCentre = 0.0; } best;
+    for (int axis = 0; axis < 3; ++axis) {
+        const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2; // the plane across the axis
+        const int width = grid.length(u), depth = grid.length(v);
+        const std::size_t plane = std::size_t(width) * std::size_t(depth);
+        std::vector<int> lowA(plane, INT32_MAX), highA(plane, -1), lowB(plane, INT32_MAX), highB(plane, -1);
+        double centreU = 0.0, centreV = 0.0;
+        auto note = [&](const CellList& cells, std::vector<int>& low, std::vector<int>& high) {
+            for (std::uint32_t n : cells) {
+                const std::array<int, 3> c = grid.coordinates(n);
+                const std::size_t column = std::size_t(c[std::size_t(u)]) + std::size_t(width) * std::size_t(c[std::size_t(v)]);
+                low[column] = std::min(low[column], c[std::size_t(axis)]);
+                high[column] = std::max(high[column], c[std::size_t(axis)]);
+                centreU += c[std::size_t(u)];
+                centreV += c[std::size_t(v)];
+            }
+        };
+        note(a, lowA, highA);
+        note(b, lowB, highB);
+        centreU /= double(a.size() + b.size());
+        centreV /= double(a.size() + b.size());
+        for (std::size_t column = 0; column < plane; ++column) {
+            if (highA[column] < 0 || highB[column] < 0) continue;
+            int gap = 0, start = 0;
+            if (highB[column] < lowA[column]) gap = lowA[column] - highB[column] - 1, start = highB[column] + 1;
+            else if (highA[column] < lowB[column]) gap = lowB[column] - highA[column] - 1, start = highA[column] + 1;
+            else continue;
+            if (gap < 1) continue;
+            const double du = double(column % std::size_t(width)) - centreU, dv = double(column / std::size_t(width)) - centreV;
+            const double offCentre = du * du + dv * dv;
+            if (gap < best.gap || (gap == best.gap && offCentre < best.offCentre)) {
+                best.gap = gap;
+                best.axis = axis;
+                best.offCentre = offCentre;
+                best.from[std::size_t(axis)] = start;
+                best.from[std::size_t(u)] = int(column % std::size_t(width));
+                best.from[std::size_t(v)] = int(column / std::size_t(width));
+            }
+        }
+    }
+    if (best.axis < 0) return false;
+    joined = a;
+    joined.insert(joined.end(), b.begin(), b.end());
+    std::array<int, 3> c = best.from;
+    for (int i = 0; i < best.gap; ++i, ++c[std::size_t(best.axis)]) joined.push_back(grid.index(c));
+    std::sort(joined.begin(), joined.end());
+    return true;
+}
+
+// The spaces of one source with the necks under a cell between their largest ones opened.
+void addCandidates(std::vector<CellList> spaces, int source, const Grid& grid, std::vector<Candidate>& out) {
+    std::erase_if(spaces, [](const CellList& c) { return c.size() < kMinSpaceCells; });
+    std::stable_sort(spaces.begin(), spaces.end(), [](const CellList& p, const CellList& q) { return p.size() > q.size(); });
+    const std::size_t largest = std::min<std::size_t>(spaces.size(), 4);
+    for (std::size_t i = 0; i < largest; ++i)
+        for (std::size_t j = i + 1; j < largest; ++j) {
+            if (double(spaces[j].size()) < kBulbShare * double(spaces[i].size())) continue;
+            Candidate joined;
+            joined.source = source;
+            joined.neckOpened = true;
+            if (joinAcrossNeck(spaces[i], spaces[j], grid, joined.cells)) out.push_back(std::move(joined));
+        }
+    for (CellList& cells : spaces) {
+        Candidate candidate;
+        candidate.source = source;
+        candidate.cells = std::move(cells);
+        out.push_back(std::move(candidate));
+    }
+}
+
+// Of each source the largest space with a neck; a later source (wider gaps closed) replaces an
+// earlier one only when its space is clearly larger (a leak sealed, not a few cells regained).
+const Candidate* bestHourglass(const std::vector<Candidate>& candidates) {
+    const Candidate* best = nullptr;
+    const Candidate* bestOfSource = nullptr;
+    auto settle = [&] {
+        if (bestOfSource && (!best || double(bestOfSource->cells.size()) > kLargerSpace * double(best->cells.size())))
+            best = bestOfSource;
+        bestOfSource = nullptr;
+    };
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        if (i > 0 && candidates[i].source != candidates[i - 1].source) settle();
+        const Candidate& c = candidates[i];
+        if (c.neckAxis >= 0 && (!bestOfSource || c.cells.size() > bestOfSource->cells.size())) bestOfSource = &c;
+    }
+    settle();
+    return best;
+}
+
+InsideMask maskOf(const CellList& cells, Int3 size) {
+    InsideMask mask = InsideMask::empty(size);
+    for (std::uint32_t n : cells) mask.inside[n] = 1;
+    return mask;
+}
+
+UpAxis upAlong(int axis, bool plus) {
+    static constexpr UpAxis kPlus[3] = {UpAxis::PlusX, UpAxis::PlusY, UpAxis::PlusZ};
+    static constexpr UpAxis kMinus[3] = {UpAxis::MinusX, UpAxis::MinusY, UpAxis::MinusZ};
+    return plus ? kPlus[axis] : kMinus[axis];
+}
+
+// The largest cell list and its index.
+template <class Lists> std::size_t largestOf(const Lists& lists) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < lists.size(); ++i)
+        if (lists[i].size() > lists[best].size()) best = i;
+    return best;
+}
+
+} // namespace
+
+HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const HourglassSpaceSettings& settings) {
+    if (shells.empty()) throw std::invalid_argument("the model has no triangles");
+    TriangleMesh merged;
+    for (const ModelShell& shell : shells) merged.append(shell.mesh);
+    HourglassSpace out;
+    out.placement = placeInGrid(merged, settings.voxelize);
+    const Grid grid{out.placement.size};
+    const int threads = std::max(1, settings.voxelize.threads);
+
+    // Every shell's cells, and which shell owns each wall cell (UINT32_MAX - 1 where several meet).
+    std::vector<GridShell> inGrid(shells.size());
+    std::vector<std::uint32_t> owner(grid.cells(), UINT32_MAX);
+    std::array<double, 3> wallLow, wallHigh;
+    wallLow.fill(std::numeric_limits<double>::infinity());
+    wallHigh.fill(-std::numeric_limits<double>::infinity());
+    for (std::size_t s = 0; s < shells.size(); ++s) {
+        if (shells[s].mesh.triangles.empty()) continue;
+        const TriangleMesh gridMesh = toGridSpace(shells[s].mesh, out.placement);
+        GridShell& shell = inGrid[s];
+        const MeshBounds bounds = boundsOf(gridMesh);
+        shell.low = bounds.min;
+        shell.high = bounds.max;
+        for (std::size_t a = 0; a < 3; ++a) {
+            wallLow[a] = std::min(wallLow[a], bounds.min[a]);
+            wallHigh[a] = std::max(wallHigh[a], bounds.max[a]);
+        }
+        appendSurfaceCells(gridMesh, grid.size, shell.surface);
+        for (std::uint32_t n : shell.surface) owner[n] = owner[n] == UINT32_MAX ? std::uint32_t(s) : UINT32_MAX - 1;
+        shell.closed = closednessOf(shells[s].mesh).closed;
+        const bool mayBeSand = !shells[s].roleFixed || shells[s].role == ShellRole::Sand;
+        const bool mayBeVessel = !shells[s].roleFixed || shells[s].role == ShellRole::Glass;
+        if (shell.closed && (mayBeSand || mayBeVessel)) shell.inside = insideCells(gridMesh, grid, shell, threads);
+    }
+    std::array<double, 3> wallExtent;
+    for (std::size_t a = 0; a < 3; ++a) wallExtent[a] = wallHigh[a] - wallLow[a];
+
+    // W1: roles. Fixed ones stay; modelled sand is found among the rest.
+    out.roles.resize(shells.size());
+    for (std::size_t s = 0; s < shells.size(); ++s) {
+        out.roles[s] = shells[s].role;
+        if (!shells[s].roleFixed)
+            out.roles[s] = looksLikeModelledSand(std::uint32_t(s), inGrid[s], owner, wallExtent, grid) ? ShellRole::Sand
+                                                                                                       : ShellRole::Glass;
+    }
+    MaskCells walls(grid.cells(), 0);
+    for (std::size_t s = 0; s < shells.size(); ++s)
+        if (out.roles[s] != ShellRole::Sand)
+            for (std::uint32_t n : inGrid[s].surface) walls[n] = 1;
+
+    // S8, W2: the candidates. A closed glass surface that holds no other wall encloses its sand
+    // directly (its inside, as parity gives it); then the spaces the walls enclose, with ever wider gaps closed.
+    std::vector<Candidate> candidates;
+    for (std::size_t s = 0; s < shells.size(); ++s) {
+        const GridShell& shell = inGrid[s];
+        if (out.roles[s] != ShellRole::Glass || shell.inside.empty()) continue;
+        // The outer surface of a glass with thickness wraps its inner surface: its inside is no sand space.
+        bool wraps = false;
+        for (std::size_t o = 0; o < shells.size() && !wraps; ++o) {
+            if (o == s || out.roles[o] == ShellRole::Sand || inGrid[o].surface.empty()) continue;
+            bool within = true;
+            for (std::size_t a = 0; a < 3; ++a)
+                within = within && inGrid[o].low[a] >= shell.low[a] && inGrid[o].high[a] <= shell.high[a];
+            wraps = within;
+        }
+        if (wraps) continue;
+        CellList free;
+        for (std::uint32_t n : shell.inside)
+            if (!walls[n] || owner[n] == s) free.push_back(n);
+        addCandidates(componentsOf(free, grid.size), -1, grid, candidates);
+    }
+    const std::size_t solidCandidates = candidates.size();
+    for (int closing = 0; closing <= settings.maxClosingCells; ++closing)
+        addCandidates(enclosedRegions(walls, grid.size, closing), closing, grid, candidates);
+    for (Candidate& c : candidates) findNeck(c, grid);
+
+    const Candidate* chosen = bestHourglass(candidates);
+    if (std::getenv("SANDGLASS_DEBUG_SPACE"))
+        for (const Candidate& c : candidates)
+            std::fprintf(stderr, "candidate source %d cells %zu opened %d neckAxis %d ratio %.3f%s\n", c.source, c.cells.size(),
+                         int(c.neckOpened), c.neckAxis, c.neck.ratio, &c == chosen ? " CHOSEN" : "");
+    int axis = 1;
+    bool plus = true;
+    if (chosen) {
+        out.isHourglass = true;
+        out.kind = std::size_t(chosen - candidates.data()) < solidCandidates ? SandSpaceKind::Solid : SandSpaceKind::Cavity;
+        out.closingCells = std::max(0, chosen->source);
+        out.neckOpened = chosen->neckOpened;
+        axis = chosen->neckAxis;
+    } else {
+        // W5: no hourglass. The largest enclosed space, else the inside of an open vessel, else the model.
+        std::size_t largest = candidates.size();
+        for (std::size_t i = 0; i < candidates.size(); ++i)
+            if (largest == candidates.size() || candidates[i].cells.size() > candidates[largest].cells.size()) largest = i;
+        if (largest < candidates.size()) {
+            chosen = &candidates[largest];
+            out.kind = largest < solidCandidates ? SandSpaceKind::Solid : SandSpaceKind::Cavity;
+            out.closingCells = std::max(0, chosen->source);
+            out.note = "no hourglass found: the largest space the model encloses has no neck between two bulbs; it is filled "
+                       "and runs out of its bottom onto the floor below";
+        }
+    }
+    CellList open;
+    if (!chosen) {
+        std::size_t bestSize = 0;
+        for (int a = 0; a < 3; ++a) {
+            std::vector<CellList> parts = componentsOf(laterallyEnclosed(walls, grid.size, a), grid.size);
+            if (parts.empty()) continue;
+            CellList& part = parts[largestOf(parts)];
+            if (part.size() >= kMinSpaceCells && part.size() > bestSize) {
+                bestSize = part.size();
+                axis = a;
+                open = std::move(part);
+            }
+        }
+    }
+
+    if (chosen) {
+        out.space = maskOf(chosen->cells, grid.size);
+    } else if (!open.empty()) {
+        out.kind = SandSpaceKind::OpenVessel;
+        out.space = maskOf(open, grid.size);
+        // The wide end up, as a funnel stands.
+        std::vector<std::int64_t> area(std::size_t(grid.length(axis)), 0);
+        for (std::uint32_t n : open) ++area[std::size_t(grid.coordinates(n)[std::size_t(axis)])];
+        int low = 0, high = int(area.size()) - 1;
+        while (area[std::size_t(low)] == 0) ++low;
+        while (area[std::size_t(high)] == 0) --high;
+        const int quarter = std::max(1, (high - low + 1) / 4);
+        std::int64_t bottom = 0, top = 0;
+        for (int i = 0; i < quarter; ++i) bottom += area[std::size_t(low + i)], top += area[std::size_t(high - i)];
+        plus = top >= bottom;
+        out.note = std::string("no hourglass found: the model encloses no space; the inside of its open vessel along ") +
+                   upAxisName(upAlong(axis, plus)) + " is filled and runs out of its bottom onto the floor below";
+    } else {
+        out.kind = SandSpaceKind::Model;
+        VoxelizeSettings solid = settings.voxelize;
+        solid.robust = solid.robust || !closednessOf(merged).closed;
+        out.space = voxelize(merged, solid).mask;
+        out.note = "no hourglass found: the model encloses no space and holds no vessel; its own inside is used as a solid vessel";
+    }
+    // Modelled sand: the sand shells' insides within the space.
+    out.modelledSand = InsideMask::empty(grid.size);
+    std::int64_t sandAbove = 0, sandBelow = 0;
+    for (std::size_t s = 0; s < shells.size(); ++s) {
+        if (out.roles[s] != ShellRole::Sand) continue;
+        for (std::uint32_t n : inGrid[s].inside) {
+            if (!out.space.inside[n]) continue;
+            out.modelledSand.inside[n] = 1;
+            if (chosen && chosen->neckAxis >= 0) {
+                const int layer = grid.coordinates(n)[std::size_t(axis)];
+                sandAbove += layer > chosen->neck.neckLayer ? 1 : 0;
+                sandBelow += layer < chosen->neck.neckLayer ? 1 : 0;
+            }
+        }
+    }
+    // A real hourglass stands with its sand on top, ready to run.
+    if (out.isHourglass) plus = sandAbove >= sandBelow;
+    if (settings.up) {
+        out.up = *settings.up;
+    } else {
+        out.up = upAlong(axis, plus);
+        out.upFound = true;
+    }
+
+    // Shells left to decide: glass where the sand space lies close along most of them, else frame.
+    const MaskCells near = grownBy(out.space.inside, grid.size, kNearCells);
+    for (std::size_t s = 0; s < shells.size(); ++s) {
+        if (shells[s].roleFixed || out.roles[s] == ShellRole::Sand || inGrid[s].surface.empty()) continue;
+        std::size_t close = 0;
+        for (std::uint32_t n : inGrid[s].surface) close += near[n] ? 1 : 0;
+        out.roles[s] = double(close) >= kGlassShare * double(inGrid[s].surface.size()) ? ShellRole::Glass : ShellRole::Frame;
+    }
+
+    for (const Candidate& c : candidates)
+        out.enclosedSpaces += c.source == out.closingCells && !c.neckOpened ? 1 : 0;
+    out.space = turnToUp(out.space, out.up);
+    out.modelledSand = turnToUp(out.modelledSand, out.up);
+    return out;
+}
+
+Scene makeHourglassScene(const HourglassSpace& space, const HourglassSettings& hourglass, const StepSettings& step) {
+    if (space.modelledSand.countInside() == 0) return makeHourglassScene(space.space, hourglass, step);
+    return makeHourglassScene(space.space, space.modelledSand, hourglass, step);
+}
+
+Scene makeHourglassFromMesh(const TriangleMesh& mesh, int resolution, const HourglassSettings& hourglass,
+                            const StepSettings& step) {
+    std::vector<ModelShell> shells;
+    for (TriangleMesh& shell : splitIntoShells(weldVertices(mesh))) shells.push_back({std::move(shell)});
+    HourglassSpaceSettings settings;
+    settings.voxelize.resolution = resolution;
+    settings.voxelize.threads = step.threads;
+    return makeHourglassScene(findHourglassSpace(shells, settings), hourglass, step);
+}
+
+} // namespace sandcore
