@@ -7,6 +7,7 @@
 #include "view/render/shader_program.hpp"
 
 #include "scene/canvas_surface.hpp"
+#include "scene/data_paths.hpp"
 #include "scene/draft_image.hpp"
 #include "scene/file_io.hpp"
 #include "scene/scene_export.hpp"
@@ -34,7 +35,7 @@ constexpr float kCanvasPitch = 1.3f; // radians above the horizon the canvas is 
 std::vector<std::string> listModelFiles() {
     std::vector<std::string> files;
     std::error_code error;
-    const std::filesystem::path folder = std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models";
+    const std::filesystem::path folder = modelsFolder();
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
         const std::string extension = entry.path().extension().string();
         for (const char* known : {".obj", ".stl", ".ply", ".gltf", ".glb", ".off", ".fbx", ".dae", ".3ds"})
@@ -157,7 +158,7 @@ Application::Application(ApplicationOptions options)
     state_.glRenderer = window_.glRenderer();
     state_.glVersion = window_.glVersion();
     state_.modelFiles = listModelFiles();
-    state_.painting.draftFiles = listDraftFiles(std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models");
+    state_.painting.draftFiles = listDraftFiles(modelsFolder());
     state_.scene = host_.loaded();
     state_.loaded = host_.loaded();
     state_.files.screenshotFolder =
