@@ -39,8 +39,10 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME sandglass)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
-# Fonts and the file dialog are read or started at run time, not linked.
-set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "fonts-dejavu-core, zenity")
+# The font and the file dialog are read or started at run time, not linked.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "fonts-dejavu-core")
+# zenity is only suggested: as a recommendation apt would also bring its GTK and WebKit stack.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_SUGGESTS "zenity")
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME sandcore-dev)
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
 set(CPACK_COMPONENT_RUNTIME_DESCRIPTION
