@@ -1,12 +1,14 @@
 #include "app/application.hpp"
 
 #include "app/frame_benchmark_runner.hpp"
+#include "app/user_settings.hpp"
 #include "gui/help_window.hpp"
 #include "gui/panels.hpp"
 #include "gui/quit_question.hpp"
 #include "view/render/shader_program.hpp"
 
 #include "scene/canvas_surface.hpp"
+#include "scene/data_paths.hpp"
 #include "scene/draft_image.hpp"
 #include "scene/file_io.hpp"
 #include "scene/scene_export.hpp"
@@ -23,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <system_error>
+#include <utility>
 
 namespace sandglass {
 
@@ -34,7 +37,7 @@ constexpr float kCanvasPitch = 1.3f; // radians above the horizon the canvas is 
 std::vector<std::string> listModelFiles() {
     std::vector<std::string> files;
     std::error_code error;
-    const std::filesystem::path folder = std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models";
+    const std::filesystem::path folder = modelsFolder();
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
         const std::string extension = entry.path().extension().string();
         for (const char* known : {".obj", ".stl", ".ply", ".gltf", ".glb", ".off", ".fbx", ".dae", ".3ds"})
@@ -114,23 +117,7 @@ struct ApplicationCallbacks {
     static void enter(GLFWwindow* window, int entered) { ImGui_ImplGlfw_CursorEnterCallback(window, entered); }
     static void drop(GLFWwindow* window, int count, const char** paths) {
         if (count < 1) return;
-        AppState& state = of(window).state_;
-        // A .sand file opens; an image dropped on the canvas is a draft; every other file is a model.
-        if (isStateFile(paths[0])) {
-            // Opened straight away: the state path changes only when it opens, so a file that
-            // fails to open is never the one the next Save writes over.
-            of(window).loadStateFile(paths[0]);
-            return;
-        }
-        if (of(window).scene().kind() == sandcore::SceneKind::Canvas && isDraftImageFile(paths[0])) {
-            state.painting.draftPath = paths[0];
-            state.commands.push(Command::LoadDraft);
-            return;
-        }
-        state.scene.request.modelPath = paths[0];
-        state.scene.request.shape.clear();
-        if (state.scene.request.kind == sandcore::SceneKind::Canvas) state.scene.request.kind = sandcore::SceneKind::Hourglass;
-        state.commands.push(Command::Rebuild);
+        of(window).openFile(paths[0]);
     }
 };
 
@@ -144,6 +131,9 @@ Application::Application(ApplicationOptions options)
         offscreen_.emplace(width, height);
     }
     GLFWwindow* handle = window_.handle();
+    if (options_.windowPosition && options_.window.visible)
+        glfwSetWindowPos(handle, (*options_.windowPosition)[0], (*options_.windowPosition)[1]);
+    if (!options_.panelLayoutFile.empty()) imgui_.setIniFile(options_.panelLayoutFile);
     glfwSetWindowUserPointer(handle, this);
     glfwSetKeyCallback(handle, ApplicationCallbacks::key);
     glfwSetCharCallback(handle, ApplicationCallbacks::character);
@@ -157,7 +147,7 @@ Application::Application(ApplicationOptions options)
     state_.glRenderer = window_.glRenderer();
     state_.glVersion = window_.glVersion();
     state_.modelFiles = listModelFiles();
-    state_.painting.draftFiles = listDraftFiles(std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models");
+    state_.painting.draftFiles = listDraftFiles(modelsFolder());
     state_.scene = host_.loaded();
     state_.loaded = host_.loaded();
     state_.files.screenshotFolder =
@@ -369,11 +359,13 @@ void Application::handleKey(KeyCommand command) {
 
 void Application::adoptBuild(const BuildOutcome& outcome) {
     state_.statusLine = outcome.message;
+    const std::string draft = std::exchange(draftAfterBuild_, {});
     if (!outcome.adopted) {
         // The running scene stays, and the panel shows it again rather than the choice that failed.
         state_.scene = state_.loaded;
         return;
     }
+    rememberModel(host_.loaded().request.modelPath);
     state_.loaded = host_.loaded();
     state_.files.unsavedEdits = 0; // the edits went with the scene they were made in
     canvas_.sceneReplaced();
@@ -381,6 +373,38 @@ void Application::adoptBuild(const BuildOutcome& outcome) {
     turnStarted_.reset();
     camera_.setTurn(0.0f);
     frameCamera();
+    if (!draft.empty() && scene().kind() == sandcore::SceneKind::Canvas) loadDraft(draft);
+}
+
+void Application::rememberModel(const std::string& path) {
+    // The bundled models have their own list in the Scene tab; recent files are the user's.
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::weakly_canonical(modelsFolder(), error);
+    if (path.empty() || (!error && std::filesystem::weakly_canonical(path, error).parent_path() == folder)) return;
+    addRecentFile(state_.files.recentFiles, path);
+}
+
+bool Application::openFile(const std::string& path) {
+    // A .sand file opens straight away: the state path changes only when it opens, so a file
+    // that fails to open is never the one the next Save writes over.
+    if (isStateFile(path)) return loadStateFile(path);
+    if (isDraftImageFile(path)) {
+        if (scene().kind() == sandcore::SceneKind::Canvas) return loadDraft(path);
+        // An image is painted over on the canvas: build one, then show the draft on it.
+        state_.scene.request.kind = sandcore::SceneKind::Canvas;
+        state_.scene.request.modelPath.clear();
+        state_.scene.request.shape.clear();
+        state_.scene.request.resolution = defaultResolution(sandcore::SceneKind::Canvas);
+        draftAfterBuild_ = path;
+        state_.commands.push(Command::Rebuild);
+        return true;
+    }
+    // Every other file is a model, built as an hourglass unless a sculpture runs.
+    state_.scene.request.modelPath = path;
+    state_.scene.request.shape.clear();
+    if (state_.scene.request.kind == sandcore::SceneKind::Canvas) state_.scene.request.kind = sandcore::SceneKind::Hourglass;
+    state_.commands.push(Command::Rebuild);
+    return true;
 }
 
 void Application::serveCommands() {
@@ -465,6 +489,7 @@ void Application::serve(Command command) {
         }
         break;
     case Command::LoadDraft: loadDraft(state_.painting.draftPath); break;
+    case Command::OpenFile: openFile(state_.files.openPath); break;
     case Command::AddObstacle: {
         const std::uint64_t layout = host_.layoutRevision();
         state_.statusLine = canvas_.addObstacle(host_, state_.painting.obstacleMin, state_.painting.obstacleMax);
@@ -497,6 +522,7 @@ bool Application::saveStateFile() {
         saveState(state_.files.statePath, host_.scene(), state_.loaded.request);
         state_.files.unsavedEdits = 0;
         state_.statusLine = "saved to " + state_.files.statePath;
+        addRecentFile(state_.files.recentFiles, state_.files.statePath);
         return true;
     } catch (const std::exception& error) {
         state_.statusLine = error.what();
@@ -556,6 +582,7 @@ bool Application::loadStateFile(const std::string& path) {
         frameCamera();
         state_.files.unsavedEdits = 0;
         state_.statusLine = "opened " + path;
+        addRecentFile(state_.files.recentFiles, path);
         return true;
     } catch (const std::exception& error) {
         state_.statusLine = error.what();
@@ -570,6 +597,7 @@ bool Application::loadDraft(const std::string& path) {
         state_.painting.draftPath = path;
         state_.painting.showDraft = true;
         state_.statusLine = "draft " + path;
+        if (std::filesystem::path(path).parent_path() != modelsFolder()) addRecentFile(state_.files.recentFiles, path);
         return true;
     } catch (const std::exception& error) {
         state_.statusLine = error.what(); // the previous draft, if any, stays in use

@@ -63,6 +63,13 @@ ImGuiLayer::~ImGuiLayer() {
     ImGui::DestroyContext();
 }
 
+void ImGuiLayer::setIniFile(const std::filesystem::path& file) {
+    std::error_code error;
+    std::filesystem::create_directories(file.parent_path(), error);
+    iniFile_ = file.string();
+    ImGui::GetIO().IniFilename = iniFile_.c_str();
+}
+
 float ImGuiLayer::setUiScale(float scale) {
     scale = std::clamp(scale, kMinUiScale, kMaxUiScale);
     if (scale == uiScale_) return uiScale_;

@@ -1,5 +1,6 @@
 #include "app/version.hpp"
 
+#include "scene/data_paths.hpp"
 #include "scene/library_versions.hpp"
 
 #include "sandcore/sweep_code.hpp"
@@ -24,7 +25,9 @@ std::string sweepBuilds() {
 std::string versionText() {
     return std::string("sandglass ") + SANDGLASS_VERSION + " (commit " + SANDGLASS_COMMIT + ")\n" +
            "Dear ImGui " + IMGUI_VERSION + ", GLFW " + glfwGetVersionString() + ", " + sceneLibraryVersions() +
-           ", CLI11 " + CLI11_VERSION + "\n" + sweepBuilds();
+           ", CLI11 " + CLI11_VERSION + "\n" + sweepBuilds() + "\n" +
+           // I2: where this copy finds its data, so an installed or moved one can be checked.
+           "data: " + dataFolder().string() + ", model importer: " + importHelperPath().string();
 }
 
 } // namespace sandglass

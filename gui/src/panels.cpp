@@ -488,6 +488,16 @@ void drawFileSection(AppState& state) {
     if (ImGui::Button("Open (Ctrl+O)")) state.commands.push(Command::LoadState);
     browse("Open...", FileChoice::OpenState);
     if (files.unsavedEdits > 0) ImGui::TextUnformatted("unsaved changes");
+    // I4: the files opened or saved lately, in this run and the ones before.
+    if (!files.recentFiles.empty() && ImGui::BeginCombo("recent", "open a recent file")) {
+        for (const std::string& recent : files.recentFiles) {
+            if (ImGui::Selectable(recent.c_str())) {
+                files.openPath = recent;
+                state.commands.push(Command::OpenFile);
+            }
+        }
+        ImGui::EndCombo();
+    }
     char exportPath[512] = {};
     files.exportPath.copy(exportPath, sizeof exportPath - 1);
     if (ImGui::InputText("export file", exportPath, sizeof exportPath)) files.exportPath = exportPath;

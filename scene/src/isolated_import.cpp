@@ -18,6 +18,10 @@
 
 #include "isolated_import.hpp"
 
+#ifdef SANDGLASS_FIND_IMPORT_HELPER
+#include "scene/data_paths.hpp"
+#endif
+
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -329,8 +333,10 @@ ImportedTriangles importInChildProcess(const std::string& path, double timeLimit
     ImportedTriangles failed;
     // Everything the child needs before exec is prepared here: it may not allocate.
     const char* helper = nullptr;
-#ifdef SANDGLASS_IMPORT_HELPER
-    if (::access(SANDGLASS_IMPORT_HELPER, X_OK) == 0) helper = SANDGLASS_IMPORT_HELPER;
+#ifdef SANDGLASS_FIND_IMPORT_HELPER
+    // Beside an installed executable or in the build tree (data_paths.hpp).
+    const std::string helperPath = importHelperPath().string();
+    if (!helperPath.empty()) helper = helperPath.c_str();
 #endif
     std::string helperName = "sandglass-import", pathArgument = path;
     std::vector<char*> arguments = {helperName.data(), pathArgument.data(), nullptr};

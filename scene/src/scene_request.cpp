@@ -1,5 +1,6 @@
 #include "scene/scene_request.hpp"
 
+#include "scene/data_paths.hpp"
 #include "scene/mesh_loader.hpp"
 
 #include "sandcore/mask_cleanup.hpp"
@@ -50,13 +51,13 @@ sandcore::InsideMask makeProceduralMask(std::string_view shape, int resolution, 
     throw std::invalid_argument("unknown shape '" + std::string(shape) + "' (sphere, cube or hourglass)");
 }
 
-std::string defaultModelPath() { return std::string(SANDGLASS_SOURCE_DIR) + "/models/hourglass.obj"; }
+std::string defaultModelPath() { return (modelsFolder() / "hourglass.obj").string(); }
 
 std::string defaultModelFor(SceneKind kind) {
     switch (kind) {
     // SPEC S12: the default scene shows a glass with thickness in its frame (S7-S10).
-    case SceneKind::Hourglass: return std::string(SANDGLASS_SOURCE_DIR) + "/models/framed_hourglass.obj";
-    case SceneKind::Sculpture: return std::string(SANDGLASS_SOURCE_DIR) + "/models/snowman.obj";
+    case SceneKind::Hourglass: return (modelsFolder() / "framed_hourglass.obj").string();
+    case SceneKind::Sculpture: return (modelsFolder() / "snowman.obj").string();
     case SceneKind::Canvas: return {};
     }
     return {};

@@ -37,17 +37,51 @@ std::string numberText(double value) {
     return text;
 }
 
-Fields requestFields(const SceneRequest& r) {
-    return {{"kind", sceneKindName(r.kind)},
-            {"shape", r.shape},
-            {"resolution", std::to_string(r.resolution)},
-            {"neck_radius", numberText(r.neckRadius)},
-            {"fill_fraction", numberText(r.fillFraction)},
-            {"model", r.modelPath},
-            {"stretch", r.stretch ? "1" : "0"},
-            {"robust", r.robust ? "1" : "0"},
-            {"noise_threshold", std::to_string(r.noiseThreshold)},
-            {"drain_completely", r.drainCompletely ? "1" : "0"}};
+// The model as the file stores it: relative to the .sand file's folder when the file is known
+// and both lie on one tree, else as given; and its absolute path, the fallback when the
+// relative one does not lead to it (the .sand file moved without its model).
+std::pair<std::string, std::string> storedModelPaths(const std::string& model, const std::filesystem::path& savedAt) {
+    if (model.empty() || savedAt.empty()) return {model, {}};
+    std::error_code error;
+    const std::filesystem::path absoluteModel = std::filesystem::absolute(model, error).lexically_normal();
+    if (error) return {model, {}};
+    const std::filesystem::path folder = std::filesystem::absolute(savedAt, error).parent_path().lexically_normal();
+    if (error) return {model, absoluteModel.string()};
+    const std::filesystem::path relative = absoluteModel.lexically_relative(folder);
+    return {relative.empty() ? absoluteModel.string() : relative.generic_string(), absoluteModel.string()};
+}
+
+bool isFile(const std::filesystem::path& path) {
+    std::error_code error;
+    return std::filesystem::is_regular_file(path, error);
+}
+
+// The stored model path as a file this program can open: version 2 resolves a relative path
+// against the .sand file's folder and falls back to the absolute path stored beside it.
+std::string resolvedModelPath(const std::string& stored, const std::string& absolute, const std::filesystem::path& file) {
+    const std::filesystem::path path(stored);
+    if (stored.empty() || path.is_absolute()) return stored;
+    std::error_code error;
+    const std::filesystem::path beside = std::filesystem::absolute(file.parent_path() / path, error).lexically_normal();
+    if (!error && isFile(beside)) return beside.string();
+    if (!absolute.empty() && isFile(absolute)) return absolute;
+    return error ? stored : beside.string();
+}
+
+Fields requestFields(const SceneRequest& r, const std::filesystem::path& savedAt) {
+    const auto [model, modelAbsolute] = storedModelPaths(r.modelPath, savedAt);
+    Fields fields{{"kind", sceneKindName(r.kind)},
+                  {"shape", r.shape},
+                  {"resolution", std::to_string(r.resolution)},
+                  {"neck_radius", numberText(r.neckRadius)},
+                  {"fill_fraction", numberText(r.fillFraction)},
+                  {"model", model},
+                  {"stretch", r.stretch ? "1" : "0"},
+                  {"robust", r.robust ? "1" : "0"},
+                  {"noise_threshold", std::to_string(r.noiseThreshold)},
+                  {"drain_completely", r.drainCompletely ? "1" : "0"}};
+    if (!modelAbsolute.empty()) fields.emplace_back("model_absolute", modelAbsolute);
+    return fields;
 }
 
 template <class Number> Number parseNumber(const std::string& key, const std::string& text) {
@@ -58,8 +92,9 @@ template <class Number> Number parseNumber(const std::string& key, const std::st
     return value;
 }
 
-SceneRequest requestFrom(const Fields& fields) {
+SceneRequest requestFrom(const Fields& fields, const std::filesystem::path& file, std::uint32_t version) {
     SceneRequest r;
+    std::string modelAbsolute;
     for (const auto& [key, value] : fields) {
         if (key == "kind") {
             try {
@@ -76,7 +111,10 @@ SceneRequest requestFrom(const Fields& fields) {
         else if (key == "robust") r.robust = parseNumber<int>(key, value) != 0;
         else if (key == "noise_threshold") r.noiseThreshold = parseNumber<int>(key, value);
         else if (key == "drain_completely") r.drainCompletely = parseNumber<int>(key, value) != 0;
+        else if (key == "model_absolute") modelAbsolute = value;
     }
+    // Version 1 stored the path as it was typed, relative to wherever the program ran: kept as is.
+    if (version >= 2) r.modelPath = resolvedModelPath(r.modelPath, modelAbsolute, file);
     return r;
 }
 
@@ -161,7 +199,8 @@ std::uint64_t stateChecksum(std::span<const std::uint8_t> bytes, std::uint64_t s
     return h;
 }
 
-std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const SceneRequest& request) {
+std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const SceneRequest& request,
+                                             const std::filesystem::path& savedAt) {
     ByteWriter out;
     out.reserve(encodedSnapshotBytes(scene) + 2 * std::size_t(scene.grid(GridLevel::Upper).cellCount()) +
                 2 * std::size_t(scene.grid(GridLevel::Lower).cellCount()) + 4 * scene.fillCells().size() + 4096);
@@ -173,7 +212,7 @@ std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const
     out.put<std::uint8_t>(std::uint8_t(scene.settings().physics.level));
     out.put<float>(scene.settings().physics.reposeDegrees);
     out.put<float>(scene.settings().physics.gravity);
-    const Fields fields = requestFields(request);
+    const Fields fields = requestFields(request, savedAt);
     out.put<std::uint64_t>(fields.size());
     for (const auto& [key, value] : fields) {
         out.putString(key);
@@ -199,8 +238,13 @@ std::vector<std::uint8_t> sealStateFile(std::span<const std::uint8_t> payload) {
     return file;
 }
 
-std::vector<std::uint8_t> encodeStateFile(const sandcore::Scene& scene, const SceneRequest& request) {
-    return sealStateFile(encodeStatePayload(scene, request));
+std::vector<std::uint8_t> encodeStateFile(const sandcore::Scene& scene, const SceneRequest& request,
+                                          const std::filesystem::path& savedAt) {
+    return sealStateFile(encodeStatePayload(scene, request, savedAt));
+}
+
+std::uint32_t stateFileVersion(std::span<const std::uint8_t> bytes) {
+    return bytes.size() >= 12 ? getU32(bytes.data() + 8) : 0;
 }
 
 std::vector<std::uint8_t> openStateFile(std::span<const std::uint8_t> bytes, const std::filesystem::path& file,
@@ -213,9 +257,10 @@ std::vector<std::uint8_t> openStateFile(std::span<const std::uint8_t> bytes, con
         throw FileError(file, "is truncated: " + std::to_string(bytes.size()) + " bytes, shorter than the " +
                                   std::to_string(kStateHeaderBytes) + "-byte header");
     const std::uint32_t version = getU32(bytes.data() + 8);
-    if (version != kStateFileVersion)
+    if (version < kOldestStateFileVersion || version > kStateFileVersion)
         throw FileError(file, "is a state file of format version " + std::to_string(version) +
-                                  "; this program reads version " + std::to_string(kStateFileVersion));
+                                  "; this program reads versions " + std::to_string(kOldestStateFileVersion) + " to " +
+                                  std::to_string(kStateFileVersion));
     if (getU32(bytes.data() + 12) != 0 || getU64(bytes.data() + 40) != 0)
         throw FileError(file, "is corrupted (unknown header flags)");
     const std::uint64_t payloadBytes = getU64(bytes.data() + 16);
@@ -242,7 +287,8 @@ std::vector<std::uint8_t> openStateFile(std::span<const std::uint8_t> bytes, con
     }
 }
 
-LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std::filesystem::path& file) {
+LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std::filesystem::path& file,
+                               std::uint32_t version) {
     try {
         ByteReader in(payload);
         const auto kind = in.get<std::uint8_t>("scene kind");
@@ -275,7 +321,7 @@ LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std:
             std::string value = in.getString("scene option value", kMaxFieldText);
             fields.emplace_back(std::move(key), std::move(value));
         }
-        SceneRequest request = requestFrom(fields);
+        SceneRequest request = requestFrom(fields, file, version);
         CellGrid upperLayout = readLayout(in, "upper layout");
         CellGrid lowerLayout = readLayout(in, "lower layout");
         std::vector<std::uint32_t> fill = in.getArray<std::uint32_t>("fill cells");
@@ -308,13 +354,13 @@ LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std:
 
 void saveState(const std::filesystem::path& file, const sandcore::Scene& scene, const SceneRequest& request) {
     requireWritableFileTarget(file);
-    writeFileAtomically(file, std::span<const std::uint8_t>(encodeStateFile(scene, request)));
+    writeFileAtomically(file, std::span<const std::uint8_t>(encodeStateFile(scene, request, file)));
 }
 
 LoadedState loadState(const std::filesystem::path& file, const StateLoadLimits& limits) {
     const std::vector<std::uint8_t> bytes = readFileBytes(file, limits.maxFileBytes);
     const std::vector<std::uint8_t> payload = openStateFile(bytes, file, limits);
-    return decodeStatePayload(payload, file);
+    return decodeStatePayload(payload, file, stateFileVersion(bytes));
 }
 
 } // namespace sandglass

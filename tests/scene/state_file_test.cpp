@@ -8,6 +8,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <random>
@@ -200,8 +201,12 @@ TEST_CASE("state file: empty, foreign, random, wrong-version and truncated files
     for (auto& b : noise) b = std::uint8_t(random());
     expectLine(errorFor(noise), "not a sandglass state file");
     std::vector<std::uint8_t> future = good;
-    future[8] = 2;
-    expectLine(errorFor(future), "format version 2; this program reads version 1");
+    future[8] = std::uint8_t(kStateFileVersion + 1);
+    expectLine(errorFor(future), "format version " + std::to_string(kStateFileVersion + 1) + "; this program reads versions 1 to " +
+                                     std::to_string(kStateFileVersion));
+    std::vector<std::uint8_t> versionZero = good;
+    versionZero[8] = 0;
+    expectLine(errorFor(versionZero), "format version 0;");
     expectLine(errorFor({good.begin(), good.begin() + 20}), "truncated");
     expectLine(errorFor({good.begin(), good.end() - 1}), "truncated");
     std::vector<std::uint8_t> longer = good;
@@ -343,4 +348,71 @@ TEST_CASE("state file and undo snapshot: falls asleep mid-air are saved as they 
         REQUIRE(loaded.scene.stateHash() == straight.stateHash());
         REQUIRE(undone.stateHash() == straight.stateHash());
     }
+}
+
+// I6: every format version this program has written still opens. The files under tests/data
+// were written by the program of their version: state-v1-*.sand by the build before version 2
+// (`simulate --shape hourglass --res 16 --steps 30 --save`, and `--model /tmp/sandglass-v1/hourglass.obj
+// --res 16 --steps 10`), state-v2-model.sand by `simulate --model models/hourglass.obj --res 16
+// --steps 10 --save tests/data/state-v2-model.sand` run in the source folder.
+namespace {
+
+std::filesystem::path committed(const std::string& name) { return std::filesystem::path(SANDGLASS_SOURCE_DIR) / "tests/data" / name; }
+
+std::string hashText(std::uint64_t hash) {
+    char text[20];
+    std::snprintf(text, sizeof text, "%016llx", (unsigned long long)hash);
+    return text;
+}
+
+} // namespace
+
+TEST_CASE("state file: version 1 files open with the same state and go on stepping as they did") {
+    const auto shapeFile = committed("state-v1-shape.sand");
+    CHECK(stateFileVersion(bytesOf(shapeFile)) == 1);
+    LoadedState shape = loadState(shapeFile);
+    CHECK(hashText(shape.scene.stateHash()) == "3872504ef577a6d5");
+    CHECK(shape.scene.grainCount() == 316);
+    CHECK(shape.scene.counters().grainsUpper == 11);
+    CHECK(shape.scene.counters().grainsLower == 305);
+    CHECK(shape.settings.request.shape == "hourglass");
+    CHECK(shape.settings.request.resolution == 16);
+    for (int i = 0; i < 20; ++i) shape.scene.step();
+    // `simulate --load state-v1-shape.sand --steps 20` of the version-1 build printed this hash.
+    CHECK(hashText(shape.scene.stateHash()) == "f60e6ca6652afa01");
+
+    LoadedState model = loadState(committed("state-v1-model.sand"));
+    CHECK(hashText(model.scene.stateHash()) == "81e5aea48e5d6397");
+    CHECK(model.scene.grainCount() == 300);
+    // Version 1 kept the path as typed; it is not reinterpreted.
+    CHECK(model.settings.request.modelPath == "/tmp/sandglass-v1/hourglass.obj");
+}
+
+TEST_CASE("state file: version 2 stores the model relative to the .sand file, so the two travel together") {
+    // The committed file names ../../models/hourglass.obj from tests/data: the source tree's model.
+    LoadedState committedState = loadState(committed("state-v2-model.sand"));
+    CHECK(stateFileVersion(bytesOf(committed("state-v2-model.sand"))) == 2);
+    const std::filesystem::path bundled =
+        std::filesystem::absolute(std::filesystem::path(SANDGLASS_SOURCE_DIR) / "models/hourglass.obj").lexically_normal();
+    CHECK(committedState.settings.request.modelPath == bundled.string());
+
+    TemporaryFolder folder;
+    std::filesystem::create_directories(folder / "project/models");
+    std::filesystem::copy_file(bundled, folder / "project/models/glass.obj");
+    sandcore::Scene scene = support::paintedCanvas();
+    SceneRequest request = support::canvasRequest();
+    request.modelPath = (folder / "project/models/glass.obj").string();
+    saveState(folder / "project/state.sand", scene, request);
+
+    // The folder moves (a copy to another machine): the model is found beside the state.
+    std::filesystem::rename(folder / "project", folder / "moved");
+    LoadedState moved = loadState(folder / "moved/state.sand");
+    CHECK(moved.settings.request.modelPath == (folder / "moved/models/glass.obj").string());
+    CHECK(moved.scene.stateHash() == scene.stateHash());
+
+    // The state alone moves: the relative path leads nowhere, the absolute one still does.
+    std::filesystem::copy_file(folder / "moved/state.sand", folder / "alone.sand");
+    std::filesystem::rename(folder / "moved", folder / "project");
+    LoadedState alone = loadState(folder / "alone.sand");
+    CHECK(alone.settings.request.modelPath == (folder / "project/models/glass.obj").string());
 }

@@ -15,6 +15,7 @@
 #include "scene/hourglass_timer.hpp"
 #include "scene/scene_host.hpp"
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -35,6 +36,8 @@ struct ApplicationOptions {
     float cameraZoom = 1.0f;         ///< start closer (< 1) or farther (> 1) than the framing distance
     std::filesystem::path stateFile; ///< E1: open this saved state instead of building `initial.scene`
     std::filesystem::path screenshotFolder; ///< E4: where P saves; empty = the desktop's pictures folder
+    std::optional<std::array<int, 2>> windowPosition; ///< I4: the window's top-left corner on the desktop; none = the window manager's choice
+    std::filesystem::path panelLayoutFile; ///< I4: ImGui's imgui.ini for the panels' layout; empty = none kept
 };
 
 /// The window loop: poll -> new frame -> panels -> commands -> steps by the clock -> scene ->
@@ -85,6 +88,10 @@ public:
     /// E1: replaces the scene by a saved state; false (and the one-line error in the status line)
     /// when the file cannot be loaded, the running scene then unchanged.
     bool loadStateFile(const std::string& path);
+    /// I3: opens a file as its kind says, as a drop on the window does: a .sand state at once, a
+    /// PNG or JPEG as the draft (on a canvas, built first when another scene runs), any other
+    /// file as a model (an hourglass, or the running sculpture). False when it failed at once.
+    bool openFile(const std::string& path);
     /// Serves the commands the panels and keys queued (rebuild, reset, undo, draft, obstacles...).
     void serveCommands();
     /// A mouse button pressed or released at (x, y) window units: the GLFW callback calls this
@@ -107,6 +114,7 @@ public:
     float displayStepFraction() const { return host_.displayStepFraction(); }
 
     AppState& state() { return state_; }                          ///< the panels' view of the application
+    const AppState& state() const { return state_; }              ///< as above, to read
     SceneHost& host() { return host_; }                           ///< the running scene, its builds and clock
     const sandcore::Scene& scene() const { return host_.scene(); } ///< the running scene
     const CanvasController& canvas() const { return canvas_; }    ///< strokes, draft and undo
@@ -140,6 +148,7 @@ private:
     void buildWindows();
     void drawBenchmarkProgress();
     void drawObstacleBox();
+    void rememberModel(const std::string& path);
 
     ApplicationOptions options_;
     AppState state_;
@@ -163,6 +172,7 @@ private:
     std::optional<RgbImage> sceneOnlyFrame_; // this frame before the panels, for a screenshot without them
     bool quitRequested_ = false;             // the loop ends after this frame
     FileChooser fileChooser_;
+    std::string draftAfterBuild_;            // an image opened on another scene: shown once the canvas is built
 };
 
 } // namespace sandglass

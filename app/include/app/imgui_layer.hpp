@@ -4,7 +4,9 @@
 // application forwards events to it first and then routes them by ImGui's capture flags
 // (input_routing.hpp).
 
+#include <filesystem>
 #include <functional>
+#include <string>
 #include <vector>
 
 struct GLFWwindow;
@@ -41,6 +43,9 @@ public:
     /// The user's text and control size, on top of the content scale, clamped to
     /// kMinUiScale..kMaxUiScale; call between frames. Returns the value in use.
     float setUiScale(float scale);
+    /// I4: keep the panels' layout in this imgui.ini (read at the first frame, written when the
+    /// layer closes); call before the first frame.
+    void setIniFile(const std::filesystem::path& file);
 
 private:
     void startFrame(const MouseTransition* replayed);
@@ -51,6 +56,7 @@ private:
     float contentScale_ = 1.0f;
     float uiScale_ = 1.0f;
     bool backendReady_ = false;
+    std::string iniFile_; // ImGui keeps a pointer to it
 };
 
 } // namespace sandglass

@@ -22,12 +22,16 @@ constexpr const char* kExitCodes =
 
 int runCommandLine(int argc, char** argv) {
     CLI::App app{"sandglass: real-time 3D sand (hourglass, sculpture, canvas). Without a subcommand it opens "
-                 "the window on the default hourglass.",
+                 "the window on the default hourglass, or on FILE.",
                  "sandglass"};
     app.set_version_flag("--version", versionText());
     app.require_subcommand(0, 1);
     app.footer(kExitCodes);
     int exitCode = 0;
+    std::string file;
+    bool noSettings = false;
+    app.add_option("file", file, "open this in the window: a .sand state, a model (as an hourglass) or a PNG/JPEG draft (on the canvas)");
+    app.add_flag("--no-settings", noSettings, "start the window from the defaults and remember nothing");
     addSimulateCommand(app, exitCode);
     addVoxelizeCommand(app, exitCode);
     addGuiCommand(app, exitCode);
@@ -55,7 +59,10 @@ int runCommandLine(int argc, char** argv) {
     }
     if (app.get_subcommands().empty()) {
         try {
-            return runDefaultWindow();
+            return runDefaultWindow(file, noSettings);
+        } catch (const std::invalid_argument& e) {
+            std::cerr << "sandglass: " << e.what() << "\n";
+            return kExitUsage;
         } catch (const std::exception& e) {
             std::cerr << "sandglass: " << e.what() << "\n";
             return kExitFailed;

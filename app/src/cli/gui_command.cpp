@@ -4,8 +4,11 @@
 #include "app/cli/view_options.hpp"
 #include "scene/file_io.hpp"
 #include "app/paint_demo.hpp"
+#include "app/remembered_settings.hpp"
+#include "scene/draft_image.hpp"
 
 #include <cstdio>
+#include <functional>
 #include <memory>
 
 namespace sandglass {
@@ -25,16 +28,69 @@ struct GuiOptions {
     int timerSeconds = 0;
     std::string panelTab; ///< the panel tab shown first
     bool showHelp = false; ///< open with the keys and mouse controls shown
+    std::string file;      ///< I3: a .sand state, a model or a draft image to open
+    bool noSettings = false; ///< I4: start from the defaults and remember nothing
 };
 
-int runGui(const GuiOptions& options) {
+// Whether an option was typed on the command line (then it wins over a remembered setting).
+using GivenOption = std::function<bool(const char* option)>;
+
+// I3: `sandglass FILE` opens the file as its kind says: a state, a draft on the canvas, or a model.
+void openAtStart(GuiOptions& options, const GivenOption& given) {
+    const std::filesystem::path file = options.file;
+    if (file.extension() == ".sand") {
+        if (!options.load.empty()) throw std::invalid_argument("a .sand FILE and --load both name a state to open");
+        options.load = options.file;
+        return;
+    }
+    if (given("--model") || given("--shape"))
+        throw std::invalid_argument("FILE " + options.file + " and --model or --shape both say what to build");
+    requireReadableRegularFile(file);
+    if (isDraftImageFile(file)) {
+        if (!options.draft.empty()) throw std::invalid_argument("FILE and --draft both name a draft image");
+        options.view.scene.scene = "canvas";
+        options.draft = options.file;
+        return;
+    }
+    if (options.view.scene.scene == "canvas") options.view.scene.scene = "hourglass";
+    options.view.scene.settings.request.modelPath = options.file;
+}
+
+// I4: what the last window was left with, where the command line leaves it open.
+void applyRemembered(const UserSettings& remembered, const GivenOption& given, GuiOptions& options) {
+    if (!given("--mode")) options.view.mode = renderModeName(remembered.mode);
+    if (!given("--palette")) options.view.palette = sandPaletteName(remembered.palette);
+    if (!given("--light")) options.view.light = remembered.lighting;
+    if (!given("--size"))
+        options.view.size = std::to_string(remembered.windowWidth) + "x" + std::to_string(remembered.windowHeight);
+    const bool sceneChosen = !options.file.empty() || !options.load.empty() || !options.draft.empty() ||
+                             given("--scene") || given("--model") || given("--shape");
+    if (sceneChosen) return;
+    options.view.scene.scene = sceneKindName(remembered.scene);
+    std::error_code error;
+    // A model that was moved or deleted since: the scene's bundled default instead.
+    if (remembered.scene != sandcore::SceneKind::Canvas && !remembered.model.empty() &&
+        std::filesystem::is_regular_file(remembered.model, error))
+        options.view.scene.settings.request.modelPath = remembered.model;
+}
+
+int runGui(GuiOptions options, const GivenOption& given) {
+    const std::filesystem::path folder = options.noSettings ? std::filesystem::path() : settingsFolder();
+    UserSettings remembered;
+    if (!folder.empty()) {
+        std::string problem;
+        remembered = readUserSettings(folder / "settings.json", problem);
+        if (!problem.empty()) std::fprintf(stderr, "sandglass: %s\n", problem.c_str());
+        applyRemembered(remembered, given, options);
+    }
     ApplicationOptions settings = applicationOptionsFrom(options.view, 1280, 800);
+    if (!folder.empty()) startAsRemembered(remembered, folder / "imgui.ini", settings);
     settings.initial.simulationRunning = options.run;
     settings.frameLimit = options.frames;
     settings.screenshotFile = options.screenshot;
     settings.benchmarkFolder = options.benchmarkFolder;
     settings.stateFile = options.load; // opened in place of the scene: nothing else is built first
-    settings.screenshotFolder = options.screenshotFolder;
+    if (!options.screenshotFolder.empty()) settings.screenshotFolder = options.screenshotFolder;
     Application application(std::move(settings));
     // A draft asked for on the command line that cannot be read fails the run, like --load.
     if (!options.draft.empty() && !application.loadDraft(options.draft)) {
@@ -53,6 +109,14 @@ int runGui(const GuiOptions& options) {
     }
     const std::int64_t grainsAtStart = application.scene().grainCount();
     const int exitCode = application.run();
+    if (!folder.empty()) {
+        // Never a reason to fail the run: the next start then begins from what was there.
+        try {
+            writeUserSettings(folder / "settings.json", settingsToRemember(application, remembered));
+        } catch (const std::exception& error) {
+            std::fprintf(stderr, "sandglass: settings not saved: %s\n", error.what());
+        }
+    }
     if (options.frames > 0)
         std::printf("frames %lld, steps %llu, grains %lld (at start %lld)\n", (long long)application.framesDrawn(),
                     (unsigned long long)application.scene().counters().stepsDone,
@@ -79,11 +143,16 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--panel", options->panelTab, "open the panel on this tab")
         ->check(CLI::IsMember({"run", "view", "scene", "paint", "file"}));
     cmd->add_flag("--show-controls", options->showHelp, "open with the keys and mouse controls shown (F1 in the window)");
+    cmd->add_option("file", options->file, "a .sand state, a model (opened as an hourglass) or a PNG/JPEG draft (on the canvas)");
+    cmd->add_flag("--no-settings", options->noSettings,
+                  "start from the defaults and remember nothing (settings live in $XDG_CONFIG_HOME/sandglass)");
     addNumberOption(*cmd, "--paint-demo", options->paintDemoPasses, 1, 50,
                     "canvas with --draft: pour this many layers of sand over the draft, colour from draft");
     addNumberOption(*cmd, "--timer", options->timerSeconds, 1, 999 * 60 + 59,
                     "hourglass: start a timer of this many seconds (the flow is set so the sand lasts that long)");
-    cmd->callback([options, &exitCode] {
+    cmd->callback([options, cmd, &exitCode] {
+        const GivenOption given = [cmd](const char* option) { return cmd->count(option) > 0; };
+        if (!options->file.empty()) openAtStart(*options, given);
         if (options->paintDemoPasses > 0 && (options->draft.empty() || options->view.scene.scene != "canvas"))
             throw std::invalid_argument("--paint-demo needs --scene canvas and --draft FILE");
         if (!options->screenshot.empty() && options->frames == 0)
@@ -92,15 +161,20 @@ void addGuiCommand(CLI::App& app, int& exitCode) {
         if (!options->screenshot.empty()) requireWritableFileTarget(options->screenshot);
         if (!options->screenshotFolder.empty()) requireWritableFileTarget(std::filesystem::path(options->screenshotFolder) / "sandglass-1.png");
         if (!options->load.empty()) requireReadableRegularFile(options->load);
-        exitCode = runGui(*options);
+        exitCode = runGui(*options, given);
     });
 }
 
-int runDefaultWindow() {
+int runDefaultWindow(const std::string& file, bool noSettings) {
     // The product's first impression: the default hourglass, already draining.
     GuiOptions options;
     options.run = true;
-    return runGui(options);
+    options.file = file;
+    options.noSettings = noSettings;
+    const GivenOption nothingGiven = [](const char*) { return false; };
+    if (!options.file.empty()) openAtStart(options, nothingGiven);
+    if (!options.load.empty()) requireReadableRegularFile(options.load);
+    return runGui(std::move(options), nothingGiven);
 }
 
 } // namespace sandglass

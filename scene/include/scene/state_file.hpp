@@ -26,8 +26,12 @@
 
 namespace sandglass {
 
-/// The format version this program writes and reads.
-inline constexpr std::uint32_t kStateFileVersion = 1;
+/// The format version this program writes. Version 2 stores the model relative to the .sand
+/// file ("model") with its absolute path as a fallback ("model_absolute"), so a state moved
+/// together with its model keeps it; version 1 stored the path as typed. Both are read.
+inline constexpr std::uint32_t kStateFileVersion = 2;
+/// The oldest format version this program still reads.
+inline constexpr std::uint32_t kOldestStateFileVersion = 1;
 /// Bytes of the header before the compressed payload.
 inline constexpr std::size_t kStateHeaderBytes = 48;
 
@@ -47,19 +51,27 @@ struct StateLoadLimits {
 /// change of a single word (so any single flipped bit) always changes the result.
 std::uint64_t stateChecksum(std::span<const std::uint8_t> bytes, std::uint64_t seed = 0);
 
-/// The uncompressed payload for a scene and its request.
-std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const SceneRequest& request);
+/// The uncompressed payload for a scene and its request. With `savedAt` (the .sand file it goes
+/// to) the model is stored relative to that file's folder, its absolute path beside it.
+std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const SceneRequest& request,
+                                             const std::filesystem::path& savedAt = {});
 /// Header, checksum and zstd around a payload: the bytes of a `.sand` file.
 std::vector<std::uint8_t> sealStateFile(std::span<const std::uint8_t> payload);
 /// The bytes of a whole `.sand` file for a scene (sealStateFile of encodeStatePayload).
-std::vector<std::uint8_t> encodeStateFile(const sandcore::Scene& scene, const SceneRequest& request);
+std::vector<std::uint8_t> encodeStateFile(const sandcore::Scene& scene, const SceneRequest& request,
+                                          const std::filesystem::path& savedAt = {});
 
+/// The format version in a state file's header (0 when the bytes are too short to hold one).
+std::uint32_t stateFileVersion(std::span<const std::uint8_t> bytes);
 /// Checks a file's header, sizes and checksum and returns its decompressed payload. Throws
-/// FileError "FILE: cause" for anything else than an intact file of this version.
+/// FileError "FILE: cause" for anything else than an intact file of a version this program reads.
 std::vector<std::uint8_t> openStateFile(std::span<const std::uint8_t> bytes, const std::filesystem::path& file,
                                         const StateLoadLimits& limits = {});
-/// Rebuilds the scene from a payload; throws FileError "FILE: cause" for a damaged or inconsistent one.
-LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std::filesystem::path& file);
+/// Rebuilds the scene from a payload of format `version`; throws FileError "FILE: cause" for a
+/// damaged or inconsistent one. From version 2 on, the model path is resolved against `file`'s
+/// folder, else the stored absolute path is used when that file exists.
+LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std::filesystem::path& file,
+                               std::uint32_t version = kStateFileVersion);
 
 /// Writes the scene's whole state to `file` (through a temporary file renamed into place).
 /// Throws FileError when it cannot be written; an existing file is then left as it was.

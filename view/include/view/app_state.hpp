@@ -60,6 +60,8 @@ struct FileSettings {
     int unsavedEdits = 0;                     ///< U5: painting and obstacle changes since the last save or open (0 = nothing to lose)
     bool confirmQuit = false;                 ///< U5: the "quit without saving?" question is shown
     FileChoice choosing = FileChoice::OpenState; ///< what the next ChooseFile command opens the dialog for
+    std::vector<std::string> recentFiles;     ///< I4: states, models and drafts opened or saved, newest first
+    std::string openPath;                     ///< the file the next OpenFile command opens (a recent one)
 };
 
 /// What the panels and keys ask the application to do; served once per frame, in order.
@@ -86,6 +88,7 @@ enum class Command {
     Flip,              ///< turn the hourglass over (T)
     StartTimer,        ///< set the timer to TimerSettings::minutes:seconds on the sand as it is
     StopTimer,         ///< stop the timer
+    OpenFile,          ///< open FileSettings::openPath as its kind says: a .sand state, a draft image or a model
 };
 
 /// Commands in the order they were raised.

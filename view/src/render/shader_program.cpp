@@ -1,5 +1,7 @@
 #include "view/render/shader_program.hpp"
 
+#include "scene/data_paths.hpp"
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -43,10 +45,7 @@ GLuint compile(GLenum stage, const std::filesystem::path& file) {
 }
 } // namespace
 
-std::filesystem::path shaderDirectory() {
-    if (const char* dir = std::getenv("SANDGLASS_SHADER_DIR"); dir != nullptr && *dir != '\0') return dir;
-    return std::filesystem::path(SANDGLASS_SOURCE_DIR) / "shaders";
-}
+std::filesystem::path shaderDirectory() { return shaderFolder(); }
 
 GlProgram loadShaderProgram(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
                             const char* capturedVarying) {

@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <string>
+
 namespace sandglass {
 
 void addSimulateCommand(CLI::App& app, int& exitCode);   ///< SPEC C1: headless simulation
@@ -12,7 +14,8 @@ void addGuiCommand(CLI::App& app, int& exitCode);        ///< SPEC §6: the wind
 void addRenderCommand(CLI::App& app, int& exitCode);     ///< SPEC C3: one frame offscreen to PNG
 void addBenchCommand(CLI::App& app, int& exitCode);      ///< SPEC C4/B2 report; B1 frame rates with --render
 
-/// `sandglass` without arguments: the window on the default hourglass, draining.
-int runDefaultWindow();
+/// `sandglass [FILE]` without a subcommand: the window on the default hourglass (or on FILE: a
+/// .sand state, a model, a draft image), draining; `noSettings` starts from the defaults.
+int runDefaultWindow(const std::string& file = {}, bool noSettings = false);
 
 } // namespace sandglass

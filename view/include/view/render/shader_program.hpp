@@ -1,6 +1,6 @@
 #pragma once
 // GLSL programs loaded at run time from shaders/ (one file per stage), so a shader can be
-// edited without rebuilding. The folder is baked in at configure time (SANDGLASS_SOURCE_DIR).
+// edited without rebuilding. The folder is found beside the executable (scene/data_paths.hpp).
 
 #include "view/render/gl_objects.hpp"
 
@@ -9,7 +9,7 @@
 
 namespace sandglass {
 
-/// The folder the shaders are read from: $SANDGLASS_SHADER_DIR if set, else <source>/shaders.
+/// The folder the shaders are read from: $SANDGLASS_SHADER_DIR if set, else the data folder's shaders/.
 std::filesystem::path shaderDirectory();
 
 /// Compiles and links a vertex and a fragment shader read from files; throws std::runtime_error
