@@ -482,7 +482,8 @@ void Application::serve(Command command) {
     case Command::LoadState: loadStateFile(state_.files.statePath); break;
     case Command::Export:
         try {
-            exportScene(state_.files.exportPath, host_.scene(), {state_.render.cellSize, state_.render.jitter});
+            exportScene(state_.files.exportPath, host_.scene(),
+                        {{state_.render.cellSize, state_.render.jitter}, host_.modelToWorld()});
             state_.statusLine = "exported to " + state_.files.exportPath;
         } catch (const std::exception& error) {
             state_.statusLine = error.what();

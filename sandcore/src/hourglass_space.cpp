@@ -39,8 +39,9 @@ constexpr double kPartOfOneBulb = 0.55;
 // A shell the sand space borders on with at least this share of its cells within kNearCells is glass.
 constexpr double kGlassShare = 0.5;
 constexpr int kNearCells = 3;
-// Walls thinner than this many cells between two bulbs are cut through to open a neck.
-constexpr int kMaxNeckWall = 3;
+// A neck narrower than a cell fills with its own wall cells over its length: bulbs up to this
+// many cells apart along an axis are joined through one column.
+constexpr int kMaxNeckWall = 8;
 // Two spaces are the two bulbs of one hourglass only when the smaller holds at least this share
 // of the larger: a sliver in a wall or a post's inside is no bulb.
 constexpr double kBulbShare = 0.2;
@@ -66,7 +67,8 @@ struct GridShell {
     std::array<double, 3> low{}, high{}; // bounds, cells
 };
 
-// The cells whose centres a closed grid-space mesh encloses, voxelized within its own bounds only.
+// The cells whose centres a grid-space mesh encloses, voxelized within its own bounds only: by
+// parity when it is closed, by the robust vote when it is open (modelled sand with a hole).
 CellList insideCells(const TriangleMesh& gridMesh, const Grid& grid, const GridShell& shell, int threads) {
     std::array<int, 3> from{}, sub{};
     for (std::size_t a = 0; a < 3; ++a) {
@@ -79,6 +81,7 @@ CellList insideCells(const TriangleMesh& gridMesh, const Grid& grid, const GridS
     for (Vec3& v : moved.vertices) v = {v.x - float(from[0]), v.y - float(from[1]), v.z - float(from[2])};
     VoxelizeSettings settings;
     settings.threads = threads;
+    settings.robust = !shell.closed;
     const InsideMask part = voxelizeGridSpace(moved, {sub[0], sub[1], sub[2]}, settings);
     CellList cells;
     for (int y = 0; y < sub[1]; ++y)
@@ -109,7 +112,7 @@ bool enclosedByOthers(std::uint32_t cell, std::uint32_t shell, const std::vector
 // only part of one bulb. A nested shell that spans the walls (a glass's inner surface) stays a wall.
 bool looksLikeModelledSand(std::uint32_t s, const GridShell& shell, const std::vector<std::uint32_t>& owner,
                            const std::array<double, 3>& wallExtent, const Grid& grid) {
-    if (!shell.closed || shell.inside.empty()) return false;
+    if (shell.inside.empty()) return false;
     bool partial = false;
     for (std::size_t a = 0; a < 3; ++a) partial = partial || shell.high[a] - shell.low[a] < kPartOfOneBulb * wallExtent[a];
     if (!partial) return false;
@@ -290,7 +293,7 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
         shell.closed = closednessOf(shells[s].mesh).closed;
         const bool mayBeSand = !shells[s].roleFixed || shells[s].role == ShellRole::Sand;
         const bool mayBeVessel = !shells[s].roleFixed || shells[s].role == ShellRole::Glass;
-        if (shell.closed && (mayBeSand || mayBeVessel)) shell.inside = insideCells(gridMesh, grid, shell, threads);
+        if ((shell.closed && mayBeVessel) || mayBeSand) shell.inside = insideCells(gridMesh, grid, shell, threads);
     }
     std::array<double, 3> wallExtent;
     for (std::size_t a = 0; a < 3; ++a) wallExtent[a] = wallHigh[a] - wallLow[a];
@@ -313,7 +316,7 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
     std::vector<Candidate> candidates;
     for (std::size_t s = 0; s < shells.size(); ++s) {
         const GridShell& shell = inGrid[s];
-        if (out.roles[s] != ShellRole::Glass || shell.inside.empty()) continue;
+        if (out.roles[s] != ShellRole::Glass || !shell.closed || shell.inside.empty()) continue;
         // The outer surface of a glass with thickness wraps its inner surface: its inside is no sand space.
         bool wraps = false;
         for (std::size_t o = 0; o < shells.size() && !wraps; ++o) {
@@ -404,8 +407,9 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
     std::int64_t sandAbove = 0, sandBelow = 0;
     for (std::size_t s = 0; s < shells.size(); ++s) {
         if (out.roles[s] != ShellRole::Sand) continue;
+        // All of its cells, also those it shares with the glass's wall: the scene pours what the
+        // space cannot hold where it was modelled elsewhere in the bulb, and never outside the space.
         for (std::uint32_t n : inGrid[s].inside) {
-            if (!out.space.inside[n]) continue;
             out.modelledSand.inside[n] = 1;
             if (chosen && chosen->neckAxis >= 0) {
                 const int layer = grid.coordinates(n)[std::size_t(axis)];

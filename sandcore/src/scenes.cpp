@@ -3,6 +3,7 @@
 #include "sandcore/hourglass_split.hpp"
 #include "sandcore/mask_cleanup.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sandcore {
@@ -73,6 +74,14 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialS
     const int neck = findNeckLayer(vessel);
     const bool split = hasNeck(vessel, neck);
     InsideMask upper = split ? sliceLayers(vessel, neck, top) : vessel;
+    // The modelled sand of the upper bulb, counted before carving (and with the cells it shares
+    // with the glass's wall): the hourglass holds as much sand as was modelled.
+    const int firstLayer = bottom + (split ? neck : 0);
+    std::int64_t modelledCells = 0;
+    if (modelled)
+        for (int y = 0; y < upper.size.y; ++y)
+            for (int z = 0; z < upper.size.z; ++z)
+                for (int x = 0; x < upper.size.x; ++x) modelledCells += initialSand.at(x, y + firstLayer, z) ? 1 : 0;
     if (hourglass.drainCompletely) removeSharpEdges(upper, 0, upper.size.y - 1);
     requireInside(upper, "the upper bulb");
     CellGrid lowerLayout(vessel.size, kEmpty);
@@ -87,13 +96,22 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialS
         lowerLayout = layoutFromMask(lower);
     }
     std::vector<std::uint32_t> fill;
-    if (modelled) {
-        // The modelled sand that lies in the (carved) upper bulb, in the order fillFromBottom uses.
-        const int firstLayer = bottom + (split ? neck : 0);
+    if (modelledCells > 0) {
+        // The modelled sand where the carved bulb still has it; what carving took is poured in
+        // from the bottom up, so the hourglass holds as much sand as was modelled.
+        std::vector<std::uint8_t> taken(upper.inside.size(), 0);
         for (int y = 0; y < upper.size.y; ++y)
             for (int z = 0; z < upper.size.z; ++z)
                 for (int x = 0; x < upper.size.x; ++x)
-                    if (upper.at(x, y, z) && initialSand.at(x, y + firstLayer, z)) fill.push_back(std::uint32_t(upper.indexOf(x, y, z)));
+                    if (upper.at(x, y, z) && initialSand.at(x, y + firstLayer, z)) {
+                        fill.push_back(std::uint32_t(upper.indexOf(x, y, z)));
+                        taken[fill.back()] = 1;
+                    }
+        for (std::uint32_t cell : fillFromBottom(upper, 1.0f)) {
+            if (std::int64_t(fill.size()) >= modelledCells) break;
+            if (!taken[cell]) fill.push_back(cell);
+        }
+        std::sort(fill.begin(), fill.end());
     }
     if (fill.empty()) fill = fillFromBottom(upper, hourglass.fillFraction);
     return Scene(SceneKind::Hourglass, layoutFromMask(upper), std::move(lowerLayout), std::move(fill), step);

@@ -1,5 +1,7 @@
 #include "scene/model_drawing.hpp"
 
+#include "sandcore/mesh_shells.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -115,7 +117,8 @@ ModelDrawing makeModelDrawing(const std::vector<ModelPart>& parts, const ModelTo
                                                                               : kWoodColour;
         drawn.colour = part.hasColour ? part.colour : fallback;
         // Normals from the turned, scaled triangles: with --stretch the scale differs per axis.
-        sandcore::TriangleMesh world = part.mesh;
+        // A face modelled twice (once per side) would fight itself in the depth test: draw it once.
+        sandcore::TriangleMesh world = sandcore::withoutDoubledFaces(part.mesh);
         for (Vec3& v : world.vertices) v = toWorld.apply(v);
         drawn.vertices = smoothTriangles(world);
         drawing.parts.push_back(std::move(drawn));

@@ -18,13 +18,13 @@ void addInto(sandcore::InsideMask& into, const sandcore::InsideMask& cells) {
     for (std::size_t n = 0; n < into.inside.size(); ++n) into.inside[n] |= cells.inside[n];
 }
 
-// The cells a part occupies in the model's grid: its parity inside when it is closed, and every
-// cell its surface touches, so thin walls seal.
+// The cells a part occupies in the model's grid: its inside (parity when it is closed, the
+// robust vote when it is open: W4) and, for obstacles, every cell its surface touches.
 sandcore::InsideMask partCells(const ModelPart& part, const sandcore::VoxelPlacement& placement,
-                               const sandcore::VoxelizeSettings& settings, bool surface) {
+                               sandcore::VoxelizeSettings settings, bool surface) {
     const sandcore::TriangleMesh grid = sandcore::toGridSpace(part.mesh, placement);
-    sandcore::InsideMask cells = part.closed ? sandcore::voxelizeGridSpace(grid, placement.size, settings)
-                                             : sandcore::InsideMask::empty(placement.size);
+    settings.robust = settings.robust || !part.closed;
+    sandcore::InsideMask cells = sandcore::voxelizeGridSpace(grid, placement.size, settings);
     if (surface) addInto(cells, sandcore::surfaceCells(grid, placement.size));
     return cells;
 }

@@ -114,9 +114,23 @@ ExportFormat exportFormatOf(const std::filesystem::path& file) {
     throw FileError(file, "unknown export format '" + extension + "' (.ply, .vox, .obj, .stl or .glb)");
 }
 
-void exportScene(const std::filesystem::path& file, const sandcore::Scene& scene, const sandcore::DisplaySettings& display) {
+std::array<double, 3> exportedPoint(const sandcore::Scene& scene, const ExportFrame& frame, sandcore::Vec3 world) {
+    if (!frame.model) {
+        const double size = frame.display.cellSize;
+        return {world.x * size, world.y * size, world.z * size};
+    }
+    if (scene.flipped()) {
+        // Turned over, the world is the upright one mirrored in y within the grids' height.
+        const float height = float(scene.gridOrigin(sandcore::GridLevel::Upper).y +
+                                   scene.grid(sandcore::GridLevel::Upper).size().y);
+        world.y = height - world.y;
+    }
+    return frame.model->toFile(world);
+}
+
+void exportScene(const std::filesystem::path& file, const sandcore::Scene& scene, const ExportFrame& frame) {
     switch (exportFormatOf(file)) {
-    case ExportFormat::Ply: return writePointCloud(file, scene, display);
+    case ExportFormat::Ply: return writePointCloud(file, scene, frame);
     case ExportFormat::Vox: {
         requireWritableFileTarget(file);
         const std::vector<std::uint8_t> bytes = encodeVox(sceneVoxels(scene));
@@ -124,21 +138,30 @@ void exportScene(const std::filesystem::path& file, const sandcore::Scene& scene
     }
     case ExportFormat::Obj:
     case ExportFormat::Stl:
-    case ExportFormat::Glb: return writeSurfaceMesh(file, scene, display);
+    case ExportFormat::Glb: return writeSurfaceMesh(file, scene, frame);
     }
 }
 
-void writePointCloud(const std::filesystem::path& file, const sandcore::Scene& scene, const sandcore::DisplaySettings& display) {
+void writePointCloud(const std::filesystem::path& file, const sandcore::Scene& scene, const ExportFrame& frame) {
     requireWritableFileTarget(file);
     const std::uint32_t count = std::uint32_t(scene.grainCount());
+    const sandcore::DisplaySettings& display = frame.display;
+    // The cell size in the frame's units (the model's: its cells are 1 / scale model units).
+    const double cellSize = frame.model ? 1.0 / frame.model->placement.scale[1] : double(display.cellSize);
     char header[512];
     std::snprintf(header, sizeof header,
-                  "ply\nformat binary_little_endian 1.0\ncomment sandglass grains at their display positions, world units\n"
+                  "ply\nformat binary_little_endian 1.0\ncomment sandglass grains at their display positions, %s\n"
                   "comment cell_size %.9g\nelement vertex %u\nproperty float x\nproperty float y\nproperty float z\n"
                   "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n",
-                  double(display.cellSize), count);
+                  frame.model ? "the model's own coordinates and units" : "world units", cellSize, count);
     std::vector<sandcore::Vec3> positions(count);
     sandcore::writeDisplayPositions(scene, 1.0f, display, positions);
+    if (frame.model)
+        for (sandcore::Vec3& p : positions) {
+            const float size = display.cellSize;
+            const std::array<double, 3> model = exportedPoint(scene, frame, {p.x / size, p.y / size, p.z / size});
+            p = {float(model[0]), float(model[1]), float(model[2])};
+        }
     std::vector<std::uint8_t> out(header, header + std::strlen(header));
     out.reserve(out.size() + std::size_t(count) * 15);
     const std::vector<SandPattern> patterns = makeSandPatterns();

@@ -62,6 +62,7 @@ sandcore::Scene& SceneHost::editLayout() {
 void SceneHost::adopt(BuiltScene built, const SceneSettings& settings) {
     scene_ = std::make_unique<sandcore::Scene>(std::move(built.scene));
     drawing_ = std::move(built.drawing);
+    modelToWorld_ = built.modelToWorld;
     loaded_ = settings;
     lastStepOutsideClock_ = false;
     rate_.clear();

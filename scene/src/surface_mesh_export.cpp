@@ -52,7 +52,7 @@ struct SurfaceBuilder {
 
 } // namespace
 
-void writeSurfaceMesh(const std::filesystem::path& file, const sandcore::Scene& scene, const sandcore::DisplaySettings& display) {
+void writeSurfaceMesh(const std::filesystem::path& file, const sandcore::Scene& scene, const ExportFrame& frame) {
     const char* formatId = assimpFormatOf(exportFormatOf(file));
     if (!formatId) throw FileError(file, "is not a mesh format (.obj, .stl or .glb)");
     requireWritableFileTarget(file);
@@ -62,7 +62,7 @@ void writeSurfaceMesh(const std::filesystem::path& file, const sandcore::Scene& 
         if (x < 0 || y < 0 || z < 0 || x >= s.x || y >= s.y || z >= s.z) return false;
         return volume.index[std::size_t(x) + std::size_t(s.x) * (std::size_t(z) + std::size_t(s.z) * std::size_t(y))] != 0;
     };
-    SurfaceBuilder builder{s, display.cellSize, {}, {}, {}};
+    SurfaceBuilder builder{s, 1.0f, {}, {}, {}}; // world cells; placed by the frame below
     const Int3 X{1, 0, 0}, Y{0, 1, 0}, Z{0, 0, 1};
     for (int y = 0; y < s.y; ++y)
         for (int z = 0; z < s.z; ++z)
@@ -77,6 +77,13 @@ void writeSurfaceMesh(const std::filesystem::path& file, const sandcore::Scene& 
                 if (!filled(x, y, z - 1)) builder.square({x, y, z}, Y, X);
             }
     if (builder.triangles.empty()) throw FileError(file, "not written: the scene holds no sand to make a surface of");
+    for (aiVector3D& v : builder.vertices) {
+        const std::array<double, 3> p = exportedPoint(scene, frame, {v.x, v.y, v.z});
+        v = aiVector3D(float(p[0]), float(p[1]), float(p[2]));
+    }
+    // Undoing a turn-over mirrors y, which would turn every face inside out.
+    if (frame.model && scene.flipped())
+        for (std::size_t t = 0; t < builder.triangles.size(); t += 3) std::swap(builder.triangles[t + 1], builder.triangles[t + 2]);
 
     // assimp's scene owns its arrays and frees them with delete[] / delete in its destructors,
     // so they are allocated the way it expects and handed over at once.

@@ -53,7 +53,7 @@ TEST_CASE("export: the PLY holds one vertex per grain at its display position, i
     const sandcore::Scene scene = settledCanvas();
     sandcore::DisplaySettings display;
     display.cellSize = 0.25f;
-    exportScene(folder / "sand.ply", scene, display);
+    exportScene(folder / "sand.ply", scene, {display});
     const std::vector<std::uint8_t> bytes = readFileBytes(folder / "sand.ply");
     const std::string text(bytes.begin(), bytes.end());
     const std::size_t headerEnd = text.find("end_header\n");

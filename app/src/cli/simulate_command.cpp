@@ -146,7 +146,8 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     const std::string sceneName = sceneKindName(settings.request.kind);
     const int threads = scene.settings().threads;
     if (!options.save.empty()) saveState(options.save, scene, settings.request);
-    if (!options.exportFile.empty()) exportScene(options.exportFile, scene);
+    if (!options.exportFile.empty())
+        exportScene(options.exportFile, scene, {{}, built.modelToWorld ? &*built.modelToWorld : nullptr});
 
     if (options.json) {
         nlohmann::ordered_json out;

@@ -56,7 +56,9 @@ struct HourglassSpaceSettings {
 struct HourglassSpace {
     VoxelPlacement placement;          ///< model units to the model's grid (before the turn)
     InsideMask space;                  ///< cells sand may take, turned
-    InsideMask modelledSand;           ///< initial sand from the shells of role Sand, turned; all outside when none
+    /// The insides of the shells of role Sand, turned; all outside when none. Cells outside the
+    /// space may be marked (sand modelled into the glass's wall): the scene never fills those.
+    InsideMask modelledSand;
     UpAxis up = UpAxis::PlusY;         ///< the model axis turned to +y
     bool upFound = false;              ///< found along the neck, not given
     SandSpaceKind kind = SandSpaceKind::Cavity; ///< where the sand lives

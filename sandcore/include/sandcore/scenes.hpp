@@ -23,9 +23,10 @@ Scene makeCanvasScene(const CanvasSettings& canvas = {}, const StepSettings& ste
 Scene makeHourglassScene(const InsideMask& vessel, const HourglassSettings& hourglass = {},
                          const StepSettings& step = {});
 
-/// W1: as above, with the upper bulb's cells that `initialSand` (a mask of the vessel's size)
-/// marks as the sand reset fills, in place of the fill fraction; an empty mask, or one that
-/// marks no cell of the upper bulb, fills by the fraction.
+/// W1: as above, with the modelled sand `initialSand` (a mask of the vessel's size) as the sand
+/// reset fills in place of the fill fraction: its cells in the upper bulb, and as many again
+/// from the bottom up as carving the bulb (S3) took from it. An empty mask, or one that marks no
+/// cell of the upper bulb, fills by the fraction.
 Scene makeHourglassScene(const InsideMask& vessel, const InsideMask& initialSand, const HourglassSettings& hourglass,
                          const StepSettings& step);
 

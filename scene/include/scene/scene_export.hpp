@@ -4,6 +4,8 @@
 // cells (.vox, .binvox). Every file is written through a temporary file renamed into place;
 // every failure is a FileError, one line "FILE: cause".
 
+#include "scene/model_drawing.hpp"
+
 #include "sandcore/display_positions.hpp"
 #include "sandcore/inside_mask.hpp"
 #include "sandcore/scene.hpp"
@@ -43,20 +45,28 @@ enum class ExportFormat : std::uint8_t { Ply, Vox, Obj, Stl, Glb };
 /// The format of a file name's extension (any case); throws FileError for any other.
 ExportFormat exportFormatOf(const std::filesystem::path& file);
 
-/// Writes the scene in the format its extension names (exportFormatOf).
-void exportScene(const std::filesystem::path& file, const sandcore::Scene& scene,
-                 const sandcore::DisplaySettings& display = {});
+/// W6: where exported sand is written. Without a model, world units (cells times the cell size);
+/// with one, the loaded model's own coordinates and units, turned back from the up axis the
+/// scene stood it on (and from a turn-over), so the sand sits inside the glass in the modeller.
+struct ExportFrame {
+    sandcore::DisplaySettings display;    ///< cell size and jitter of the world units
+    const ModelToWorld* model = nullptr;  ///< the loaded model's placement; null: world units
+};
 
-/// Binary PLY: one vertex per grain at its display position (world units, stepFraction 1: at
-/// rest where it is) with its colour as red green blue uchar; the header says the cell size.
-void writePointCloud(const std::filesystem::path& file, const sandcore::Scene& scene,
-                     const sandcore::DisplaySettings& display = {});
+/// Writes the scene in the format its extension names (exportFormatOf). .vox stays in cells.
+void exportScene(const std::filesystem::path& file, const sandcore::Scene& scene, const ExportFrame& frame = {});
+
+/// Binary PLY: one vertex per grain at its display position (stepFraction 1: at rest where it
+/// is) with its colour as red green blue uchar; the header states the cell size in the frame's units.
+void writePointCloud(const std::filesystem::path& file, const sandcore::Scene& scene, const ExportFrame& frame = {});
 
 /// The surface between grain cells and the rest, as a closed mesh of squares split into
-/// triangles with shared corners, in world units, outward-facing, through assimp's exporter:
-/// .obj (without a material file), .stl (binary) or .glb.
-void writeSurfaceMesh(const std::filesystem::path& file, const sandcore::Scene& scene,
-                      const sandcore::DisplaySettings& display = {});
+/// triangles with shared corners, outward-facing, through assimp's exporter: .obj (without a
+/// material file), .stl (binary) or .glb.
+void writeSurfaceMesh(const std::filesystem::path& file, const sandcore::Scene& scene, const ExportFrame& frame = {});
+
+/// A point in world cells of the scene as the frame writes it (see ExportFrame).
+std::array<double, 3> exportedPoint(const sandcore::Scene& scene, const ExportFrame& frame, sandcore::Vec3 worldCells);
 
 /// `voxelize --out`: a mask's inside cells as .vox (one sand colour) or .binvox (a cube of the
 /// mask's largest size; translate and scale in model units when placement is given).

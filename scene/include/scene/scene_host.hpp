@@ -65,6 +65,8 @@ public:
     /// S10: the running scene's model as modelled (upright world cells); null for a procedural
     /// scene, a canvas, or a loaded scene whose model file is gone or changed.
     const std::shared_ptr<const ModelDrawing>& modelDrawing() const { return drawing_; }
+    /// W6: how the running scene's model became world cells; null without a model.
+    const ModelToWorld* modelToWorld() const { return modelToWorld_ ? &*modelToWorld_ : nullptr; }
     /// The settings the running scene was built from: what the panel shows as loaded.
     const SceneSettings& loaded() const { return loaded_; }
 
@@ -145,6 +147,7 @@ private:
     std::unique_ptr<sandcore::Scene> scene_;
     SceneSettings loaded_;
     std::shared_ptr<const ModelDrawing> drawing_;
+    std::optional<ModelToWorld> modelToWorld_;
     std::future<BuiltScene> build_;
     SceneSettings building_;                 // what build_ builds
     std::optional<SceneSettings> waiting_;   // the newest request made while build_ ran
