@@ -2,7 +2,7 @@
 # docs/requirements.md does not list, so every tag a reader meets is explained there.
 # Run as a test: cmake -DSOURCE_DIR=... -P check_requirement_tags.cmake
 file(READ "${SOURCE_DIR}/docs/requirements.md" index)
-string(REGEX MATCHALL "\\| (PH|[RSPVGCBAHTEUI])[0-9]+ \\|" listed "${index}")
+string(REGEX MATCHALL "\\| (PH|[RSPVGCBAHTEUIW])[0-9]+ \\|" listed "${index}")
 set(known "")
 foreach(row ${listed})
   string(REGEX REPLACE "\\| ([A-Z]+[0-9]+) \\|" "\\1" tag "${row}")
@@ -17,7 +17,7 @@ foreach(folder sandcore scene bench view gui app tools shaders tests)
     file(STRINGS "${file}" lines REGEX "//")
     foreach(line ${lines})
       string(REGEX REPLACE "^.*//" "" comment "${line}")
-      string(REGEX MATCHALL "(^|[^A-Za-z0-9_])(PH|[RSPVGCBAHTEUI])[0-9]+([^A-Za-z0-9_]|$)" found "${comment}")
+      string(REGEX MATCHALL "(^|[^A-Za-z0-9_])(PH|[RSPVGCBAHTEUIW])[0-9]+([^A-Za-z0-9_]|$)" found "${comment}")
       foreach(match ${found})
         string(REGEX REPLACE "[^A-Z0-9]" "" tag "${match}")
         list(FIND known "${tag}" at)

@@ -127,6 +127,8 @@ struct Candidate {
     CellList cells;
     int source = 0;        // -1: a closed glass's inside; 0, 1, 2...: the walls' gaps closed by that many cells
     bool neckOpened = false;
+    int jointAxis = -1;    // an opened neck: the axis of the column cut through the wall
+    int jointLow = 0, jointHigh = 0; // ... and the layers it spans
     NeckProfile neck;      // along neckAxis
     int neckAxis = -1;     // -1: no neck between two bulbs
 };
@@ -141,7 +143,11 @@ void findNeck(Candidate& candidate, const Grid& grid) {
     }
     for (int axis : {1, 0, 2}) {
         const NeckProfile profile = neckOfAreas(area[std::size_t(axis)]);
-        if (profile.hasNeck && profile.ratio <= kNeckRatio && (candidate.neckAxis < 0 || profile.ratio < candidate.neck.ratio)) {
+        // Two spaces joined through a wall are one hourglass only when the cut is its neck (not a
+        // bulb joined to the inside of a plate).
+        const bool atJoint = candidate.jointAxis < 0 || (axis == candidate.jointAxis && profile.neckLayer >= candidate.jointLow - 1 &&
+                                                         profile.neckLayer <= candidate.jointHigh + 1);
+        if (atJoint && profile.hasNeck && profile.ratio <= kNeckRatio && (candidate.neckAxis < 0 || profile.ratio < candidate.neck.ratio)) {
             candidate.neck = profile;
             candidate.neckAxis = axis;
         }
@@ -150,7 +156,7 @@ void findNeck(Candidate& candidate, const Grid& grid) {
 
 // W2: two bulbs that a wall under kMaxNeckWall cells separates along an axis (a neck narrower
 // than a cell, sealed by its own surface cells) joined through one column of cells.
-bool joinAcrossNeck(const CellList& a, const CellList& b, const Grid& grid, CellList& joined) {
+bool joinAcrossNeck(const CellList& a, const CellList& b, const Grid& grid, Candidate& joined) {
     struct Best { int gap = kMaxNeckWall + 1; int axis = -1; std::array<int, 3> from{}; double offCentre = 0.0; } best;
     for (int axis = 0; axis < 3; ++axis) {
         const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2; // the plane across the axis
@@ -192,11 +198,15 @@ bool joinAcrossNeck(const CellList& a, const CellList& b, const Grid& grid, Cell
         }
     }
     if (best.axis < 0) return false;
-    joined = a;
-    joined.insert(joined.end(), b.begin(), b.end());
+    joined.cells = a;
+    joined.cells.insert(joined.cells.end(), b.begin(), b.end());
     std::array<int, 3> c = best.from;
-    for (int i = 0; i < best.gap; ++i, ++c[std::size_t(best.axis)]) joined.push_back(grid.index(c));
-    std::sort(joined.begin(), joined.end());
+    for (int i = 0; i < best.gap; ++i, ++c[std::size_t(best.axis)]) joined.cells.push_back(grid.index(c));
+    std::sort(joined.cells.begin(), joined.cells.end());
+    joined.neckOpened = true;
+    joined.jointAxis = best.axis;
+    joined.jointLow = best.from[std::size_t(best.axis)];
+    joined.jointHigh = joined.jointLow + best.gap - 1;
     return true;
 }
 
@@ -210,8 +220,7 @@ void addCandidates(std::vector<CellList> spaces, int source, const Grid& grid, s
             if (double(spaces[j].size()) < kBulbShare * double(spaces[i].size())) continue;
             Candidate joined;
             joined.source = source;
-            joined.neckOpened = true;
-            if (joinAcrossNeck(spaces[i], spaces[j], grid, joined.cells)) out.push_back(std::move(joined));
+            if (joinAcrossNeck(spaces[i], spaces[j], grid, joined)) out.push_back(std::move(joined));
         }
     for (CellList& cells : spaces) {
         Candidate candidate;

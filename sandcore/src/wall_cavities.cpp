@@ -117,7 +117,9 @@ std::vector<CellList> enclosedRegions(const MaskCells& walls, Int3 size, int clo
                 if (edge) frontier.push_back(std::uint32_t(n));
             }
         std::vector<std::uint8_t> takenThisRound(walls.size(), 0);
-        for (int round = 0; round < closing && !frontier.empty(); ++round) {
+        // Grown as a cube, the walls took every cell within `closing` steps along each axis: in
+        // face steps that is up to three times as many.
+        for (int round = 0; round < 3 * closing && !frontier.empty(); ++round) {
             next.clear();
             for (std::uint32_t n : frontier) {
                 const std::int32_t from = label[n];

@@ -16,7 +16,7 @@ MaskCells grownBy(const MaskCells& cells, Int3 size, int radius);
 
 /// The regions that `walls` (1 = wall) enclose once every gap of up to 2 * closing cells is
 /// closed: the walls are grown by `closing` cells (a cube), the grown walls' cavities found, and
-/// each cavity grown back by up to `closing` cells into the free cells it had lost, a cell going
+/// each cavity grown back, face step by face step, into the free cells it had lost, a cell going
 /// to whichever side reaches it first (the outside on a tie, so the grown walls' gaps are shared
 /// with the outside and never leave a cavity). Cavities that meet while growing back are one
 /// region: a neck the grown walls closed opens again. Regions come in order of their first cell.
