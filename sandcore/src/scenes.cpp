@@ -4,6 +4,8 @@
 #include "sandcore/mask_cleanup.hpp"
 
 #include <algorithm>
+#include <climits>
+#include <cmath>
 #include <stdexcept>
 
 namespace sandcore {
@@ -51,6 +53,27 @@ InsideMask trimmedToInsideLayers(const InsideMask& mask) {
     return sliceLayers(mask, bottom, top);
 }
 
+// The cells of a lower bulb (its top layer the neck) that the heap under the neck surely reaches:
+// a pile stands at 45 degrees at most (the rules slip one cell aside per cell down), so sand
+// beyond that cone in a wide, flat bulb would back up into the neck before the bulb is full.
+std::int64_t heapCapacity(const InsideMask& lower) {
+    const int neck = lower.size.y - 1;
+    double cx = 0.0, cz = 0.0;
+    std::int64_t neckCells = 0;
+    for (int z = 0; z < lower.size.z; ++z)
+        for (int x = 0; x < lower.size.x; ++x)
+            if (lower.at(x, neck, z)) cx += x, cz += z, ++neckCells;
+    if (neckCells == 0) return 0;
+    cx /= double(neckCells);
+    cz /= double(neckCells);
+    std::int64_t cells = 0;
+    for (int y = 0; y < neck; ++y)
+        for (int z = 0; z < lower.size.z; ++z)
+            for (int x = 0; x < lower.size.x; ++x)
+                if (lower.at(x, y, z) && std::hypot(x - cx, z - cz) <= double(neck - y)) ++cells;
+    return cells;
+}
+
 } // namespace
 
 Scene makeCanvasScene(const CanvasSettings& canvas, const StepSettings& step) {
@@ -85,6 +108,7 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialS
     if (hourglass.drainCompletely) removeSharpEdges(upper, 0, upper.size.y - 1);
     requireInside(upper, "the upper bulb");
     CellGrid lowerLayout(vessel.size, kEmpty);
+    std::int64_t capacity = INT64_MAX;
     if (split) {
         InsideMask lower = sliceLayers(vessel, 0, neck);
         // Turned over (T1), the lower bulb drains too: carve it as the upper bulb it then becomes.
@@ -93,6 +117,7 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialS
             removeSharpEdges(lower, 0, lower.size.y - 1);
             lower = mirroredInY(lower);
         }
+        capacity = heapCapacity(lower);
         lowerLayout = layoutFromMask(lower);
     }
     std::vector<std::uint32_t> fill;
@@ -114,6 +139,12 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialS
         std::sort(fill.begin(), fill.end());
     }
     if (fill.empty()) fill = fillFromBottom(upper, hourglass.fillFraction);
+    // No more sand than the lower bulb's heap takes, so all of it runs through (W1, S3).
+    if (hourglass.fitLowerBulb && std::int64_t(fill.size()) > capacity) {
+        fill = fillFromBottom(upper, 1.0f);
+        fill.resize(std::size_t(capacity));
+        std::sort(fill.begin(), fill.end());
+    }
     return Scene(SceneKind::Hourglass, layoutFromMask(upper), std::move(lowerLayout), std::move(fill), step);
 }
 
