@@ -2,6 +2,7 @@
 
 #include "app/frame_benchmark_runner.hpp"
 #include "app/user_settings.hpp"
+#include "gui/build_progress_window.hpp"
 #include "gui/help_window.hpp"
 #include "gui/panels.hpp"
 #include "gui/quit_question.hpp"
@@ -232,6 +233,7 @@ void Application::queueMouseButton(int button, bool pressed, double x, double y)
 void Application::buildWindows() {
     if (state_.showGui) drawPanels(state_);
     drawQuitQuestion(state_);
+    drawBuildProgress(state_);
     drawHelpWindow(state_);
     // The hint is for a person at a window; hidden windows (render, tests) draw the scene only.
     if (options_.window.visible && state_.showGui) drawHelpHint(state_);
@@ -339,9 +341,11 @@ void Application::handleKey(KeyCommand command) {
         if (!benchmark_.running) state_.commands.push(Command::Benchmark);
         break;
     case KeyCommand::Quit:
-        // Esc during the frame benchmark ends the benchmark, not the program.
+        // Esc during the frame benchmark ends the benchmark, and during a build the build, not the program.
         if (benchmark_.running)
             benchmark_.cancelRequested = true;
+        else if (state_.building && !state_.build.cancelling && !state_.files.confirmQuit)
+            state_.commands.push(Command::CancelBuild);
         else
             state_.commands.push(Command::Quit);
         break;
@@ -420,6 +424,11 @@ void Application::serveCommands() {
     }
     for (Command command : later) state_.commands.push(command);
     state_.building = host_.building();
+    if (const BuildProgress* progress = host_.buildProgress())
+        state_.build = {buildPhaseName(progress->phase()), progress->shareDone(), host_.buildSeconds(),
+                        progress->cancelRequested()};
+    else
+        state_.build = {};
     canvas_.publishUndoState(state_.painting);
 }
 
@@ -469,6 +478,12 @@ void Application::serve(Command command) {
         break;
     case Command::StopTimer: timer_.stop(); break;
     case Command::SingleStep: host_.requestSingleStep(); break;
+    case Command::CancelBuild:
+        if (!host_.building()) break;
+        host_.cancelBuild();
+        state_.build.cancelling = true;
+        state_.statusLine = "cancelling the build...";
+        break;
     case Command::FrameCamera: frameCamera(); break;
     case Command::Undo:
     case Command::Redo: {

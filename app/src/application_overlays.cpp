@@ -66,13 +66,8 @@ void Application::drawOverlays() {
         ImGui::End();
         ImGui::PopStyleColor();
     };
-    if (host_.building()) {
-        // Progress while a scene is built in the background.
-        const double seconds = host_.buildSeconds();
-        char text[64];
-        std::snprintf(text, sizeof text, "building scene %c  %.1f s", "|/-\\"[int(seconds * 8.0) % 4], seconds);
-        banner("##building", text, ImVec4(0.1f, 0.1f, 0.1f, 0.85f));
-    } else if (state_.timer.finished) {
+    // A build in the background shows its own window in this place (drawBuildProgress).
+    if (!host_.building() && state_.timer.finished) {
         // The end of the timer, blinking so it is seen from across the room.
         const bool on = int(ImGui::GetTime() * 2.0) % 2 == 0;
         banner("##timeup", "  Time is up  ", on ? ImVec4(0.80f, 0.25f, 0.10f, 0.95f) : ImVec4(0.45f, 0.12f, 0.05f, 0.95f));

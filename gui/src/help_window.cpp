@@ -12,7 +12,7 @@ const std::vector<ControlHelp>& controlHelp() {
     static const std::vector<ControlHelp> controls = {
         {"F1 or ?", "show or hide this help"},
         {"Space", "hide or show the panels"},
-        {"Esc", "quit (asks first when painting is unsaved; stops the frame benchmark)"},
+        {"Esc", "quit (asks first when painting is unsaved; stops the frame benchmark or cancels a scene build)"},
         {"Left drag", "rotate the view (on the canvas: pour or erase sand)"},
         {"Middle drag", "pan the view"},
         {"Right drag", "zoom"},

@@ -278,7 +278,8 @@ void drawSceneSection(AppState& state) {
     // What runs now, whatever the controls below are set to.
     const SceneRequest& loaded = state.loaded.request;
     if (state.building)
-        ImGui::TextWrapped("building... (%s runs until it is done)", sceneSummary(loaded).c_str());
+        ImGui::TextWrapped("building: %s... (%s runs until it is done or cancelled)", state.build.phase.c_str(),
+                           sceneSummary(loaded).c_str());
     int kind = int(scene.request.kind);
     const char* kinds[] = {"hourglass", "sculpture", "canvas"};
     if (ImGui::Combo("scene", &kind, kinds, 3)) {

@@ -103,8 +103,9 @@ sandcore::UpAxis sculptureUpAxis(const sandcore::MeshBounds& bounds) {
 }
 
 SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSettings& requested, ModelUse use,
-                        const ModelShapeRequest& request, std::uint64_t memoryLimit) {
+                        const ModelShapeRequest& request, std::uint64_t memoryLimit, BuildProgress* progress) {
     SandSpace out;
+    checkpoint(progress, BuildPhase::Loading);
     const auto loadStart = Clock::now();
     out.parts = loadModelParts(path);
     out.loadMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - loadStart).count();
@@ -114,7 +115,9 @@ SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSetting
     const bool sculpture = request.kind == sandcore::SceneKind::Sculpture;
     if (sculpture)
         for (const ModelPart& part : out.parts) settings.robust = settings.robust || !part.closed;
+    checkpoint(progress, BuildPhase::Voxelizing);
     out.model = voxelizeLoadedMesh(path, mergedMesh(out.parts), settings, use, memoryLimit);
+    checkpoint(progress, BuildPhase::FindingSandSpace);
     try {
         if (sculpture) findSculpture(out, settings, request);
         else findHourglass(out, settings, request);

@@ -44,7 +44,8 @@ SceneHost::SceneHost(sandcore::Scene scene, const SceneSettings& settings) {
 }
 
 SceneHost::~SceneHost() {
-    // A build still running holds no reference to this host; only wait so its thread ends.
+    // A build still running holds no reference to this host; stop it and wait so its thread ends.
+    cancelBuild();
     if (build_.valid()) build_.wait();
 }
 
@@ -100,8 +101,16 @@ void SceneHost::adoptLoaded(sandcore::Scene scene, const SceneSettings& settings
 void SceneHost::startBuild(SceneSettings settings) {
     building_ = settings;
     buildStarted_ = Clock::now();
+    progress_ = std::make_shared<BuildProgress>(phaseListener_);
     // Scenes are built off the main thread so the window stays responsive.
-    build_ = std::async(std::launch::async, [settings = std::move(settings)] { return buildSceneWithReport(settings); });
+    build_ = std::async(std::launch::async, [settings = std::move(settings), progress = progress_] {
+        return buildSceneWithReport(settings, progress.get());
+    });
+}
+
+void SceneHost::cancelBuild() {
+    waiting_.reset();
+    if (build_.valid()) progress_->cancel();
 }
 
 void SceneHost::requestBuild(const SceneSettings& settings) {
@@ -136,7 +145,9 @@ std::optional<BuildOutcome> SceneHost::pollBuild() {
             startBuild(*std::exchange(waiting_, std::nullopt)); // its error no longer matters either
             return std::nullopt;
         }
-        outcome.message = error.what(); // the running scene stays as it was
+        // The running scene stays as it was.
+        outcome.cancelled = dynamic_cast<const BuildCancelled*>(&error) != nullptr;
+        outcome.message = outcome.cancelled ? "build cancelled; the running scene is kept" : error.what();
     }
     return outcome;
 }

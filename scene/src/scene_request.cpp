@@ -130,13 +130,15 @@ void applySceneDefaults(SceneSettings& settings) {
         throw std::invalid_argument(std::string(request.upAxis.empty() ? "--part" : "--up") + " applies to a model file (--model)");
 }
 
-BuiltScene buildSceneWithReport(const SceneSettings& requested) {
+// Every phase but Done; buildSceneWithReport passes that last checkpoint whichever way the scene was made.
+static BuiltScene buildSceneUntilDone(const SceneSettings& requested, BuildProgress* progress) {
     SceneSettings checked = requested;
     applySceneDefaults(checked);
     const SceneRequest& request = checked.request;
     const sandcore::StepSettings& step = checked.step;
     const int resolution = request.resolution;
     if (request.kind == SceneKind::Canvas) {
+        checkpoint(progress, BuildPhase::Filling);
         const sandcore::Int3 width{resolution, resolution, resolution};
         sandcore::validateSceneGridSizes(SceneKind::Canvas, width);
         requireMemory("the canvas is", resolution, sandcore::estimateSceneBytes(SceneKind::Canvas, width),
@@ -149,6 +151,7 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
     settings.fillFraction = request.fillFraction;
     settings.drainCompletely = request.drainCompletely;
     if (request.modelPath.empty()) {
+        checkpoint(progress, BuildPhase::Filling);
         const std::string shape = !request.shape.empty() ? request.shape : hourglass ? "hourglass" : "sphere";
         requireKnownShape(shape);
         const sandcore::Int3 size = proceduralMaskSize(shape, resolution);
@@ -169,7 +172,8 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
     shape.roles = request.partRoles;
     if (!request.upAxis.empty()) shape.up = sandcore::parseUpAxis(request.upAxis);
     SandSpace space = loadSandSpace(request.modelPath, voxelize, hourglass ? ModelUse::Hourglass : ModelUse::Sculpture,
-                                    shape, request.memoryLimit);
+                                    shape, request.memoryLimit, progress);
+    checkpoint(progress, BuildPhase::Filling);
     sandcore::InsideMask mask = std::move(space.space);
     // thesis §3.4 noNoise: single cells and spikes left by discretisation; the hourglass split then
     // carves the upper bulb with noSharpEdges (makeHourglassScene).
@@ -206,6 +210,12 @@ BuiltScene buildSceneWithReport(const SceneSettings& requested) {
     } catch (const std::invalid_argument& e) {
         throw ModelError(request.modelPath, e.what());
     }
+}
+
+BuiltScene buildSceneWithReport(const SceneSettings& requested, BuildProgress* progress) {
+    BuiltScene built = buildSceneUntilDone(requested, progress);
+    checkpoint(progress, BuildPhase::Done);
+    return built;
 }
 
 sandcore::Scene buildScene(const SceneSettings& settings) { return std::move(buildSceneWithReport(settings).scene); }

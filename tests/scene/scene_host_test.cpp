@@ -1,6 +1,8 @@
 #include "scene/scene_host.hpp"
 #include "scene/statistics.hpp"
 
+#include "support/phase_gate.hpp"
+
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -109,6 +111,52 @@ TEST_CASE("scene host: a failed build keeps the running scene, and the last of s
     CHECK(host.loaded().request.shape == "cube");
     CHECK(host.loaded().request.resolution == 16);
     CHECK(host.scene().kind() == sandcore::SceneKind::Hourglass);
+}
+
+TEST_CASE("scene host: a cancelled build keeps the running scene unchanged and says so") {
+    SceneHost host(procedural("hourglass", 24));
+    host.runSteps(20);
+    const std::uint64_t hash = host.scene().stateHash();
+    // The build is held at voxelizing, so the cancel surely meets it running.
+    testing::PhaseGate gate(BuildPhase::Voxelizing);
+    host.setBuildPhaseListener(gate.listener());
+    SceneSettings model = procedural("hourglass", 32);
+    model.request.shape.clear();
+    model.request.modelPath = defaultModelFor(sandcore::SceneKind::Hourglass);
+    host.requestBuild(model);
+    REQUIRE(gate.waitUntilReached());
+    const BuildProgress* progress = host.buildProgress();
+    REQUIRE(progress != nullptr);
+    CHECK(progress->phase() == BuildPhase::Voxelizing);
+    CHECK(progress->shareDone() > 0.0f);
+    CHECK(progress->shareDone() < 1.0f);
+    host.requestBuild(procedural("cube", 16)); // waits for the model; the cancel drops it too
+    CHECK(host.buildWaiting());
+
+    host.cancelBuild();
+    CHECK(progress->cancelRequested());
+    CHECK_FALSE(host.buildWaiting());
+    gate.open();
+    const std::optional<BuildOutcome> outcome = host.finishBuilds();
+    REQUIRE(outcome);
+    CHECK(outcome->cancelled);
+    CHECK_FALSE(outcome->adopted);
+    CHECK(outcome->message == "build cancelled; the running scene is kept");
+    CHECK_FALSE(host.building());
+    CHECK(host.buildProgress() == nullptr);
+    CHECK(host.scene().stateHash() == hash);
+    CHECK(host.scene().counters().stepsDone == 20);
+    CHECK(host.loaded().request.shape == "hourglass");
+    CHECK(host.loaded().request.resolution == 24);
+
+    // The next request builds as ever.
+    host.setBuildPhaseListener({});
+    host.requestBuild(procedural("cube", 16));
+    const std::optional<BuildOutcome> built = host.finishBuilds();
+    REQUIRE(built);
+    CHECK(built->adopted);
+    CHECK_FALSE(built->cancelled);
+    CHECK(host.loaded().request.shape == "cube");
 }
 
 TEST_CASE("step rate: frames without steps count, so the readout is the true rate") {

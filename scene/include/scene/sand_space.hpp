@@ -4,6 +4,7 @@
 // Sculptures fill open meshes robustly and stand a model up along +y, or +z when it is clearly
 // taller that way.
 
+#include "scene/build_progress.hpp"
 #include "scene/model_parts.hpp"
 #include "scene/model_voxelizer.hpp"
 
@@ -49,9 +50,11 @@ struct SandSpace {
 
 /// Loads the parts of `path`, chooses their roles, voxelizes the model (memory checked first,
 /// as voxelizeModelFile) and finds the sand space and up axis. Throws ModelError ("FILE: cause")
-/// for bad input and std::invalid_argument for an unknown part name.
+/// for bad input and std::invalid_argument for an unknown part name. `progress` (when given)
+/// passes Loading, Voxelizing and FindingSandSpace, and may throw BuildCancelled there.
 SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSettings& settings, ModelUse use,
-                        const ModelShapeRequest& request, std::uint64_t memoryLimit = 0);
+                        const ModelShapeRequest& request, std::uint64_t memoryLimit = 0,
+                        BuildProgress* progress = nullptr);
 
 /// The sculpture's up axis when none is given: +z when the model is clearly taller along z than
 /// along y and z is its largest extent (a figure modelled Z-up lies on its back otherwise), else +y.

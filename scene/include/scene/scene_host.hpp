@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
@@ -23,6 +24,7 @@ namespace sandglass {
 /// What became of a build when it finished.
 struct BuildOutcome {
     bool adopted = false; ///< the new scene runs now; false: it failed and the old scene stays
+    bool cancelled = false; ///< SPEC I5: stopped by cancelBuild; the old scene stays
     std::string message;  ///< "built hourglass, 17848 grains" or the one-line error
 };
 
@@ -82,6 +84,13 @@ public:
     bool building() const { return build_.valid(); } ///< a build runs or waits
     bool buildWaiting() const { return waiting_.has_value(); } ///< a newer request waits for the running build
     double buildSeconds() const;                    ///< how long the current build has run, s
+    /// SPEC I5: the running build's phase, share done and cancel; null while none runs.
+    const BuildProgress* buildProgress() const { return building() ? progress_.get() : nullptr; }
+    /// SPEC I5: stops the running build at its next phase and drops a waiting request; the
+    /// running scene stays as it is (pollBuild then reports the build cancelled).
+    void cancelBuild();
+    /// Called on the build thread as each later build reaches a phase (tests hold a build there).
+    void setBuildPhaseListener(std::function<void(BuildPhase)> listener) { phaseListener_ = std::move(listener); }
     /// Adopts a finished build (or reports its error); nothing while none has finished.
     std::optional<BuildOutcome> pollBuild();
     /// Waits for every requested build and adopts the last; the outcome of the last, if any.
@@ -149,6 +158,8 @@ private:
     std::shared_ptr<const ModelDrawing> drawing_;
     std::optional<ModelToWorld> modelToWorld_;
     std::future<BuiltScene> build_;
+    std::shared_ptr<BuildProgress> progress_; // build_'s, shared with its thread
+    std::function<void(BuildPhase)> phaseListener_;
     SceneSettings building_;                 // what build_ builds
     std::optional<SceneSettings> waiting_;   // the newest request made while build_ ran
     std::chrono::steady_clock::time_point buildStarted_;

@@ -3,6 +3,7 @@
 // command line, the benchmark and the window all build scenes through here, and every value of a
 // request is given its default and checked in one place (applySceneDefaults), with one range each.
 
+#include "scene/build_progress.hpp"
 #include "scene/model_drawing.hpp"
 #include "scene/model_parts.hpp"
 #include "scene/model_voxelizer.hpp"
@@ -108,8 +109,10 @@ sandcore::InsideMask makeProceduralMask(std::string_view shape, int resolution, 
 /// bad input. Nothing is changed on failure.
 sandcore::Scene buildScene(const SceneSettings& settings);
 
-/// As buildScene, also returning the model's voxelization report.
-BuiltScene buildSceneWithReport(const SceneSettings& settings);
+/// As buildScene, also returning the model's voxelization report. SPEC I5: passes `progress`
+/// (when given) through each phase up to Done, and throws BuildCancelled at the first phase
+/// after its cancel was asked.
+BuiltScene buildSceneWithReport(const SceneSettings& settings, BuildProgress* progress = nullptr);
 
 /// The resolution a scene gets when none is asked for: 64 cells, the canvas 60 (R10's 60x10x60 over 60x40x60).
 int defaultResolution(sandcore::SceneKind kind);

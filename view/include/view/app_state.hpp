@@ -89,6 +89,7 @@ enum class Command {
     StartTimer,        ///< set the timer to TimerSettings::minutes:seconds on the sand as it is
     StopTimer,         ///< stop the timer
     OpenFile,          ///< open FileSettings::openPath as its kind says: a .sand state, a draft image or a model
+    CancelBuild,       ///< stop the scene being built and keep the running one (I5)
 };
 
 /// Commands in the order they were raised.
@@ -115,6 +116,14 @@ struct TimerState {
     bool finished = false;      ///< the sand has run out: time is up
     double elapsedSeconds = 0;  ///< sand run since the start, s
     double remainingSeconds = 0; ///< until the sand on top has run out, s
+};
+
+/// SPEC I5: the scene being built in the background, as the window shows it (refreshed every frame).
+struct BuildStatus {
+    std::string phase;       ///< what the build does now: "loading the model", "voxelizing", ...
+    float shareDone = 0.0f;  ///< 0..1, by phase
+    double seconds = 0.0;    ///< how long it has run, s
+    bool cancelling = false; ///< Cancel was asked: it stops when its phase ends
 };
 
 /// Numbers for the statistics panel, refreshed every frame.
@@ -165,6 +174,7 @@ struct AppState {
     FrameStatistics stats;          ///< numbers shown in the statistics panel
     CommandQueue commands;          ///< requests to serve after the panels are built
     bool building = false;          ///< a scene is being built in the background
+    BuildStatus build;              ///< how far that build is (while building)
 };
 
 } // namespace sandglass
