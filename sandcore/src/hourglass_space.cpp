@@ -36,8 +36,11 @@ constexpr double kNeckRatio = 0.8;
 constexpr double kLargerSpace = 1.2;
 // Modelled sand fills part of one bulb: on some axis it spans less than this share of the walls.
 constexpr double kPartOfOneBulb = 0.55;
-// A shell the sand space borders on with at least this share of its cells within kNearCells is glass.
-constexpr double kGlassShare = 0.5;
+// A shell is glass when the sand space touches this share of its cells (a single wall, or the
+// inner side of a glass modelled with thickness), or when it wraps the space and lies within
+// kNearCells of it along most of its cells (the outer side of a glass made as two shells).
+constexpr double kTouchingShare = 0.35;
+constexpr double kNearShare = 0.5;
 constexpr int kNearCells = 3;
 // A neck narrower than a cell fills with its own wall cells over its length: bulbs up to this
 // many cells apart along an axis are joined through one column.
@@ -436,13 +439,24 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
         out.upFound = true;
     }
 
-    // Shells left to decide: glass where the sand space lies close along most of them, else frame.
+    // Shells left to decide: glass or frame, by how the sand space lies along them.
     const MaskCells near = grownBy(out.space.inside, grid.size, kNearCells);
+    std::array<int, 3> spaceLow{INT32_MAX, INT32_MAX, INT32_MAX}, spaceHigh{-1, -1, -1};
+    for (std::size_t n = 0; n < out.space.inside.size(); ++n)
+        if (out.space.inside[n]) {
+            const std::array<int, 3> c = grid.coordinates(std::uint32_t(n));
+            for (std::size_t a = 0; a < 3; ++a) spaceLow[a] = std::min(spaceLow[a], c[a]), spaceHigh[a] = std::max(spaceHigh[a], c[a]);
+        }
     for (std::size_t s = 0; s < shells.size(); ++s) {
-        if (shells[s].roleFixed || out.roles[s] == ShellRole::Sand || inGrid[s].surface.empty()) continue;
+        const GridShell& shell = inGrid[s];
+        if (shells[s].roleFixed || out.roles[s] == ShellRole::Sand || shell.surface.empty()) continue;
+        const double cells = double(shell.surface.size());
         std::size_t close = 0;
-        for (std::uint32_t n : inGrid[s].surface) close += near[n] ? 1 : 0;
-        out.roles[s] = double(close) >= kGlassShare * double(inGrid[s].surface.size()) ? ShellRole::Glass : ShellRole::Frame;
+        for (std::uint32_t n : shell.surface) close += near[n] ? 1 : 0;
+        bool wraps = true;
+        for (std::size_t a = 0; a < 3; ++a) wraps = wraps && shell.low[a] <= spaceLow[a] + 1 && shell.high[a] >= spaceHigh[a];
+        const bool touched = double(cellsTouching(shell.surface, out.space.inside, grid.size)) >= kTouchingShare * cells;
+        out.roles[s] = touched || (wraps && double(close) >= kNearShare * cells) ? ShellRole::Glass : ShellRole::Frame;
     }
 
     for (const Candidate& c : candidates)
@@ -452,7 +466,8 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
     return out;
 }
 
-Scene makeHourglassScene(const HourglassSpace& space, const HourglassSettings& hourglass, const StepSettings& step) {
+Scene makeHourglassScene(const HourglassSpace& space, HourglassSettings hourglass, const StepSettings& step) {
+    hourglass.fitLowerBulb = true; // a model's bulbs were not made to fit this program's piles
     if (space.modelledSand.countInside() == 0) return makeHourglassScene(space.space, hourglass, step);
     return makeHourglassScene(space.space, space.modelledSand, hourglass, step);
 }

@@ -53,9 +53,9 @@ InsideMask trimmedToInsideLayers(const InsideMask& mask) {
     return sliceLayers(mask, bottom, top);
 }
 
-// The cells of a lower bulb (its top layer the neck) that the heap under the neck surely reaches:
-// a pile stands at 45 degrees at most (the rules slip one cell aside per cell down), so sand
-// beyond that cone in a wide, flat bulb would back up into the neck before the bulb is full.
+// The cells of a lower bulb (its top layer the neck) that the heap under the neck reaches: a pile
+// grows as a pyramid of 45-degree faces (the rules slip one cell aside, or diagonally, per cell
+// down), so sand beyond it in a wide, flat bulb would back up into the neck before the bulb is full.
 std::int64_t heapCapacity(const InsideMask& lower) {
     const int neck = lower.size.y - 1;
     double cx = 0.0, cz = 0.0;
@@ -70,7 +70,7 @@ std::int64_t heapCapacity(const InsideMask& lower) {
     for (int y = 0; y < neck; ++y)
         for (int z = 0; z < lower.size.z; ++z)
             for (int x = 0; x < lower.size.x; ++x)
-                if (lower.at(x, y, z) && std::hypot(x - cx, z - cz) <= double(neck - y)) ++cells;
+                if (lower.at(x, y, z) && std::max(std::abs(x - cx), std::abs(z - cz)) <= double(neck - y)) ++cells;
     return cells;
 }
 

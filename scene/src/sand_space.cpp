@@ -99,7 +99,7 @@ void findSculpture(SandSpace& out, const sandcore::VoxelizeSettings& settings, c
 
 sandcore::UpAxis sculptureUpAxis(const sandcore::MeshBounds& bounds) {
     const double x = bounds.extent(0), y = bounds.extent(1), z = bounds.extent(2);
-    return z > 1.1 * y && z >= x ? sandcore::UpAxis::PlusZ : sandcore::UpAxis::PlusY;
+    return z > 1.1 * std::max(x, y) ? sandcore::UpAxis::PlusZ : sandcore::UpAxis::PlusY;
 }
 
 SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSettings& requested, ModelUse use,

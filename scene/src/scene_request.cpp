@@ -149,6 +149,8 @@ static BuiltScene buildSceneUntilDone(const SceneSettings& requested, BuildProgr
     const bool hourglass = request.kind == SceneKind::Hourglass;
     sandcore::HourglassSettings settings;
     settings.fillFraction = request.fillFraction;
+    // A model's bulbs were not made to fit this program's piles; the procedural shapes were.
+    settings.fitLowerBulb = !request.modelPath.empty();
     settings.drainCompletely = request.drainCompletely;
     if (request.modelPath.empty()) {
         checkpoint(progress, BuildPhase::Filling);

@@ -38,8 +38,11 @@ TEST_CASE("voxelize --json finds the Z-up STL's axis, and --part and --up are ch
     CHECK(json["up_axis"] == "+z");
     CHECK(json["vessel"] == "cavity");
     CHECK(json["cavities"] == 1);
-    REQUIRE(json["parts"].size() == 1);
-    CHECK(json["parts"][0]["name"] == "framed_hourglass_z");
+    // One object of six shells: the glass and the frame's parts, told apart by where the sand space lies.
+    REQUIRE(json["parts"].size() == 6);
+    CHECK(json["parts"][0]["name"] == "framed_hourglass_z #1");
+    CHECK(json["parts"][0]["role"] == "vessel");
+    for (std::size_t i = 1; i < 6; ++i) CHECK(json["parts"][i]["role"] == "frame");
     const auto given = runSandglass("voxelize " + model("framed_hourglass_z.stl") + " --res 40 --up -z --json");
     REQUIRE(given.exitCode == 0);
     CHECK(nlohmann::json::parse(given.out)["up_axis"] == "-z");

@@ -14,7 +14,6 @@ TEST_CASE("hourglass: split at the neck, outside INVALID, upper bulb filled, low
     const int neck = findNeckLayer(vessel);
     HourglassSettings settings;
     settings.fillFraction = 1.0f;
-    settings.fitLowerBulb = false;
     Scene scene = makeHourglassScene(vessel, settings);
     const CellGrid& upper = scene.grid(GridLevel::Upper);
     const CellGrid& lower = scene.grid(GridLevel::Lower);

@@ -83,9 +83,8 @@ struct HourglassSpace {
 HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const HourglassSpaceSettings& settings);
 
 /// An hourglass scene from a sand space: makeHourglassScene, with the modelled sand as the
-/// upper bulb's initial sand when there is any in it.
-Scene makeHourglassScene(const HourglassSpace& space, const HourglassSettings& hourglass = {},
-                         const StepSettings& step = {});
+/// upper bulb's initial sand when there is any in it, filled to fit the lower bulb (fitLowerBulb).
+Scene makeHourglassScene(const HourglassSpace& space, HourglassSettings hourglass = {}, const StepSettings& step = {});
 
 /// The whole recipe in one call, for an embedder: a triangle soup (any number of shells, glass
 /// with or without thickness, frame, modelled sand) to a ready hourglass scene of `resolution`

@@ -13,8 +13,9 @@ struct HourglassSettings {
     float fillFraction = 0.85f;   ///< share of the upper bulb's cells filled at reset, from the neck up (0..1]
     bool drainCompletely = true;  ///< S3: carve both bulbs with removeSharpEdges (the lower one upside down) so no sand stays behind, turned over or not
     /// Fill no more than the heap under the neck can take in the lower bulb (a pyramid of
-    /// 45-degree faces), so all the sand runs through a bulb that is wide and flat.
-    bool fitLowerBulb = true;
+    /// 45-degree faces), so all the sand runs through a lower bulb that is wide and flat. Off for
+    /// shapes made to fit (the procedural hourglass); on for models from files (W1).
+    bool fitLowerBulb = false;
 };
 
 /// An empty canvas (MODE_PAINT). Throws std::invalid_argument for invalid sizes or unequal x/z.

@@ -56,8 +56,9 @@ SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSetting
                         const ModelShapeRequest& request, std::uint64_t memoryLimit = 0,
                         BuildProgress* progress = nullptr);
 
-/// The sculpture's up axis when none is given: +z when the model is clearly taller along z than
-/// along y and z is its largest extent (a figure modelled Z-up lies on its back otherwise), else +y.
+/// The sculpture's up axis when none is given: +z when the model is clearly longer along z than
+/// along x and y (a figure modelled Z-up would lie on its back otherwise), else +y. A sculpture
+/// is made to stand, so its longest extent is taken as its height only when it is clearly so.
 sandcore::UpAxis sculptureUpAxis(const sandcore::MeshBounds& bounds);
 
 /// S1: why no cell lies inside the model at `resolution`, with the resolution that would give

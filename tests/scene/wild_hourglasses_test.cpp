@@ -1,0 +1,96 @@
+// W1-W5 property tests: generated models of every kind users download, loaded with no options,
+// checked against the generator's ground truth (tools/wild_models). The corpus report
+// (wild_report) runs the same checks over many more seeds.
+#include "support/temporary_folder.hpp"
+#include "wild_models/wild_checks.hpp"
+
+#include "scene/mesh_loader.hpp"
+#include "scene/scene_request.hpp"
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+using namespace sandglass;
+using namespace sandglass::wild;
+
+namespace {
+
+// Checks `count` models of a class from `firstSeed` on, alternating OBJ and STL files.
+void requireClassPasses(ModelClass modelClass, std::uint64_t firstSeed, int count, const CheckSettings& settings) {
+    TemporaryFolder folder;
+    for (int i = 0; i < count; ++i) {
+        const std::uint64_t seed = firstSeed + std::uint64_t(i);
+        const std::string file = std::string(className(modelClass)) + "-" + std::to_string(seed) + (i % 2 ? ".stl" : ".obj");
+        CAPTURE(file);
+        const ModelCheck check = checkModel(generate(modelClass, seed), folder / file, settings);
+        CHECK_MESSAGE(check.passed(), check.failure);
+    }
+}
+
+CheckSettings withoutDrain() {
+    CheckSettings settings;
+    settings.drain = false;
+    return settings;
+}
+
+} // namespace
+
+TEST_CASE("W2, W3: hourglasses with thick glass in a frame find their sand space, up axis and fill without options") {
+    requireClassPasses(ModelClass::ThickFramed, 1000, 8, withoutDrain());
+}
+
+TEST_CASE("W2, W3: single-wall glasses, closed or open and closed by plates with gaps, find their sand space") {
+    requireClassPasses(ModelClass::SingleWall, 2000, 8, withoutDrain());
+}
+
+TEST_CASE("W2, W3: two open bulbs closed by stacked plates are one hourglass") {
+    requireClassPasses(ModelClass::OpenBulbsPlates, 3000, 8, withoutDrain());
+}
+
+TEST_CASE("W1, W3: a one-object game asset: its modelled sand starts in the upper bulb, its frame holds none") {
+    requireClassPasses(ModelClass::OneObjectAsset, 4000, 8, withoutDrain());
+}
+
+TEST_CASE("W2, W3: glass cones with a neck under a cell beside a post: the neck opens, the post holds no sand") {
+    requireClassPasses(ModelClass::ConesRingsPost, 5000, 8, withoutDrain());
+}
+
+TEST_CASE("W5: an open funnel says it is no hourglass and fills inside its cone") {
+    requireClassPasses(ModelClass::Funnel, 6000, 6, withoutDrain());
+}
+
+TEST_CASE("W4: open characters modelled Z-up or Y-up stand as solid statues inside their body") {
+    requireClassPasses(ModelClass::Character, 7000, 8, withoutDrain());
+}
+
+TEST_CASE("W4: parts thinner than a cell get a refusal that names the resolution that holds them") {
+    requireClassPasses(ModelClass::Keyboard, 8000, 3, withoutDrain());
+}
+
+TEST_CASE("W3: every kind of hourglass drains with no grain ever outside the glass, and all of it ends below the neck") {
+    CheckSettings settings;
+    settings.resolution = 40;
+    for (ModelClass modelClass : {ModelClass::ThickFramed, ModelClass::SingleWall, ModelClass::OpenBulbsPlates,
+                                  ModelClass::OneObjectAsset, ModelClass::ConesRingsPost}) {
+        CAPTURE(className(modelClass));
+        requireClassPasses(modelClass, 9000, 2, settings);
+    }
+}
+
+TEST_CASE("W4: an open character fills with at least as many cells as the majority vote asked for by --robust") {
+    TemporaryFolder folder;
+    for (std::uint64_t seed = 7100; seed < 7104; ++seed) {
+        const WildModel model = generate(ModelClass::Character, seed);
+        const std::filesystem::path file = folder / ("character-" + std::to_string(seed) + ".obj");
+        writeObj(model, file);
+        SceneSettings settings;
+        settings.request.kind = sandcore::SceneKind::Sculpture;
+        settings.request.modelPath = file.string();
+        const BuiltScene automatic = buildSceneWithReport(settings);
+        settings.request.robust = true;
+        const BuiltScene vote = buildSceneWithReport(settings);
+        CHECK(automatic.sandSpaceCells > 0);
+        CHECK(automatic.sandSpaceCells >= vote.sandSpaceCells);
+    }
+}
