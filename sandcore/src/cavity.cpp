@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace sandcore {
@@ -124,10 +125,11 @@ TriangleMesh toGridSpace(const TriangleMesh& mesh, const VoxelPlacement& p) {
     return grid;
 }
 
-void appendSurfaceCells(const TriangleMesh& gridMesh, Int3 size, std::vector<std::uint32_t>& cells) {
-    const std::size_t first = cells.size();
+void forEachTouchedCell(const TriangleMesh& gridMesh, Int3 size,
+                        const std::function<void(std::size_t triangle, std::uint32_t cell)>& visit) {
     const int limits[3] = {size.x, size.y, size.z};
-    for (const auto& t : gridMesh.triangles) {
+    for (std::size_t n = 0; n < gridMesh.triangles.size(); ++n) {
+        const auto& t = gridMesh.triangles[n];
         Vec corner[3];
         for (int i = 0; i < 3; ++i) {
             const Vec3 v = gridMesh.vertices[t[std::size_t(i)]];
@@ -145,9 +147,14 @@ void appendSurfaceCells(const TriangleMesh& gridMesh, Int3 size, std::vector<std
                 for (int x = lo[0]; x <= hi[0]; ++x) {
                     const Vec centre{x + 0.5, y + 0.5, z + 0.5};
                     if (triangleTouchesBox(minus(corner[0], centre), minus(corner[1], centre), minus(corner[2], centre), 0.5))
-                        cells.push_back(std::uint32_t(std::size_t(x) + std::size_t(size.x) * (std::size_t(z) + std::size_t(size.z) * std::size_t(y))));
+                        visit(n, std::uint32_t(std::size_t(x) + std::size_t(size.x) * (std::size_t(z) + std::size_t(size.z) * std::size_t(y))));
                 }
     }
+}
+
+void appendSurfaceCells(const TriangleMesh& gridMesh, Int3 size, std::vector<std::uint32_t>& cells) {
+    const std::size_t first = cells.size();
+    forEachTouchedCell(gridMesh, size, [&](std::size_t, std::uint32_t cell) { cells.push_back(cell); });
     std::sort(cells.begin() + std::ptrdiff_t(first), cells.end());
     cells.erase(std::unique(cells.begin() + std::ptrdiff_t(first), cells.end()), cells.end());
 }

@@ -54,8 +54,16 @@ InsideMask trimmedToInsideLayers(const InsideMask& mask) {
 }
 
 // The cells of a lower bulb (its top layer the neck) that the heap under the neck reaches: a pile
-// grows as a pyramid of 45-degree faces (the rules slip one cell aside, or diagonally, per cell
-// down), so sand beyond it in a wide, flat bulb would back up into the neck before the bulb is full.
+// stands at 45 degrees (the rules slip one cell aside, or diagonally, per cell down), so sand
+// beyond it in a wide, flat bulb would back up into the neck before the bulb is full. Its
+// footprint is an octagon: the square of the slips with its corners cut, as piles that spread
+// over a curved floor leave them (a square fill jammed, a round one fell short of the bulb).
+bool reachedByHeap(double dx, double dz, int depth) {
+    const double ax = std::abs(dx), az = std::abs(dz), d = double(depth);
+    // Between the square the slips allow and the cone a pile on a curved floor fills.
+    return ax <= d && az <= d && ax + az <= 1.5 * d;
+}
+
 std::int64_t heapCapacity(const InsideMask& lower) {
     const int neck = lower.size.y - 1;
     double cx = 0.0, cz = 0.0;
@@ -70,7 +78,7 @@ std::int64_t heapCapacity(const InsideMask& lower) {
     for (int y = 0; y < neck; ++y)
         for (int z = 0; z < lower.size.z; ++z)
             for (int x = 0; x < lower.size.x; ++x)
-                if (lower.at(x, y, z) && std::max(std::abs(x - cx), std::abs(z - cz)) <= double(neck - y)) ++cells;
+                if (lower.at(x, y, z) && reachedByHeap(x - cx, z - cz, neck - y)) ++cells;
     return cells;
 }
 

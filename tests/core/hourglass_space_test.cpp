@@ -19,13 +19,15 @@ namespace {
 // reach the axis: a single-wall glass.
 TriangleMesh lathe(const std::vector<ProfilePoint>& profile) { return makeLatheMesh(profile, 48); }
 
-// A single-wall hourglass glass, open at both ends: bulbs of radius 1 over a neck of `neck`.
+// A single-wall hourglass glass, open at both ends: bulbs of radius 0.9 joined by a neck tube of
+// radius `neck`, 0.2 long.
 TriangleMesh openGlass(float neck) {
     std::vector<ProfilePoint> profile;
-    for (int i = 0; i <= 16; ++i) {
-        const float t = float(i) / 16.0f;  // 0 bottom rim .. 1 top rim
-        const float s = std::abs(2.0f * t - 1.0f); // 1 at the rims, 0 at the neck
-        profile.push_back({neck + (0.9f - neck) * std::sqrt(s), 0.1f + 2.0f * t});
+    for (int i = 0; i <= 20; ++i) {
+        const float t = float(i) / 20.0f;           // 0 bottom rim .. 1 top rim
+        const float s = std::abs(2.0f * t - 1.0f);  // 1 at the rims, 0 at the neck
+        const float flare = std::max(0.0f, (s - 0.1f) / 0.9f);
+        profile.push_back({neck + (0.9f - neck) * std::sqrt(flare), 0.1f + 2.0f * t});
     }
     return lathe(profile);
 }

@@ -8,6 +8,7 @@
 #include "sandcore/voxelizer.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace sandcore {
@@ -32,6 +33,11 @@ TriangleMesh toGridSpace(const TriangleMesh& mesh, const VoxelPlacement& placeme
 /// Every cell of a `size` grid that a triangle of the grid-space mesh touches (closed cell
 /// boxes, separating-axis test), so a wall thinner than a cell still seals what it encloses.
 InsideMask surfaceCells(const TriangleMesh& gridMesh, Int3 size);
+
+/// Calls visit(triangle index, cell index) for every cell each triangle of the grid-space mesh
+/// touches, as surfaceCells() decides it.
+void forEachTouchedCell(const TriangleMesh& gridMesh, Int3 size,
+                        const std::function<void(std::size_t triangle, std::uint32_t cell)>& visit);
 
 /// The cells surfaceCells() marks, appended to `cells` as ascending indices (InsideMask's layout).
 void appendSurfaceCells(const TriangleMesh& gridMesh, Int3 size, std::vector<std::uint32_t>& cells);
