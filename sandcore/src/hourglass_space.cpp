@@ -5,8 +5,8 @@
 #include "wall_cavities.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
+#include <future>
+#include <iterator>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -158,58 +158,83 @@ void findNeck(Candidate& candidate, const Grid& grid) {
     }
 }
 
+// Where a space lies along each column across an axis: its lowest and highest layer there.
+struct ColumnSpans {
+    std::array<std::vector<int>, 3> low, high; // per axis, per column of the plane across it
+    std::array<double, 3> centreU{}, centreV{};  // the space's centre in each plane
+};
+
+// The plane across an axis: its two axes.
+std::array<int, 2> planeOf(int axis) { return {axis == 0 ? 1 : 0, axis == 2 ? 1 : 2}; }
+
+ColumnSpans columnSpansOf(const CellList& cells, const Grid& grid) {
+    ColumnSpans spans;
+    for (int axis = 0; axis < 3; ++axis) {
+        const auto [u, v] = planeOf(axis);
+        const std::size_t plane = std::size_t(grid.length(u)) * std::size_t(grid.length(v));
+        spans.low[std::size_t(axis)].assign(plane, INT32_MAX);
+        spans.high[std::size_t(axis)].assign(plane, -1);
+    }
+    for (std::uint32_t n : cells) {
+        const std::array<int, 3> c = grid.coordinates(n);
+        for (int axis = 0; axis < 3; ++axis) {
+            const auto [u, v] = planeOf(axis);
+            const std::size_t column = std::size_t(c[std::size_t(u)]) + std::size_t(grid.length(u)) * std::size_t(c[std::size_t(v)]);
+            int& low = spans.low[std::size_t(axis)][column];
+            int& high = spans.high[std::size_t(axis)][column];
+            low = std::min(low, c[std::size_t(axis)]);
+            high = std::max(high, c[std::size_t(axis)]);
+            spans.centreU[std::size_t(axis)] += c[std::size_t(u)];
+            spans.centreV[std::size_t(axis)] += c[std::size_t(v)];
+        }
+    }
+    for (std::size_t a = 0; a < 3; ++a) spans.centreU[a] /= double(cells.size()), spans.centreV[a] /= double(cells.size());
+    return spans;
+}
+
 // W2: two bulbs that a wall under kMaxNeckWall cells separates along an axis (a neck narrower
-// than a cell, sealed by its own surface cells) joined through one column of cells.
-bool joinAcrossNeck(const CellList& a, const CellList& b, const Grid& grid, Candidate& joined) {
+// than a cell, sealed by its own surface cells) joined through one column of cells: the column
+// where they come closest, nearest their common centre.
+bool joinAcrossNeck(const CellList& a, const ColumnSpans& spansA, const CellList& b, const ColumnSpans& spansB,
+                    const Grid& grid, Candidate& joined) {
     struct Best { int gap = kMaxNeckWall + 1; int axis = -1; std::array<int, 3> from{}; double offCentre = 0.0; } best;
     for (int axis = 0; axis < 3; ++axis) {
-        const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2; // the plane across the axis
-        const int width = grid.length(u), depth = grid.length(v);
-        const std::size_t plane = std::size_t(width) * std::size_t(depth);
-        std::vector<int> lowA(plane, INT32_MAX), highA(plane, -1), lowB(plane, INT32_MAX), highB(plane, -1);
-        double centreU = 0.0, centreV = 0.0;
-        auto note = [&](const CellList& cells, std::vector<int>& low, std::vector<int>& high) {
-            for (std::uint32_t n : cells) {
-                const std::array<int, 3> c = grid.coordinates(n);
-                const std::size_t column = std::size_t(c[std::size_t(u)]) + std::size_t(width) * std::size_t(c[std::size_t(v)]);
-                low[column] = std::min(low[column], c[std::size_t(axis)]);
-                high[column] = std::max(high[column], c[std::size_t(axis)]);
-                centreU += c[std::size_t(u)];
-                centreV += c[std::size_t(v)];
-            }
-        };
-        note(a, lowA, highA);
-        note(b, lowB, highB);
-        centreU /= double(a.size() + b.size());
-        centreV /= double(a.size() + b.size());
-        for (std::size_t column = 0; column < plane; ++column) {
+        const auto [u, v] = planeOf(axis);
+        const auto width = std::size_t(grid.length(u));
+        const std::vector<int>& lowA = spansA.low[std::size_t(axis)];
+        const std::vector<int>& highA = spansA.high[std::size_t(axis)];
+        const std::vector<int>& lowB = spansB.low[std::size_t(axis)];
+        const std::vector<int>& highB = spansB.high[std::size_t(axis)];
+        const double centreU = 0.5 * (spansA.centreU[std::size_t(axis)] + spansB.centreU[std::size_t(axis)]);
+        const double centreV = 0.5 * (spansA.centreV[std::size_t(axis)] + spansB.centreV[std::size_t(axis)]);
+        for (std::size_t column = 0; column < lowA.size(); ++column) {
             if (highA[column] < 0 || highB[column] < 0) continue;
             int gap = 0, start = 0;
             if (highB[column] < lowA[column]) gap = lowA[column] - highB[column] - 1, start = highB[column] + 1;
             else if (highA[column] < lowB[column]) gap = lowB[column] - highA[column] - 1, start = highA[column] + 1;
             else continue;
             if (gap < 1) continue;
-            const double du = double(column % std::size_t(width)) - centreU, dv = double(column / std::size_t(width)) - centreV;
+            const double du = double(column % width) - centreU, dv = double(column / width) - centreV;
             const double offCentre = du * du + dv * dv;
             if (gap < best.gap || (gap == best.gap && offCentre < best.offCentre)) {
                 best.gap = gap;
                 best.axis = axis;
                 best.offCentre = offCentre;
                 best.from[std::size_t(axis)] = start;
-                best.from[std::size_t(u)] = int(column % std::size_t(width));
-                best.from[std::size_t(v)] = int(column / std::size_t(width));
+                best.from[std::size_t(u)] = int(column % width);
+                best.from[std::size_t(v)] = int(column / width);
             }
         }
     }
     if (best.axis < 0) return false;
-    joined.cells = a;
-    joined.cells.insert(joined.cells.end(), b.begin(), b.end());
     std::array<int, 3> c = best.from;
-    for (int i = 0; i < best.gap; ++i, ++c[std::size_t(best.axis)]) {
-        joined.cells.push_back(grid.index(c));
-        joined.joint.push_back(grid.index(c));
-    }
-    std::sort(joined.cells.begin(), joined.cells.end());
+    for (int i = 0; i < best.gap; ++i, ++c[std::size_t(best.axis)]) joined.joint.push_back(grid.index(c));
+    std::sort(joined.joint.begin(), joined.joint.end());
+    CellList bulbs;
+    bulbs.reserve(a.size() + b.size());
+    std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(bulbs));
+    joined.cells.reserve(bulbs.size() + joined.joint.size());
+    std::merge(bulbs.begin(), bulbs.end(), joined.joint.begin(), joined.joint.end(), std::back_inserter(joined.cells));
     joined.neckOpened = true;
     joined.jointAxis = best.axis;
     joined.jointLow = best.from[std::size_t(best.axis)];
@@ -222,12 +247,15 @@ void addCandidates(std::vector<CellList> spaces, int source, const Grid& grid, s
     std::erase_if(spaces, [](const CellList& c) { return c.size() < kMinSpaceCells; });
     std::stable_sort(spaces.begin(), spaces.end(), [](const CellList& p, const CellList& q) { return p.size() > q.size(); });
     const std::size_t largest = std::min<std::size_t>(spaces.size(), 4);
+    std::vector<ColumnSpans> spans(largest);
     for (std::size_t i = 0; i < largest; ++i)
         for (std::size_t j = i + 1; j < largest; ++j) {
             if (double(spaces[j].size()) < kBulbShare * double(spaces[i].size())) continue;
+            if (spans[i].low[0].empty()) spans[i] = columnSpansOf(spaces[i], grid);
+            if (spans[j].low[0].empty()) spans[j] = columnSpansOf(spaces[j], grid);
             Candidate joined;
             joined.source = source;
-            if (joinAcrossNeck(spaces[i], spaces[j], grid, joined)) out.push_back(std::move(joined));
+            if (joinAcrossNeck(spaces[i], spans[i], spaces[j], spans[j], grid, joined)) out.push_back(std::move(joined));
         }
     for (CellList& cells : spaces) {
         Candidate candidate;
@@ -239,20 +267,25 @@ void addCandidates(std::vector<CellList> spaces, int source, const Grid& grid, s
 
 // Of each source the largest space with a neck; a later source (wider gaps closed) replaces an
 // earlier one only when its space is clearly larger (a leak sealed, not a few cells regained).
-const Candidate* bestHourglass(const std::vector<Candidate>& candidates) {
+// Necks are looked for from the largest space of a source down, until one has a neck.
+const Candidate* bestHourglass(std::vector<Candidate>& candidates, const Grid& grid) {
     const Candidate* best = nullptr;
-    const Candidate* bestOfSource = nullptr;
-    auto settle = [&] {
-        if (bestOfSource && (!best || double(bestOfSource->cells.size()) > kLargerSpace * double(best->cells.size())))
-            best = bestOfSource;
-        bestOfSource = nullptr;
-    };
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-        if (i > 0 && candidates[i].source != candidates[i - 1].source) settle();
-        const Candidate& c = candidates[i];
-        if (c.neckAxis >= 0 && (!bestOfSource || c.cells.size() > bestOfSource->cells.size())) bestOfSource = &c;
+    for (std::size_t first = 0; first < candidates.size();) {
+        std::size_t end = first;
+        while (end < candidates.size() && candidates[end].source == candidates[first].source) ++end;
+        std::vector<Candidate*> bySize;
+        for (std::size_t i = first; i < end; ++i) bySize.push_back(&candidates[i]);
+        std::stable_sort(bySize.begin(), bySize.end(), [](const Candidate* p, const Candidate* q) { return p->cells.size() > q->cells.size(); });
+        for (Candidate* c : bySize) {
+            if (best && double(c->cells.size()) <= kLargerSpace * double(best->cells.size())) break;
+            findNeck(*c, grid);
+            if (c->neckAxis >= 0) {
+                best = c;
+                break;
+            }
+        }
+        first = end;
     }
-    settle();
     return best;
 }
 
@@ -323,10 +356,14 @@ void addCentresOnTheSpaceSide(CellList& space, const CellList& joint, const Mask
                 if (segmentCrosses(centre, axis, step, mesh, mesh.triangles[triangle])) crossed[cell] |= std::uint8_t(1u << d);
             }
         });
+    CellList added;
     for (std::size_t n = 0; n < grid.cells(); ++n)
         if ((towards[n] & ~crossed[n]) && !std::binary_search(joint.begin(), joint.end(), std::uint32_t(n)))
-            space.push_back(std::uint32_t(n));
-    std::sort(space.begin(), space.end());
+            added.push_back(std::uint32_t(n));
+    CellList merged;
+    merged.reserve(space.size() + added.size());
+    std::merge(space.begin(), space.end(), added.begin(), added.end(), std::back_inserter(merged));
+    space = std::move(merged);
 }
 
 InsideMask maskOf(const CellList& cells, Int3 size) {
@@ -424,15 +461,14 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
         addCandidates(componentsOf(free, grid.size), -1, grid, candidates);
     }
     const std::size_t solidCandidates = candidates.size();
+    // Each closing is independent of the others: with threads to spare they run side by side.
+    std::vector<std::future<std::vector<CellList>>> closings;
     for (int closing = 0; closing <= settings.maxClosingCells; ++closing)
-        addCandidates(enclosedRegions(walls, grid.size, closing), closing, grid, candidates);
-    for (Candidate& c : candidates) findNeck(c, grid);
-
-    const Candidate* chosen = bestHourglass(candidates);
-    if (std::getenv("SANDGLASS_DEBUG_SPACE"))
-        for (const Candidate& c : candidates)
-            std::fprintf(stderr, "candidate source %d cells %zu opened %d neckAxis %d ratio %.3f%s\n", c.source, c.cells.size(),
-                         int(c.neckOpened), c.neckAxis, c.neck.ratio, &c == chosen ? " CHOSEN" : "");
+        closings.push_back(std::async(threads > 1 ? std::launch::async : std::launch::deferred,
+                                      [&walls, size = grid.size, closing] { return enclosedRegions(walls, size, closing); }));
+    for (int closing = 0; closing <= settings.maxClosingCells; ++closing)
+        addCandidates(closings[std::size_t(closing)].get(), closing, grid, candidates);
+    const Candidate* chosen = bestHourglass(candidates, grid);
     int axis = 1;
     bool plus = true;
     if (chosen) {
@@ -475,9 +511,7 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
             std::vector<TriangleMesh> wallMeshes;
             for (std::size_t s = 0; s < shells.size(); ++s)
                 if (out.roles[s] != ShellRole::Sand) wallMeshes.push_back(gridMeshes[s]);
-            CellList joint = chosen->joint;
-            std::sort(joint.begin(), joint.end());
-            addCentresOnTheSpaceSide(cells, joint, walls, wallMeshes, grid);
+            addCentresOnTheSpaceSide(cells, chosen->joint, walls, wallMeshes, grid);
         }
         out.space = maskOf(cells, grid.size);
     } else if (!open.empty()) {

@@ -22,11 +22,45 @@ struct Neighbours {
         if (y > 0) visit(n - layer);
         if (y + 1 < std::size_t(size.y)) visit(n + layer);
     }
-    bool onBorder(std::size_t n) const {
-        const std::size_t x = n % row, z = (n / row) % std::size_t(size.z), y = n / layer;
-        return x == 0 || z == 0 || y == 0 || x + 1 == row || z + 1 == std::size_t(size.z) || y + 1 == std::size_t(size.y);
-    }
 };
+
+// Calls visit(first cell) for every line of cells along `axis` (0 = x, 1 = y, 2 = z).
+template <class Visit> void forEachLine(Int3 size, int axis, Visit&& visit) {
+    const std::size_t row = std::size_t(size.x), layer = row * std::size_t(size.z);
+    for (int y = 0; y < (axis == 1 ? 1 : size.y); ++y)
+        for (int z = 0; z < (axis == 2 ? 1 : size.z); ++z)
+            for (int x = 0; x < (axis == 0 ? 1 : size.x); ++x) visit(std::size_t(x) + row * std::size_t(z) + layer * std::size_t(y));
+}
+
+// Marks with `mark` every cell 6-connected to seed through cells labelled `from`. A scanline
+// fill: each popped cell grows to its whole run along x, and the run queues one cell per run it
+// touches in the four rows beside it, so the queue holds a few entries per run, not six per cell.
+template <class Label>
+void fillRuns(std::vector<Label>& label, Int3 size, std::size_t seed, Label from, Label mark, std::vector<std::uint32_t>& queue) {
+    const std::size_t width = std::size_t(size.x), layer = width * std::size_t(size.z);
+    queue.assign(1, std::uint32_t(seed));
+    while (!queue.empty()) {
+        const std::size_t n = queue.back();
+        queue.pop_back();
+        if (label[n] != from) continue;
+        const std::size_t rowStart = n - n % width;
+        std::size_t low = n, high = n;
+        while (low > rowStart && label[low - 1] == from) --low;
+        while (high + 1 < rowStart + width && label[high + 1] == from) ++high;
+        std::fill(label.begin() + std::ptrdiff_t(low), label.begin() + std::ptrdiff_t(high + 1), mark);
+        const std::size_t row = rowStart / width;
+        const std::size_t z = row % std::size_t(size.z), y = row / std::size_t(size.z);
+        auto pushRuns = [&](bool inGrid, std::size_t offsetLow) {
+            if (!inGrid) return;
+            for (std::size_t m = offsetLow; m <= offsetLow + (high - low); ++m)
+                if (label[m] == from && (m == offsetLow || label[m - 1] != from)) queue.push_back(std::uint32_t(m));
+        };
+        pushRuns(z > 0, low - width);
+        pushRuns(z + 1 < std::size_t(size.z), low + width);
+        pushRuns(y > 0, low - layer);
+        pushRuns(y + 1 < std::size_t(size.y), low + layer);
+    }
+}
 
 struct Groups {
     std::vector<std::int32_t> parent;
@@ -52,15 +86,13 @@ constexpr std::int32_t kFree = -1, kWall = -2, kOutside = -3;
 // Three passes of a running distance along x, y and z give the cube.
 MaskCells grownBy(const MaskCells& walls, Int3 size, int radius) {
     MaskCells cells = walls;
-    const std::size_t strides[3] = {1, std::size_t(size.x) * std::size_t(size.z), std::size_t(size.x)};
     const int lengths[3] = {size.x, size.y, size.z};
-    const std::size_t total = cells.size();
+    const std::size_t strides[3] = {1, std::size_t(size.x) * std::size_t(size.z), std::size_t(size.x)};
     for (int axis = 0; axis < 3; ++axis) {
         const std::size_t stride = strides[axis];
         const auto length = std::size_t(lengths[axis]);
-        MaskCells out(total, 0);
-        for (std::size_t start = 0; start < total; ++start) {
-            if ((start / stride) % length != 0) continue; // not the first cell of a line along axis
+        MaskCells out(cells.size(), 0);
+        forEachLine(size, axis, [&](std::size_t start) {
             // Distance to the nearest wall before and after each cell of the line, capped.
             int sinceWall = radius + 1;
             for (std::size_t i = 0; i < length; ++i) {
@@ -74,12 +106,11 @@ MaskCells grownBy(const MaskCells& walls, Int3 size, int radius) {
                 sinceWall = cells[n] ? 0 : std::min(sinceWall + 1, radius + 1);
                 if (sinceWall <= radius) out[n] = 1;
             }
-        }
+        });
         cells = std::move(out);
     }
     return cells;
 }
-
 
 std::vector<CellList> enclosedRegions(const MaskCells& walls, Int3 size, int closing) {
     const Neighbours around(size);
@@ -88,35 +119,34 @@ std::vector<CellList> enclosedRegions(const MaskCells& walls, Int3 size, int clo
     for (std::size_t n = 0; n < walls.size(); ++n)
         if (blocked[n]) label[n] = kWall;
     std::vector<std::uint32_t> queue;
-    auto flood = [&](std::size_t seed, std::int32_t mark) {
-        label[seed] = mark;
-        queue.assign(1, std::uint32_t(seed));
-        while (!queue.empty()) {
-            const std::size_t n = queue.back();
-            queue.pop_back();
-            around.forEach(n, [&](std::size_t m) {
-                if (label[m] == kFree) {
-                    label[m] = mark;
-                    queue.push_back(std::uint32_t(m));
-                }
-            });
-        }
-    };
-    for (std::size_t n = 0; n < walls.size(); ++n)
-        if (label[n] == kFree && around.onBorder(n)) flood(n, kOutside);
+    auto flood = [&](std::size_t seed, std::int32_t mark) { fillRuns(label, size, seed, kFree, mark, queue); };
+    // The outside: every free cell reachable from the grid's six faces.
+    for (int axis = 0; axis < 3; ++axis) {
+        const int lengths[3] = {size.x, size.y, size.z};
+        const std::size_t strides[3] = {1, std::size_t(size.x) * std::size_t(size.z), std::size_t(size.x)};
+        forEachLine(size, axis, [&](std::size_t start) {
+            for (std::size_t end : {start, start + std::size_t(lengths[axis] - 1) * strides[axis]})
+                if (label[end] == kFree) flood(end, kOutside);
+        });
+    }
     Groups groups;
     for (std::size_t n = 0; n < walls.size(); ++n)
         if (label[n] == kFree) flood(n, groups.add());
     if (closing > 0) {
         // Grow back into the cells the grown walls took from the free space, one ring a round.
-        std::vector<std::uint32_t> frontier, next;
-        for (std::size_t n = 0; n < walls.size(); ++n)
-            if (label[n] != kWall) {
-                bool edge = false;
-                around.forEach(n, [&](std::size_t m) { edge = edge || (label[m] == kWall && !walls[m]); });
-                if (edge) frontier.push_back(std::uint32_t(n));
-            }
+        // The first frontier: the labelled cells beside the band the grown walls took.
+        std::vector<std::uint32_t> frontier, next, grownBack;
         std::vector<std::uint8_t> takenThisRound(walls.size(), 0);
+        for (std::size_t n = 0; n < walls.size(); ++n) {
+            if (label[n] != kWall || walls[n]) continue;
+            around.forEach(n, [&](std::size_t m) {
+                if (label[m] != kWall && !takenThisRound[m]) {
+                    takenThisRound[m] = 1;
+                    frontier.push_back(std::uint32_t(m));
+                }
+            });
+        }
+        for (std::uint32_t m : frontier) takenThisRound[m] = 0;
         // Grown as a cube, the walls took every cell within `closing` steps along each axis: in
         // face steps that is up to three times as many.
         for (int round = 0; round < 3 * closing && !frontier.empty(); ++round) {
@@ -137,10 +167,11 @@ std::vector<CellList> enclosedRegions(const MaskCells& walls, Int3 size, int clo
                 });
             }
             for (std::uint32_t m : next) takenThisRound[m] = 0;
+            grownBack.insert(grownBack.end(), next.begin(), next.end());
             frontier.swap(next);
         }
-        // Cavities that touch once grown back are one space.
-        for (std::size_t n = 0; n < walls.size(); ++n) {
+        // Cavities that touch once grown back are one space; before, the band kept them apart.
+        for (std::uint32_t n : grownBack) {
             if (label[n] < 0) continue;
             around.forEach(n, [&](std::size_t m) {
                 if (label[m] >= 0) groups.join(label[n], label[m]);
