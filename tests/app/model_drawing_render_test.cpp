@@ -121,8 +121,11 @@ TEST_CASE("render: the framed hourglass is drawn as modelled, an opaque frame an
     CHECK(std::abs(plateOnWhite.r - plateOnBlack.r) <= 2);
     CHECK(std::abs(plateOnWhite.g - plateOnBlack.g) <= 2);
     CHECK(std::abs(plateOnWhite.b - plateOnBlack.b) <= 2);
+    // In the voxel hull's look no frame is drawn: where the plate was, at most the pale hull of
+    // the sand space's top cells (which reach the plate's lower face).
     const testing::Pixel plateAsVoxels = testing::pixelAt(voxels.image, voxels.topPlate.x, voxels.topPlate.y);
-    CHECK(brightness(plateAsVoxels) == 3 * 255);
+    CHECK(!wood(plateAsVoxels));
+    CHECK(brightness(plateAsVoxels) >= 3 * 220);
 
     // The sand inside both glass walls: its pixels stay sand coloured behind the near wall.
     REQUIRE(white.grainPixels > 100);
