@@ -53,32 +53,48 @@ InsideMask trimmedToInsideLayers(const InsideMask& mask) {
     return sliceLayers(mask, bottom, top);
 }
 
-// The cells of a lower bulb (its top layer the neck) that the heap under the neck reaches: a pile
-// stands at 45 degrees (the rules slip one cell aside, or diagonally, per cell down), so sand
-// beyond it in a wide, flat bulb would back up into the neck before the bulb is full. Its
-// footprint is an octagon: the square of the slips with its corners cut, as piles that spread
-// over a curved floor leave them (a square fill jammed, a round one fell short of the bulb).
-bool reachedByHeap(double dx, double dz, int depth) {
-    const double ax = std::abs(dx), az = std::abs(dz), d = double(depth);
-    // Between the square the slips allow and the cone a pile on a curved floor fills.
-    return ax <= d && az <= d && ax + az <= 1.5 * d;
-}
-
+// The cells of a lower bulb (its top layer the neck) that the heap under the neck fills before
+// the neck chokes: cells a falling grain can reach (one layer down and at most one cell aside in
+// x and z per step, R2's successors, through the bulb's own cells: a long neck tube delays the
+// spread) and that lie within an octagon widening one cell per layer below the neck's centre
+// (the square of the slips with its corners cut, as piles that spread over a curved floor
+// leave them). A square fill jammed some generated bulbs, a round one left some under 40% full.
 std::int64_t heapCapacity(const InsideMask& lower) {
     const int neck = lower.size.y - 1;
     double cx = 0.0, cz = 0.0;
-    std::int64_t neckCells = 0;
+    std::vector<std::uint32_t> layer, next;
     for (int z = 0; z < lower.size.z; ++z)
         for (int x = 0; x < lower.size.x; ++x)
-            if (lower.at(x, neck, z)) cx += x, cz += z, ++neckCells;
-    if (neckCells == 0) return 0;
-    cx /= double(neckCells);
-    cz /= double(neckCells);
+            if (lower.at(x, neck, z)) {
+                cx += x, cz += z;
+                layer.push_back(std::uint32_t(lower.indexOf(x, neck, z)));
+            }
+    if (layer.empty()) return 0;
+    cx /= double(layer.size());
+    cz /= double(layer.size());
+    std::vector<std::uint8_t> reached(lower.inside.size(), 0);
     std::int64_t cells = 0;
-    for (int y = 0; y < neck; ++y)
-        for (int z = 0; z < lower.size.z; ++z)
-            for (int x = 0; x < lower.size.x; ++x)
-                if (lower.at(x, y, z) && reachedByHeap(x - cx, z - cz, neck - y)) ++cells;
+    for (int y = neck; y > 0 && !layer.empty(); --y) {
+        next.clear();
+        const double depth = double(neck - (y - 1));
+        for (std::uint32_t n : layer) {
+            const int x = int(n % std::uint32_t(lower.size.x)), z = int((n / std::uint32_t(lower.size.x)) % std::uint32_t(lower.size.z));
+            for (int dz = -1; dz <= 1; ++dz)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int bx = x + dx, bz = z + dz;
+                    if (bx < 0 || bz < 0 || bx >= lower.size.x || bz >= lower.size.z || !lower.at(bx, y - 1, bz)) continue;
+                    const double ax = std::abs(bx - cx), az = std::abs(bz - cz);
+                    if (ax > depth || az > depth || ax + az > 1.5 * depth) continue;
+                    const std::size_t m = lower.indexOf(bx, y - 1, bz);
+                    if (!reached[m]) {
+                        reached[m] = 1;
+                        next.push_back(std::uint32_t(m));
+                    }
+                }
+        }
+        cells += std::int64_t(next.size());
+        layer.swap(next);
+    }
     return cells;
 }
 
