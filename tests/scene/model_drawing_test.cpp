@@ -2,10 +2,13 @@
 // quarter turns to the up axis, the shift into the scene's grids) is checked against the
 // voxelizer's cells: point by point for the turns, and for the bundled hourglasses by the
 // sand space (the cavity the scene holds) lying centred inside the drawn glass.
+#include "support/temporary_folder.hpp"
+
 #include "scene/model_drawing.hpp"
 #include "scene/scene_host.hpp"
 #include "scene/scene_request.hpp"
 
+#include "sandcore/mesh_shapes.hpp"
 #include "sandcore/scene.hpp"
 #include "sandcore/scenes.hpp"
 #include "sandcore/up_axis.hpp"
@@ -14,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <fstream>
 #include <string>
 
 using namespace sandglass;
@@ -171,4 +175,26 @@ TEST_CASE("model drawing: a loaded scene is drawn as modelled when its model fil
     host.adoptLoaded(host.scene().clone(), gone);
     CHECK(host.modelDrawing() == nullptr);
     CHECK(host.scene().grainCount() == grains);
+}
+
+TEST_CASE("model drawing: a face modelled twice, with either winding, is drawn once") {
+    TemporaryFolder folder;
+    std::ofstream obj(folder / "doubled.obj");
+    const sandcore::TriangleMesh box = sandcore::makeBoxMesh({0, 0, 0}, {1, 2, 1});
+    obj << "o glass\n";
+    for (const auto& v : box.vertices) obj << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
+    for (const auto& t : box.triangles) {
+        obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+        obj << "f " << t[0] + 1 << ' ' << t[2] + 1 << ' ' << t[1] + 1 << '\n'; // the other side
+    }
+    obj.close();
+    const std::vector<ModelPart> parts = loadModelParts((folder / "doubled.obj").string());
+    REQUIRE(parts.size() == 1);
+    CHECK(parts[0].mesh.triangles.size() == 24);
+    sandcore::VoxelizeSettings settings;
+    settings.resolution = 16;
+    const ModelToWorld toWorld{sandcore::placeInGrid(parts[0].mesh, settings), sandcore::UpAxis::PlusY, {0, 0, 0}, {}};
+    const ModelDrawing drawing = makeModelDrawing(parts, toWorld, 16.0f);
+    REQUIRE(drawing.parts.size() == 1);
+    CHECK(drawing.parts[0].vertices.size() == 12 * 3);
 }
