@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # What `cmake --install` puts where (GNU directories, docs/install.md):
 #   bin/sandglass                                  the program
 #   libexec/sandglass/sandglass-import             the model importer it starts (docs/shapes.md)

@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 in vec2 uv;
 uniform sampler2D draft;
 uniform float opacity;  // 0.5 over the release row so the sand under it stays visible

@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 // SPEC P5: the draft quad over the canvas rectangle; u runs along +x, v along +z.
 uniform mat4 viewProjection;
 uniform vec3 origin;  // world position of the canvas corner at column (0, 0), world units

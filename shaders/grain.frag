@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 // Points are flat; sprites and billboards are round grains with a soft shade toward the rim
 // (the thesis's shaded sprite texture, computed here instead of sampled).
 

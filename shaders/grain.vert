@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 // One sand grain per instance; gl_VertexID picks the sub-grain (thesis §3.8 "Scribble") and,
 // for quads, the corner. The CPU supplies per grain its position, its estimated normal and
 // whether it is inner (inner grains are left out of the instances); the sub-grain offsets,

@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 // SPEC V8: one sand grain per instance, as the GPU keeps it between frames (grain_gpu_store.hpp):
 // its cell, grid and last move, uploaded only when it moves. The display position is worked out
 // here exactly as sandcore::grainDisplayPosition does (R8): (world cell + 1/2 + jitter + the

@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 // Faint glass: nearly clear where the wall faces the camera, denser at grazing angles (a
 // cheap Fresnel look), so the silhouette of the vessel reads without hiding the sand.
 in float facing;

@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 // The glass vessel (SPEC V6) and the canvas outline.
 layout(location = 0) in vec3 position;  // world units
 layout(location = 1) in vec3 normal;    // unit, into the wall; zero for outline lines

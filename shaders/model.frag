@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 // Frame and static parts: opaque, lit by the light near the camera and a sky from above
 // (two-sided, so a model with inconsistent winding still shades). Glass: nearly clear where it faces the eye, with a
 // Schlick Fresnel rim at grazing angles and a highlight, so both walls read without hiding the

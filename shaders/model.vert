@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 // A model drawn as modelled (SPEC S10): its parts' own triangles with smooth normals.
 layout(location = 0) in vec3 position; // world units
 layout(location = 1) in vec3 normal;   // unit; its sign follows the triangle's winding

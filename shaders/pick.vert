@@ -1,4 +1,5 @@
 #version 330 core
+// SPDX-License-Identifier: MIT
 // SPEC P1: one quad per canvas column (instance = column index), made from gl_VertexID, so
 // picking needs no vertex buffer. The id goes to the fragment shader unchanged.
 uniform mat4 viewProjection;

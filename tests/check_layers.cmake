@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Fails when a source file includes a header of a layer above its own, a third-party header its
 # layer must not see, or a path with "..". Run as a test: cmake -DSOURCE_DIR=... -P check_layers.cmake
 # The compiler already refuses most wrong includes (a layer links only the layers below it); this

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Fails when a comment in the code names a requirement tag (R5, S3, PH2, ...) that
 # docs/requirements.md does not list, so every tag a reader meets is explained there.
 # Run as a test: cmake -DSOURCE_DIR=... -P check_requirement_tags.cmake

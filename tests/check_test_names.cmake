@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Fails when a test source does not follow the one naming scheme, <subject>_test.cpp.
 # Run as a test: cmake -DSOURCE_DIR=... -P check_test_names.cmake
 file(GLOB_RECURSE sources "${SOURCE_DIR}/tests/*.cpp")

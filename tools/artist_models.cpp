@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "artist_models.hpp"
 
 #include "sandcore/mesh_shapes.hpp"

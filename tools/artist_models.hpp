@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Hourglass models as 3D artists make them (SPEC S7-S9): glass with wall thickness, frames of
 // plates and pillars as separate named objects with MTL colours, and a one-file binary STL with Z up.

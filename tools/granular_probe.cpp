@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Measures the granular level from the command line while it is being tuned: the angle of a
 // poured cone in 16 directions, the fall time, the discharge through hourglass necks and the
 // cost against classic. Not part of the product; the bench report has the final figures.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Writes the bundled draft images for the canvas (models/draft_*.png|jpg): simple, bold
 // pictures that read well when drawn in sand. The images are committed; developers rerun this
 // after changing a picture:

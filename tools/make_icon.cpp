@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Writes desktop/sandglass.svg, the program's icon: a framed hourglass, glass with its sand
 // half run through, drawn on a 256 x 256 canvas. The committed file comes from here:
 //   cmake --build --preset release --target make_icon && build/release/tools/make_icon desktop/sandglass.svg

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Writes the bundled models (models/*.obj) from sandcore's mesh shapes. The OBJ files are
 // committed, so users never need to run this; developers rerun it after changing a shape:
 //   cmake --build --preset release --target make_models && build/release/tools/make_models models

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Times SurfaceUpkeep::update on the million-grain hourglass drain as the renderer's GPU path
 // uses it (bits only, optionally the column normals), with the caches evicted before each step as
 // the frame drawn between two steps evicts them, and the stores of the moved places into a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Times the voxelizer on dense generated meshes (about 1.3 million triangles: an icosphere and a
 // torus), next to the step-by-step public functions it replaces and to the cavity search that
 // follows it for an hourglass model (surface cells and flood fill, S8):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/application.hpp"
 
 #include "app/frame_benchmark_runner.hpp"
@@ -126,6 +127,7 @@ Application::Application(ApplicationOptions options)
     : options_(std::move(options)), state_(options_.initial), window_(options_.window),
       imgui_(window_.handle(), window_.contentScale()), renderer_(shaderDirectory()),
       host_(startingHost(options_)), canvas_(shaderDirectory(), options_.undo) {
+    state_.statusLine = host_.modelNote(); // W5: what was done instead of an hourglass, from the first frame
     if (options_.offscreen) {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);

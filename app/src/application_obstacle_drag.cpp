@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Obstacles placed with the mouse: after "Place with the mouse" the next left drag on the
 // canvas floor outlines a box, and letting go adds it, with the height of the typed form.
 #include "app/application.hpp"

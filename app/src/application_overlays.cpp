@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The application's per-frame extras: the view's turn after a flip, the timer's readout, the
 // banners and brush ring drawn over the scene, and the statistics the panel shows.
 #include "app/application.hpp"

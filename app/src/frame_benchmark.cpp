@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/frame_benchmark.hpp"
 
 #include <cstdio>

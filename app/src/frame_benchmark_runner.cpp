@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/frame_benchmark_runner.hpp"
 
 #include "view/render/thread_cpu_clock.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/imgui_layer.hpp"
 
 #include <backends/imgui_impl_glfw.h>

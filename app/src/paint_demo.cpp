@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/paint_demo.hpp"
 
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/remembered_settings.hpp"
 
 #include "scene/file_io.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/user_settings.hpp"
 
 #include "scene/file_io.hpp"

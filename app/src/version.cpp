@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/version.hpp"
 
 #include "scene/data_paths.hpp"

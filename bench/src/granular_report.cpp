@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "bench/granular_report.hpp"
 
 #include "bench/plausibility.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "bench/plausibility.hpp"
 
 #include "sandcore/normals.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "bench/report_files.hpp"
 
 #include "scene/file_io.hpp"

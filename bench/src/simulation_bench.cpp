@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "bench/simulation_bench.hpp"
 
 #include "scene/hex.hpp"

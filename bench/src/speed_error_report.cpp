@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "bench/speed_error_report.hpp"
 
 #include "bench/granular_report.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "bench/throughput_bench.hpp"
 
 #include "scene/hex.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "bench/voxelization_bench.hpp"
 
 #include "scene/mesh_loader.hpp"

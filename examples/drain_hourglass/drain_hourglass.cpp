@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // An hourglass from a mesh, run until the sand has drained: the recipe an embedder follows.
 // A lathe profile becomes a closed surface of revolution, the voxelizer finds the cells inside
 // it, and makeHourglassScene splits them at the neck and fills the upper bulb. Prints the grains

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gui/build_progress_window.hpp"
 
 #include <imgui.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gui/help_window.hpp"
 
 #include "gui/panels.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gui/model_shape_panel.hpp"
 
 #include "scene/model_parts.hpp"

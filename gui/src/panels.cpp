@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gui/panels.hpp"
 
 #include "gui/model_shape_panel.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gui/quit_question.hpp"
 
 #include <imgui.h>

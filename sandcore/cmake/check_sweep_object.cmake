@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Fails the build when the BMI2 build of the sweep (sandcore/CMakeLists.txt) could mix with the
 # portable one: a global symbol other than the entry point would let the linker take that
 # build's copy of a function for the portable code (a CPU without BMI2 would fault there), and

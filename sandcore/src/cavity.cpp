@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/cavity.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/cell_grid.hpp"
 
 #include "layer_neighbourhood.hpp"

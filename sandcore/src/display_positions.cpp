@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/display_positions.hpp"
 
 #include "sandcore/counter_random.hpp"

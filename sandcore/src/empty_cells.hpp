@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which cells are EMPTY, as bits: 8 consecutive cells at once (on x86-64, where SSE2 is part of
 // the architecture, two compares of 4 cells and one mask, elsewhere 8 compares), and a whole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/grain_store.hpp"
 
 namespace sandcore {

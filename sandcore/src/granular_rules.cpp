@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "granular_rules.hpp"
 
 #include "empty_cells.hpp"

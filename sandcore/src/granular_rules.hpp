@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The granular rules (SPEC PH2, PH3), private to sandcore. Applied to a grain at (x, y, z):
 //

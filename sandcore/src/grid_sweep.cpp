@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "grid_sweep.hpp"
 
 #include "empty_cells.hpp"

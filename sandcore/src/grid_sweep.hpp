@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The bottom-up sweep of one grid (R3) over its awake grains (R5), shared by threads (R6).
 // Private to sandcore.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/hourglass_space.hpp"
 
 #include "sandcore/cavity.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/hourglass_split.hpp"
 
 #include <algorithm>

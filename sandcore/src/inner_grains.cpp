@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/inner_grains.hpp"
 
 namespace sandcore {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/inside_mask.hpp"
 
 #include "sandcore/cell_grid.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/large_pages.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The thesis's neighbourhood of a cell (§3.2, Abb. 13): the 3x3 columns within +-1 in x and z,
 // seen in the layer below (successors), the cell's own layer (near cells) and the layer above

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/layout_bits.hpp"
 
 #include <bit>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/mask_cleanup.hpp"
 
 #include "layer_neighbourhood.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "mesh_preparation.hpp"
 
 #include "welded_mesh.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What voxelize needs of a loaded mesh before casting rays, computed in parallel with little
 // fresh memory: the same welded vertices, kept triangles, outward orientation, closedness and

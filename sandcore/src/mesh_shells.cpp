@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/mesh_shells.hpp"
 
 #include <algorithm>

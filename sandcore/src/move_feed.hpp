@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The moves of one grid's sweep, handed while the sweep runs to the thread that writes
 // their grain records (one producer, one consumer, and once the producer has finished any number

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "neck_flow.hpp"
 
 #include <algorithm>

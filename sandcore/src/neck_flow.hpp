@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The hourglass's discharge in the granular level (SPEC PH4), private to sandcore.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/normals.hpp"
 
 #include "layer_neighbourhood.hpp"

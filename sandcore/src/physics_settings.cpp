@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/physics_settings.hpp"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/pile_slopes.hpp"
 
 #include "sandcore/normals.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/procedural_shapes.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The thesis's rules (§3.2, Abb. 13 and 16), private to sandcore: a grain falls to its direct
 // successor when that cell is empty; otherwise it slips to one of its empty successors, chosen

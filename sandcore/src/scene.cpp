@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/scene.hpp"
 
 #include "granular_rules.hpp"

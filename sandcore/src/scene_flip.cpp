@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Turning the hourglass over (T1) and copying a scene. The sand is mirrored in y across both
 // grids: the world height of the two grids together stays, so the shared row stays shared and
 // a cell at world height h goes to height H - 1 - h.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/scene_geometry.hpp"
 
 #include "sandcore/cell_grid.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/scenes.hpp"
 
 #include "sandcore/hourglass_split.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/sim_clock.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/surface_upkeep.hpp"
 
 #include "sandcore/inner_grains.hpp"

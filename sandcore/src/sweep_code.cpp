@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/sweep_code.hpp"
 
 #include "grid_sweep.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "threshold_dither.hpp"
 
 #include "sandcore/counter_random.hpp"

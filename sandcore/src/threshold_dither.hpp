@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The fixed dither of the granular thresholds (SPEC PH2), private to sandcore.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/triangle_mesh.hpp"
 
 #include "welded_mesh.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/up_axis.hpp"
 
 #include <algorithm>

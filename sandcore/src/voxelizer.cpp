@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/voxelizer.hpp"
 
 #include "mesh_preparation.hpp"

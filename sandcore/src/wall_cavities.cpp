@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "wall_cavities.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC W2: the spaces a model's walls enclose, with gaps of a few cells closed. Private to sandcore.
 

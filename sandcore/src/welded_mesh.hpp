@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The steps of triangle_mesh.hpp for a mesh that weldVertices already welded, so a caller that
 // runs several of them (the voxelizer) welds once and walks the edges as few times as it can.

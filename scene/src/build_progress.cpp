@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/build_progress.hpp"
 
 namespace sandglass {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Little-endian binary writing and bounded reading for the state file (E1) and the undo
 // history (E3). The reader checks every count against the bytes that are left before it

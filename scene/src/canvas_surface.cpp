@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/canvas_surface.hpp"
 
 namespace sandglass {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The one way a model file is read (loadMesh and loadModelParts): the importer child process
 // (isolated_import.hpp) and every S1/H2 check of what it returns, so no file reaches assimp in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/compressed_snapshot.hpp"
 
 #include "byte_codec.hpp"

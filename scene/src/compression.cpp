@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "compression.hpp"
 
 #include "byte_codec.hpp"

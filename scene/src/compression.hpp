@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // zstd for the state file (E1) and the undo history (E3), behind two calls.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/data_paths.hpp"
 
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/draft_image.hpp"
 
 #include "scene/file_io.hpp"

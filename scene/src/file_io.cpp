@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/file_io.hpp"
 
 #include <algorithm>

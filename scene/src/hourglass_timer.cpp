@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/hourglass_timer.hpp"
 
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // sandglass-import: the model importer as its own process. loadMesh starts it with fork and
 // exec (only async-signal-safe calls between the two), so nothing of the parent's state, no
 // lock another thread held, reaches the process that runs assimp. It writes the encoded

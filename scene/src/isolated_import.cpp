@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Why another process: assimp (Debian's 5.x) crashes with SIGSEGV, aborts in ai_assert and loops
 // forever on truncated or byte-flipped PLY and OFF files. aiProcess_ValidateDataStructure turns
 // some of these into errors, not all, and no check of ours can know every reader's bugs. So the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // assimp in a child process: what comes back is a plain triangle list in double precision, cut
 // into the file's parts (S7: named objects with their material colours), or one line saying why

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/library_versions.hpp"
 
 #include <assimp/version.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/mesh_loader.hpp"
 
 #include "checked_import.hpp"

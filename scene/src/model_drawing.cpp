@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/model_drawing.hpp"
 
 #include "sandcore/mesh_shells.hpp"

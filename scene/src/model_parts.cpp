@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/model_parts.hpp"
 
 #include "checked_import.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/sand_painter.hpp"
 
 #include <algorithm>

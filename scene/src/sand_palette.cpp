@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/sand_palette.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/sand_patterns.hpp"
 
 #include "sandcore/counter_random.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/sand_space.hpp"
 
 #include "scene/mesh_loader.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/scene_export.hpp"
 
 #include "scene/file_io.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/scene_host.hpp"
 
 #include <algorithm>
@@ -64,6 +65,7 @@ void SceneHost::adopt(BuiltScene built, const SceneSettings& settings) {
     scene_ = std::make_unique<sandcore::Scene>(std::move(built.scene));
     drawing_ = std::move(built.drawing);
     modelToWorld_ = built.modelToWorld;
+    modelNote_ = built.note;
     loaded_ = settings;
     lastStepOutsideClock_ = false;
     rate_.clear();

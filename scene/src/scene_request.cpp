@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/scene_request.hpp"
 
 #include "scene/data_paths.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A SceneSnapshot as bytes: shared by the state file (E1) and the compressed undo history (E3).
 

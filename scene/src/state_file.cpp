@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/state_file.hpp"
 
 #include "byte_codec.hpp"

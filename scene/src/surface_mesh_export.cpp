@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The sand's surface for printing or rendering elsewhere (E2): every face between a grain cell
 // and a cell without one, as two triangles, with each lattice corner one shared vertex, so the
 // mesh is closed and consistently oriented (outward). Written by assimp's exporter to memory and

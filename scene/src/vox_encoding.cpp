@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // MagicaVoxel's .vox format (version 150): chunks of id, content size, children size; a MAIN
 // chunk holding SIZE/XYZI pairs (one per model, at most 256 cells per axis), the scene graph
 // that places the models, and the RGBA palette.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The application's own commands with a real GL context: what a frame shows after steps made
 // outside the running clock (single step, `render --steps`), rebuild requests during a build,
 // and the B benchmark leaving the user's scene as it was.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC I5: while a scene is built the window shows its phase and a Cancel; the button and Esc
 // stop the build and the running scene goes on unchanged.
 #include "support/app_test_support.hpp"

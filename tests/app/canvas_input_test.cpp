@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC P2-P7 and R11 through the mouse path: cursor positions (projected column centres) go
 // into Application::handleCanvasPointer, as the window's mouse handling sends them, and the
 // grid shows exactly what the stroke should have done.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC P1: the integer id picker finds exactly the column under the cursor, for a canvas past
 // the thesis's 65k-cell limit, in several views and on both surfaces, through the same lookup
 // the mouse uses; the id image is drawn once per view and reused while the view stays.

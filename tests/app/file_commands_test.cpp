@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC E1, E2, E3 in the window: the File section's Save, Open and Export commands, and a file
 // that cannot be opened leaving the running scene as it was.
 #include "support/app_test_support.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The hourglass as a timer in the window, and the canvas's first contact: the rate holds when
 // frames are slow, a turn animates the view, and a first stroke on a fresh canvas shows sand
 // under the cursor's path.

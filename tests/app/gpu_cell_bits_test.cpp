@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC V8 with R12, R13: the GPU path that works out inner flags and gradient normals from the
 // cells' occupancy bits draws exactly what the CPU path draws from sandcore's flags and normals:
 // on the hourglass after frames that upload only changes, and on a canvas whose grains lie on

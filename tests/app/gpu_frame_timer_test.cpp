@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC B1: the GPU time of the frames drawn, by timer queries. Every timed draw is counted once,
 // also when more frames are drawn than the timer keeps in flight, each with some time; with
 // timing off nothing is counted.

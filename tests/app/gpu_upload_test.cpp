@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC V8 (with R8): grains kept on the GPU, only what changed uploaded, positions worked out by
 // the vertex shader. The GPU's positions, read back by transform feedback, equal the CPU's
 // writeDisplayPositions after steps and after every kind of edit; a step uploads in proportion

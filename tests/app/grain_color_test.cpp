@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC P6 / V1: a grain's own colour shows in every render mode, lit or not; grains without
 // one keep the pale sand colours.
 #include "support/app_test_support.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC S10 in pixels: the default scene, the framed hourglass, drawn as modelled. The wooden
 // frame is opaque in its MTL colour (the same pixel on a white and a black background, and
 // absent when the voxel hull is asked for instead), the sand shows through the glass walls in

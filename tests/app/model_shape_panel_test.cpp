@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC S9: the panel's "turn 90°" buttons walk the up axis through the four directions around
 // the turn's axis, starting from +y when the axis is automatic.
 #include "gui/model_shape_panel.hpp"

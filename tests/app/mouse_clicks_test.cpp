@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Issue: at a few frames per second, several clicks between two frames counted once, because
 // ImGui 1.86 sees one button state per frame. The layer replays each press and release in a
 // frame of its own; these tests click a "+" button several times within one slow frame.

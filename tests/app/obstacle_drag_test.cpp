@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Obstacles placed with the mouse: armed from the panel, a left drag on the canvas floor
 // outlines a box of columns and the release adds it (heights from the typed form), with no sand
 // poured by that drag.

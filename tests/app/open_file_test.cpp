@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC I3: Application::openFile, the one path of `sandglass FILE`, drops and recent files.
 #include "support/app_test_support.hpp"
 

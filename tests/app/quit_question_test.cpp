@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC U5: quitting with unsaved painting asks first (Esc, the Exit button or the window's close
 // button); without unsaved changes it quits at once; "Save and quit" keeps the work in the file.
 #include "support/app_test_support.hpp"

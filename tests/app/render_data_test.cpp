@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The data the GPU draws from: Scribble patterns (V2), packed normals, the glass hull (V6) and
 // the benchmark's table form (B1). No GL needed.
 #include "app/frame_benchmark.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC V1, V3, V5, C3: every render mode, with and without light, puts sand where the grains
 // are and leaves the background elsewhere.
 #include "support/app_test_support.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC S12: sand that looks like sand. Every grain of the warm palettes has red > green > blue,
 // the default stays in V2's range, and in the default look (the framed hourglass, unlit and lit)
 // at least 90% of the pixels where grains are drawn are warm.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC U3: the Scene panel shows what runs. A typed model path that fails to load never becomes
 // the current model: the panel's choice goes back to the loaded model, the summary names it, and
 // the next rebuild (a new resolution) builds from what is shown.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC E4: the P key's screenshots show the sand without the panels (unless asked), go to the
 // chosen folder as the first free sandglass-N.png, never replace a file, and say where they went.
 #include "support/app_test_support.hpp"

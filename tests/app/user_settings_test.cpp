@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC I4: the settings file, read and written; a damaged one never stops the program.
 #include "app/user_settings.hpp"
 

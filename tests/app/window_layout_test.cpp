@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC U1, U2: the help lists every control, the panel keeps a sensible width, and a panel
 // put somewhere stays on screen when the window shrinks and comes back when it grows.
 #include "support/app_test_support.hpp"

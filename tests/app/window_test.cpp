@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC G1: the window opens, runs 200 frames with the simulation on and closes cleanly.
 #include "support/display_guard.hpp"
 

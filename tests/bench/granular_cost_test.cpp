@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The granular cost of the bench report (PH6) on a small hourglass: stepping the two drains in
 // turns measures them without changing them.
 #include "bench/granular_report.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The B2 plausibility measurements on piles and discharges with known answers.
 #include "bench/plausibility.hpp"
 

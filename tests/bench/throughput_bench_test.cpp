@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The throughput section of the bench report on a small configuration: what it measures is
 // consistent (the drains agree move for move), whatever the machine's speed.
 #include "bench/throughput_bench.hpp"

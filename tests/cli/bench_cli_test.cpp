@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC C4: `sandglass bench --quick` produces the report (its content, not its speed).
 #include "support/run_process.hpp"
 #include "support/temporary_folder.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every command-line value is checked where it enters: one line naming the option, exit code 2
 // for a wrong command line, and the codes documented in every --help.
 #include "support/run_process.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC E1, E2 through the real executable: simulate --save / --load / --export, voxelize --out.
 #include "support/display_guard.hpp"
 #include "support/run_process.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC PH1 and PH7 through the real executable: --physics, --repose, --gravity, --trace.
 #include "support/run_process.hpp"
 #include "support/temporary_folder.hpp"

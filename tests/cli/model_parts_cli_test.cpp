@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC S7-S9 through the real executable: parts, roles, the up axis and the sand space in the JSON.
 #include "support/run_process.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC I3: `sandglass FILE` (and `sandglass gui FILE`) opens a .sand state, a model as an
 // hourglass, or a draft image on the canvas.
 #include "support/run_process.hpp"

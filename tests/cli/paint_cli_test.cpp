@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC P5 at the command line: --draft loads a draft (a bad one is one line on stderr and a
 // failed run, as a bad --load), --paint-demo pours a drawing over it through the mouse path.
 #include "support/display_guard.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC C3 and §6: bad input to render, gui and bench gives one line on stderr and a non-zero code.
 #include "support/display_guard.hpp"
 #include "support/run_process.hpp"

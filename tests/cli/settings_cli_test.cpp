@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC I4: a second start of the window restores what the first one left; --no-settings and a
 // damaged file start from the defaults. Each test keeps its settings in its own folder.
 #include "support/run_process.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC C1 through the real executable.
 #include "support/run_process.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC U4: long command-line work draws a progress line on an interactive terminal only.
 #include "app/cli/terminal_progress.hpp"
 

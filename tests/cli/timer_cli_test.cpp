@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The hourglass as a timer on the command line: turning over and a drain of a chosen duration.
 #include "support/run_process.hpp"
 

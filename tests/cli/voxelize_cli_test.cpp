@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "support/run_process.hpp"
 #include "support/temporary_folder.hpp"
 

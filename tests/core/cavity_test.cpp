@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC S8 (cavities enclosed by walls, thin walls sealed by their surface cells) and S9 (quarter
 // turns of a mask, the up axis found from its neck).
 #include "sandcore/cavity.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // CellBits: the reads of several neighbouring cells at once (around, around5) and the flips give
 // what a cell-by-cell test gives, across byte boundaries, for any pattern.
 #include "sandcore/cell_bits.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R4 conservation, R5 sleeping == full sweep, R6 threads, R7 recorded hash.
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R8: smooth display positions without drift, and jitter.
 #include "support/scene_fixtures.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // EmptyCellBits (sandcore/src/empty_cells.hpp): the EMPTY cells a granular sweep keeps as bits,
 // read back as windows, against the cells themselves.
 #include "empty_cells.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Turning the hourglass over (T1): an exact mirror in y, every grain kept with its identity and
 // colour, the identity after two turns, and exactness of the steps that follow.
 #include "sandcore/procedural_shapes.hpp"

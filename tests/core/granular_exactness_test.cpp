@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // PH5: the granular level is as exact as the classic one: sleeping == full sweep, any thread
 // count == one thread, exact conservation, recorded hashes; and PH1's settings.
 #include "sandcore/inside_mask.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // PH2 repose, PH3 gravity, PH4 neck flow: what the granular level does, measured.
 #include "support/scene_fixtures.hpp"
 

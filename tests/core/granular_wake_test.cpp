@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The granular wakes of an emptied cell c's own layer (grid_sweep.cpp) read tables of the slides
 // across c, target column by target column (GranularRules::grainsWithOpenSlideAcrossCentreTo),
 // over the columns some of the grains slide into (GranularRules::targetsAcrossCentreOf).

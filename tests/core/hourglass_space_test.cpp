@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // W1, W2, W5: the hourglass recipe on meshes made here, where the answer is known exactly.
 #include "sandcore/hourglass_space.hpp"
 #include "sandcore/mesh_shapes.hpp"

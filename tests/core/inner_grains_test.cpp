@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R13: inner grains.
 #include "support/scene_fixtures.hpp"
 

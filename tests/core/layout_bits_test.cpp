@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // LayoutBits (a layout as a bit per cell) and the huge-page allocation of big grids.
 #include "sandcore/layout_bits.hpp"
 #include "sandcore/procedural_shapes.hpp"

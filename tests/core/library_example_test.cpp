@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The example in docs/engine.md and README ("sandcore as a library"), kept compiling and working.
 #include "sandcore/display_positions.hpp"
 #include "sandcore/procedural_shapes.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Procedural masks, S3 clean-up and the S4 neck split.
 #include "sandcore/hourglass_split.hpp"
 #include "sandcore/mask_cleanup.hpp"

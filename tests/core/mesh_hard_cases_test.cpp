@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC S2, S5, S6, H2: meshes as they come from real files: faces written twice, closed parts
 // that overlap, faces with flipped orientation.
 #include "sandcore/mesh_shapes.hpp"

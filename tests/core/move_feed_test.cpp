@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // MoveFeed (sandcore's private hand-over of one sweep's moves to the thread that writes the
 // grain records): every move arrives once and in order while the producer still runs, also the
 // moves beyond the room given at start, which wait in an overflow until the sweep ends. A sweep

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scene::movedGrains: the grains the last step moved, each once, equal to those whose cell changed.
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R12: both normal estimates on known slopes.
 #include "sandcore/normals.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC H3: properties over thousands of random small cases. Each case is made from one seed;
 // a failure prints it (CAPTURE), and setting SANDGLASS_PROPERTY_SEED replays that case alone.
 #include "sandcore/mesh_shapes.hpp"

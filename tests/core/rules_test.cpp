@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R2/R3/R4 on small hand-built grids with exact expected contents.
 #include "support/scene_fixtures.hpp"
 

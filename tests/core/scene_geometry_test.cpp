@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scene geometry: grid sizes and memory estimates computed before a scene exists agree with the
 // scenes the library builds, and keep the numbers the application's memory check relies on.
 #include "sandcore/procedural_shapes.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R10 scenes, R11 obstacles, R14 counters and editing.
 #include "support/scene_fixtures.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R9: the fixed-rate clock.
 #include "sandcore/sim_clock.hpp"
 

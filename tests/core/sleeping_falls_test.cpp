@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // PH5 with falls that sleep: a granular grain falling short of its next cell, and the column
 // riding on it, are not visited until the step the fall reaches that cell (grid_sweep.hpp). The
 // result must be that of a full sweep after every step, whatever lands on them or is edited

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scene::movedGrains and SurfaceUpkeep (R12, R13 kept by the step): the list of moved grains
 // matches a full comparison of every grain's cell before and after the step, and the flags and
 // column normals kept up to date around the changed cells equal a full recompute after every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The sweep's two builds (sandcore/sweep_code.hpp): which one a step runs, and that both give
 // the same steps, under either rules, sleeping or not, on one thread or two, and when a scene
 // changes build halfway.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fixed dither of the granular thresholds (threshold_dither.hpp): a blue-noise tile kept as
 // data, and the views of it that the 48 slides of each grid read.
 #include "threshold_dither.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC S2, S5: voxelize welds, drops repeated faces, measures closedness and orients the faces
 // in parallel; whatever the thread count, its results are those of the step-by-step public
 // functions (weldVertices, withoutRepeatedTriangles, closednessOf, orientedOutward,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/mesh_shapes.hpp"
 #include "sandcore/voxelizer.hpp"
 

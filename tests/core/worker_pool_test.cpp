@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandcore/worker_pool.hpp"
 
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC S7-S9 with the bundled models made as artists make them: a framed hourglass whose glass
 // has thickness (OBJ with parts, Y up; and one binary STL, Z up) and a capped glass with a closed
 // inner cavity. Each fills its upper cavity, drains completely and stands up by itself.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC I5: a build passes its phases in order and ends in Done; a cancel stops it at the next
 // phase with BuildCancelled.
 #include "scene/build_progress.hpp"

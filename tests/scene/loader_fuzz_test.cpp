@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC H4: every loader is fed truncated and bit-flipped copies of a fixed corpus (fixed seed):
 // no crash, no hang, and each failure is one line "FILE: cause". Set SANDGLASS_FUZZ_CORPUS_DIR
 // to a folder to keep the corrupted files (to replay them against another build).

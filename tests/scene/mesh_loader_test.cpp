@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/mesh_loader.hpp"
 #include "scene/model_voxelizer.hpp"
 #include "scene/scene_request.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC S10: a model is drawn where its cells are. The drawing's transform (scale, padding, the
 // quarter turns to the up axis, the shift into the scene's grids) is checked against the
 // voxelizer's cells: point by point for the turns, and for the bundled hourglasses by the

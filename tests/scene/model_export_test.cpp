@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // W6: sand exported from a model scene sits in the model's own coordinates and units, inside
 // its glass, whatever up axis, unit and offset the file has, and also after a turn-over.
 #include "support/temporary_folder.hpp"

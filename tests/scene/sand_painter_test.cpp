@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // P2-P7 through the painter: the same path the mouse takes after picking.
 #include "scene/sand_painter.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC H2: a model voxelizes to the same cells wherever and at whatever scale it was modelled.
 // The model goes through a file and the loader, as a user's would. Set SANDGLASS_KEEP_TEST_FILES
 // to a folder to keep the model files (to compare against another build).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC E2: exports for other tools, each read back by an independent reader.
 #include "scene/file_io.hpp"
 #include "scene/mesh_loader.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/scene_host.hpp"
 #include "scene/statistics.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC E1: save and load the whole state; H4: damaged state files get one line, never a crash.
 #include "scene/compressed_snapshot.hpp"
 #include "scene/file_io.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The generator of models from the wild (tools/wild_models): its files are valid and the same
 // for the same seed, and its ground truth agrees with the meshes it writes, so the tests that
 // load these models can trust it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the window tests share: opening an offscreen Application (or saying why not), canvas
 // options, and reading pixels of a captured frame.

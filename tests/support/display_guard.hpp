@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Tests that draw need an X display and an OpenGL 3.3 context (scripts/test runs them under
 // xvfb-run). Without one they say so and return instead of failing, except in CI: there a

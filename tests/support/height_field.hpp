@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A grid filled with sand below a height field: the known slopes and piles several tests measure.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A fixed corpus of small valid files for every loader (models: OBJ, ASCII and binary PLY, OFF,
 // ASCII and binary STL, glTF; drafts: PNG and JPEG) and a seeded mutator that truncates them and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Holds a scene build at one phase until the test lets it go, so the test acts while the build
 // surely runs (SPEC I5). Declare it after the SceneHost or Application: it opens when destroyed,

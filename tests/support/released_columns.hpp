@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where painting released sand: the columns of the upper grid's top row that hold a grain.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Runs the sandglass executable as a user would, capturing its output and exit code: the one
 // helper every CLI test uses. No shell and no temporary files: arguments go to execv as a

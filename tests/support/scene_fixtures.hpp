@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small hand-built scenes for rule tests: a lower box under a thin upper grid, both EMPTY.
 

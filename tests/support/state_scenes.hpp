@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The three scene kinds as the state file and export tests use them: small, with sand moving.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A uniquely named temporary folder for one test, removed with everything in it when the test
 // ends, so tests can run in any order, several at once and repeatedly.

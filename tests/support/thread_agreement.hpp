@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // R6: a step's result never depends on the thread count. Shared by the classic and granular tests.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A small MagicaVoxel (.vox) reader for the export tests, written from the format's description,
 // independent of the writer: models (SIZE + XYZI), the scene graph's translations (nTRN "_t" over

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC E1-E4: the desktop's file dialog as a child process, with a stand-in program that answers
 // as zenity does (the path on standard output, exit status 0; 1 when cancelled).
 #include "view/file_chooser.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // IndexRuns (V8's uploads): marked entries come back as ascending runs, joined across gaps of at
 // most maxGap, each mark once, every mark cleared; what the GPU store sends after a step.
 #include "view/render/index_runs.hpp"

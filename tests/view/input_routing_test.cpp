@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC G3: mouse input ImGui wants never moves the camera; keys typed into ImGui never act.
 #include "view/input_routing.hpp"
 

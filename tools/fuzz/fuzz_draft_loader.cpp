@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target of the draft-image loader (SPEC H4): DraftImage::load must return an image
 // whose pixels match its size or throw with one line naming the file. stb_image runs in this
 // process, so ASan sees every read it makes.

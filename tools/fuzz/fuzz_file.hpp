@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The loaders read files, so each input is written to a private temporary file first.
 

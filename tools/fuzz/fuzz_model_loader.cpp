@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target of the model loader (SPEC H4). The first byte picks the format's extension,
 // the rest is the file. loadMesh must return a mesh or throw ModelError with one line; a crash
 // or hang of assimp itself is contained in the import child and is not a finding. The bytes are

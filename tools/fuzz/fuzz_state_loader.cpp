@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target of the state-file loader (SPEC H4). Two ways in, picked by the first byte:
 // the whole file (header, checksum and zstd frame checked by openStateFile), and the payload
 // behind a valid seal, so the fuzzer reaches the decoder's bounds and consistency checks

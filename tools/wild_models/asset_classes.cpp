@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Models as asset stores sell them: a one-object hourglass with modelled sand, a glass of cones
 // and discs with a hair-thin neck, and a funnel.
 #include "class_builders.hpp"

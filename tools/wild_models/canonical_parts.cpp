@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "canonical_parts.hpp"
 
 #include "sandcore/mesh_shapes.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Meshes in the canonical frame (y up, axis at x = z = 0, canonical units) that the model
 // classes are made of, and the damage a downloaded file carries.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One builder per model class, each making its canonical model from the random stream, and the
 // pieces several classes share (frames of plates and posts, names as exporters write them).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Models that are not glasses: a character for the sculpture scene and a keyboard of keys too
 // small for a coarse grid.
 #include "class_builders.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "glass_profile.hpp"
 
 #include <algorithm>

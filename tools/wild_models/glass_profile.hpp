@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The inner space of a glass as a radius profile r(h) about the y axis, canonical units: made at
 // random as bulbs of varied shape around a neck, and queried as ground truth.

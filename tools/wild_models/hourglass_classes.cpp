@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hourglasses of the three framed kinds: thick glass in a frame, a single wall, open bulbs
 // closed by stacked plates.
 #include "class_builders.hpp"

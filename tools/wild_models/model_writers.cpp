@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The corpus's files: OBJ with one object per part, binary STL with all parts merged.
 #include "wild_models/wild_models.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Random numbers from std::mt19937_64, whose output the standard fixes, turned into values by
 // hand: the standard library's distributions differ between implementations, and the corpus

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "wild_models/wild_checks.hpp"
 
 #include "scene/mesh_loader.hpp"
@@ -92,6 +93,7 @@ void checkHourglass(const WildModel& model, const BuiltScene& first, const Check
     if (!out.failure.empty()) return;
     if (std::string outside = grainOutside(built, model, tolerance); !outside.empty()) {
         out.failure = "at the start, " + outside;
+        out.grainOutside = true;
         return;
     }
     if (funnel) return;
@@ -116,12 +118,14 @@ void checkHourglass(const WildModel& model, const BuiltScene& first, const Check
         if (steps % settings.checkEvery == 0)
             if (std::string outside = grainOutside(built, model, tolerance); !outside.empty()) {
                 out.failure = "after " + std::to_string(steps) + " steps, " + outside;
+                out.grainOutside = true;
                 return;
             }
     }
     for (int extra = 0; extra < 200 && !built.scene.settled(); ++extra) built.scene.step();
     if (std::string outside = grainOutside(built, model, tolerance); !outside.empty()) {
         out.failure = "at the end, " + outside;
+        out.grainOutside = true;
         return;
     }
     // At the end every grain has passed the neck into the lower bulb's grid.
@@ -138,7 +142,10 @@ void checkSculpture(const WildModel& model, const BuiltScene& built, ModelCheck&
         out.failure = std::string("stands along ") + sandcore::upAxisName(*built.upAxis);
         return;
     }
-    if (std::string outside = grainOutside(built, model, cell); !outside.empty()) out.failure = "a sand cell outside the body: " + outside;
+    if (std::string outside = grainOutside(built, model, cell); !outside.empty()) {
+        out.failure = "a sand cell outside the body: " + outside;
+        out.grainOutside = true;
+    }
 }
 
 } // namespace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC W1-W5: what a model from the wild must give when loaded with no options, checked against
 // the generator's ground truth. Shared by the property tests and the corpus report (wild_report).
@@ -14,6 +15,7 @@ namespace sandglass::wild {
 struct ModelCheck {
     bool loaded = false;            ///< the file built a scene
     std::string failure;            ///< the first property that failed, one line; empty when all held
+    bool grainOutside = false;      ///< W3 broken: a grain was found outside the glass (or body) at some check
     std::string note;               ///< the program's W5 note, if it gave one
     std::int64_t grains = 0;        ///< grains at the start
     double upperFillShare = 0.0;    ///< grains in the upper bulb / the upper bulb's volume in cells

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // generate(): a class's canonical model, damaged, turned to its up axis, scaled and moved; and
 // the ground truth queries, which undo that.
 #include "wild_models/wild_models.hpp"

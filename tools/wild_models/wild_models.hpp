@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Models "from the wild": hourglasses, funnels, characters and keyboards made the way users
 // download them (several objects, open rims with gaps, thick or single walls, damaged faces,

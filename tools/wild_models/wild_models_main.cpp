@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Writes a corpus of models from the wild, with a line per file in corpus.txt:
 //   wild_models OUT_DIR [--count N] [--seed S]
 // N models of every class (default 3), seeds S, S+1, ... (default 1), each as OBJ and STL.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // wild_report: loads generated models of every class as a user would (no options) and prints the
 // share of each class that passes the checks of wild_checks.hpp, with the first failures.
 //   wild_report [--count N] [--seed S] [--res R] [--no-drain]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/camera.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

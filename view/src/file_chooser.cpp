@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/file_chooser.hpp"
 
 #include <cerrno>

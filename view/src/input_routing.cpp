@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/input_routing.hpp"
 
 #include <GLFW/glfw3.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/window.hpp"
 
 #include <GL/glew.h>

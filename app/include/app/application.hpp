@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The window application: the window loop over a scene host, a canvas controller, the
 // renderer and the panels.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC B1, thesis §4.3 "Zeitmessungen": frames per second of every render mode with light off
 // and on, inner grains drawn or skipped, 1 and 20 grains per cell, simulation and GUI on,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The frame-rate benchmark (thesis §4.3) inside the window: the same frames the user sees
 // (simulation and panels on), timed per display configuration. It builds its own copy of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The Dear ImGui context with its GLFW and OpenGL 3 backends, sized for the monitor's content
 // scale (HiDPI) and the user's UI scale. GLFW callbacks are not installed by the backend: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A scripted sand drawing over the loaded draft (`sandglass gui --scene canvas --draft FILE
 // --paint-demo`): strokes go through the same mouse path a hand-drawn one takes, so the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC I4: a window starts as the last one was left, and what changed is kept at its end.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC I4: what the window remembers between runs, in one JSON file under the desktop's config
 // folder ($XDG_CONFIG_HOME/sandglass/settings.json, else ~/.config/sandglass/settings.json), with

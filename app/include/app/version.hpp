@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What `sandglass --version` prints: the version, the commit it was built from, and the
 // libraries it runs with.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `sandglass bench`: without --render, the speed-against-error report (SPEC C4/B2: Markdown, CSV
 // and PNG plots); with --render, the frame-rate benchmark B1 (thesis §4.3) on the thesis's
 // benchmark scene (about 3,500 filled cells) and a large one, written as benchmark.txt + .csv.

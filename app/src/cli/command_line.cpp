@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/cli/command_line.hpp"
 
 #include "app/cli/commands.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC §6: `sandglass gui` (and `sandglass` alone) opens the window on a scene.
 #include "app/cli/commands.hpp"
 #include "app/cli/checked_options.hpp"

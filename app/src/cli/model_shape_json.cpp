@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/cli/model_shape_json.hpp"
 
 #include "sandcore/cell_grid.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC C3: `sandglass render` simulates N steps, draws one frame in a hidden window and writes
 // it as PNG; --json reports the frame rate of a few more frames of the same view. V8: --frames N
 // then draws N frames stepping once before each, and reports what they uploaded and cost.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/cli/scene_options.hpp"
 
 #include "app/cli/checked_options.hpp"

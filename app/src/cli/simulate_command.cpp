@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC C1: `sandglass simulate` runs a scene headless and reports grains, moves, the state hash
 // and the speed, as text or one JSON object.
 #include "app/cli/checked_options.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "app/cli/terminal_progress.hpp"
 
 #include <unistd.h>

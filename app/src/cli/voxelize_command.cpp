@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SPEC C2: `sandglass voxelize FILE --res N` loads a model, voxelizes it and reports the grid,
 // the inside cells, the mesh and voxel volumes and whether the mesh is closed.
 #include "app/cli/checked_options.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC PH2-PH6 in the speed-against-error report: the granular level's repose angle asked
 // against measured in 16 directions, fall time against sqrt(2h/g), the discharge over several

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Physical plausibility of the sand as error figures (SPEC B2): how steady the hourglass
 // discharges (real sand: constant rate, Beverloo's law) and how steep the settled pile stands

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Writing the report: Markdown tables, CSV files and gnuplot PNG plots.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Speed of the step against grid resolution for the hourglass drain (SPEC B2 "Simulation").
 

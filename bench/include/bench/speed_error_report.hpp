@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC B2 / C4: `sandglass bench` writes the speed-against-error report: Markdown, CSV and PNG
 // plots in one folder (committed as docs/bench/).

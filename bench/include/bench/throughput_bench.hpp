@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Moves per second of the hourglass drain on 1 and N threads, next to what the machine's memory
 // can do at all (measured here, briefly): the distance to the physical limit (issue: two cores).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Speed against error of the voxelizer (SPEC B2 "Voxelization"): time and volume error against
 // resolution for a sphere, the bundled hourglass and a torus; a dense mesh; what binning saves.

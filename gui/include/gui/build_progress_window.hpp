@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC I5: a scene being built shows what it does, how far it is, and a Cancel that keeps the
 // running scene; shown even with the panels hidden.

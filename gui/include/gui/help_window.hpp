@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC U1: the keys and mouse controls in a window of their own (F1, ? or the Help button), and
 // a one-line hint of it on the first start.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S7, S9 and S12 controls: the model's parts with their roles, the up axis with quarter-turn
 // buttons, and the sand palette. They change the request or the render settings and raise a rebuild.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The ImGui panels (SPEC G1, G2): every control of thesis §3.7 with its default, plus scene,
 // model, resolution, sizes, flow speed, jitter, seed and statistics. They read and change the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC U5: quitting with unsaved edits asks first, even with the panels hidden.
 

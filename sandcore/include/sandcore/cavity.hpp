@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S8: the sand space of an hourglass is the inside of its glass. A glass modelled with
 // thickness voxelizes to a wall; the cells the walls (and the frame) enclose, not connected to

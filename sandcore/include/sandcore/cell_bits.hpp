@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What SurfaceUpkeep needs to look at a grain's neighbourhood cheaply, for every grain a step
 // moved: one bit per cell (holds a grain; hides a neighbour) and a cell index turned into a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The thesis's ParticleManager storage (§3.3.1): a box of cells, each holding one grain id,
 // kEmpty, or kInvalid. Index layout: x fastest, then z, then y, so one layer is sizeX*sizeZ

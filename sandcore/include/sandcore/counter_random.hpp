@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Counter-based randomness (R3): a random number is a pure function of its inputs, never the
 // state of a shared generator, so results do not depend on threads or visiting order.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // R8: where a grain is drawn. A grain glides from the cell it left to the cell it entered during
 // the step after its move; the position is computed from (from, to, fraction) every time, never

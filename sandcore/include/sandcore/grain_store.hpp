@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Per-grain records (structure of arrays), indexed by grain id. Ids are dense: [0, size()).
 // Removing a grain moves the last grain into the freed id, so arrays stay packed for drawing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S8, S9, W1-W5: the recipe that turns a model's triangles into an hourglass: which shells
 // are glass, frame and modelled sand, where the sand lives (the space the glass encloses, with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S4: where an hourglass mask is cut into its upper and lower grid.
 

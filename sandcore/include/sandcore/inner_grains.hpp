@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // R13: inner grains ("innere Partikel", §3.8): a grain whose 6 face neighbours are all grains,
 // INVALID or outside its grid cannot be seen, so the renderer may skip it.

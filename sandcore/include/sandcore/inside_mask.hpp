@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A voxel mask: which cells of a box lie inside a shape. Scenes are built from masks (R10);
 // masks come from procedural shapes (procedural_shapes.hpp) or from a voxelized model.

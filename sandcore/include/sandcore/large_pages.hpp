@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Memory for the big arrays of a scene (cell grids, the grain records a step writes by id, the
 // sweeps' awake words and the granular sweeps' bits, the surface's cell bits) and of the

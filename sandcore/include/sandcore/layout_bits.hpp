@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A grid's layout (which cells are INVALID) as one bit per cell: what a scene keeps to rebuild
 // its grids on reset, an eighth of a byte per cell instead of a second copy of the cells, and what

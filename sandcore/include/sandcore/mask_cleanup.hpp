@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Clean-up of voxel masks (thesis §3.4, SPEC S3).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Closed triangle meshes built in code: shared by the voxelizer's tests, the benchmark and the
 // generator of the bundled models (tools/make_models.cpp). All wind counter-clockwise seen

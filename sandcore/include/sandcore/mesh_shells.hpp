@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC W1: a model's object often holds several separate surfaces (a glass, its posts and plates,
 // modelled sand). Each connected shell gets a role of its own.

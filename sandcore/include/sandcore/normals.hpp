@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // R12: surface normals for lighting. The thesis's column method (§3.8) compares column heights;
 // the occupancy gradient also works on vessel walls and under overhangs, where columns are wrong.

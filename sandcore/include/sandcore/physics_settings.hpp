@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC PH1: which rules move the sand. `classic` is the thesis's (R2: fall one cell, else slip to
 // a random empty successor); `granular` adds a tunable, round angle of repose (PH2), gravity

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Measuring a heap (SPEC PH2): the angle of its flanks along evenly spaced directions out of its
 // peak, from the grid's column heights, as one would measure a real pile from a height map.

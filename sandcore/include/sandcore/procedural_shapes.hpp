@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Exact procedural masks: the shapes tests and benchmarks need, independent of any model file.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A scene: an upper and a lower grid that share one row (R4), the grains in them, and the
 // step that moves them (R2, R3, R5, R6). Build one with the functions in scenes.hpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Scene geometry (R10, S1): the sizes of each scene's two grids and the memory a scene will
 // need, computed before anything is allocated. The scenes in scenes.hpp are built from these

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The one place where the three scenes of R10 are set up, shared by the tests, the command
 // line, the benchmark and the application.

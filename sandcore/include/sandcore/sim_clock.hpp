@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // R9: the fixed-rate simulation clock, driven by an accumulator on the wall clock so the flow
 // speed does not depend on the frame rate (the thesis's eventSteps, in steps per second).

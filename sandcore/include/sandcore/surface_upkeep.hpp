@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // R12, R13 kept current by the step: the inner-grain flags and the normals of a scene, updated
 // after each step from what it moved, so their cost follows the moves, not the grain count. The

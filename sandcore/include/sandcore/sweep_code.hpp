@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which build of the sweep's code runs a step. On x86-64 Linux with GCC or Clang and GNU ld
 // (sandcore/CMakeLists.txt, SANDCORE_SWEEP_BMI2), sandcore holds the sweep (grid_sweep.cpp,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A plain triangle list: what a model loader hands to the voxelizer (SPEC S1, S2). sandcore
 // never reads model files itself; the application's loader fills this struct.

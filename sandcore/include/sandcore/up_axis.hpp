@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S9: which of a model's six axis directions points up. Masks are turned by quarter turns
 // (a proper rotation, never a mirror image), so every cell maps to exactly one cell.

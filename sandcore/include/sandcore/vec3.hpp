@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small value types for cell coordinates and display positions. sandcore keeps its own so
 // that it depends on nothing but the standard library.

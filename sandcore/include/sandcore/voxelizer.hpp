@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S2, S5, S6 (thesis §3.4 "Zellen innerhalb der Form"): which cells of a grid lie inside a
 // triangle mesh. A cell is inside when its centre is; rays along the axes through rows of cell

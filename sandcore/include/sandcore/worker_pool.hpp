@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A small pool of persistent worker threads for the step (R6). The caller takes part in every
 // parallel loop, so a pool of N threads starts N - 1 workers.

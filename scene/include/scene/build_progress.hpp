@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC I5: how far a scene build has come, and the user's wish to stop it. The build thread
 // passes checkpoints between its phases; the window reads the phase and asks to cancel from its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the canvas lies in the world (SPEC P2, P5): the rectangle the mouse points at, shared
 // by picking (P1) and the draft image, so both use the renderer's cell-to-world transform.

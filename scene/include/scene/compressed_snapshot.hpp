@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC E3: a scene's state kept small, so the undo and redo history hold many more strokes in the
 // same memory. A 256-wide canvas is 55 MB of cells, nearly all EMPTY or INVALID; but every cell

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC I2: where the program finds its data (shaders, bundled models and drafts) and the model
 // importer's helper, relative to its own executable, so an installed copy can be moved and a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // P5: the draft image shown over the canvas and sampled for "colour from draft" (P6).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reading inputs and writing outputs safely. Inputs must be regular files (a FIFO would block
 // a reader forever, a folder is no model); outputs are written to a temporary file beside the

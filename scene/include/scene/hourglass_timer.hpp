@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The hourglass as a timer (T2): the steps a full drain takes are predicted by running a copy
 // of the same scene (same seed, so the same steps) until it settles, on a worker thread; the

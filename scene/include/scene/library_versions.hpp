@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The versions of the libraries the scene layer is built on, for `sandglass --version`.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S1, H2, H4: any model file assimp reads becomes a plain sandcore::TriangleMesh. Every bad
 // input throws ModelError with a one-line message "FILE: cause"; no file, however corrupt, may

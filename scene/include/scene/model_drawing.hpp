@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S10: a model drawn as modelled. The parts' own triangles, placed exactly where the
 // voxelizer put their cells (the same scale and padding, the same quarter turns to the up axis,

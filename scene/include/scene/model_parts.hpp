@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S7: a model file as artists make it, several named objects (assimp nodes), each a part
 // with a role in the scene. A file without objects (a binary STL) is one part.

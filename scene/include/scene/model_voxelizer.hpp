@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The model half of the data flow: model file -> mesh -> inside mask, with the memory check of
 // S1 done before anything large is allocated. Shared by `sandglass voxelize`, buildScene and the GUI.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Painting with sand on the canvas (SPEC P2-P4, P6, P7): mouse samples, already turned into
 // canvas columns by picking (P1), release sand in the top row of the upper grid or erase the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S12: sand that looks like sand. Every palette gives warm grains (red > green > blue in
 // every grain) except the coloured layers, which band the hourglass fill by grain identity.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Thesis §3.8 "Scribble": a fixed set of random patterns, each placing up to 32 sub-grains inside
 // a cell and giving each a pale sand colour. A grain uses pattern (identity mod count), so the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S7-S9, W1-W5: a model file's parts, up axis and sand space. The hourglass's recipe is
 // sandcore's (findHourglassSpace); this layer loads the file, names the parts and reports.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC E2: the sand for other tools. A point cloud (.ply), MagicaVoxel voxels (.vox), the sand's
 // surface as a mesh through assimp's exporter (.obj, .stl, .glb), and a voxelized model's inside

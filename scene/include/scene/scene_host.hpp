@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The running scene of an application, without GL: the scene, the next one being built on a
 // worker thread (the last request wins, the running scene stays until the new one is ready),
@@ -67,6 +68,8 @@ public:
     /// S10: the running scene's model as modelled (upright world cells); null for a procedural
     /// scene, a canvas, or a loaded scene whose model file is gone or changed.
     const std::shared_ptr<const ModelDrawing>& modelDrawing() const { return drawing_; }
+    /// W5: why the running scene's model gave no hourglass and what was done instead; empty otherwise.
+    const std::string& modelNote() const { return modelNote_; }
     /// W6: how the running scene's model became world cells; null without a model.
     const ModelToWorld* modelToWorld() const { return modelToWorld_ ? &*modelToWorld_ : nullptr; }
     /// The settings the running scene was built from: what the panel shows as loaded.
@@ -157,6 +160,7 @@ private:
     SceneSettings loaded_;
     std::shared_ptr<const ModelDrawing> drawing_;
     std::optional<ModelToWorld> modelToWorld_;
+    std::string modelNote_;
     std::future<BuiltScene> build_;
     std::shared_ptr<BuildProgress> progress_; // build_'s, shared with its thread
     std::function<void(BuildPhase)> phaseListener_;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the user asked for (scene kind, shape, resolution), turned into a sandcore::Scene. The
 // command line, the benchmark and the window all build scenes through here, and every value of a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC E1: the whole state of a scene in one `.sand` file, so a user can stop and go on later.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small statistics for timings reported by the command line and the benchmark.
 

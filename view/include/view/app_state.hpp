@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Everything the panels show and change. The panels read and write this struct and queue
 // commands; the application carries the commands out after the panels are built. Nothing here

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The orbit camera of SPEC G3: it circles the scene centre (thesis §3.6: Alt + mouse, arrows,
 // +/-; 1 perspective, 2 front, 3 top). Angles in radians, distances in world units.

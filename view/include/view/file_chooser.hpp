@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The desktop's own file dialog, as a child process (zenity, or kdialog on KDE), so the window
 // keeps drawing while it is open and no toolkit is linked in. Debian 12 packages none of the

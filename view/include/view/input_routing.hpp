@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where keyboard and mouse input goes (SPEC G3): to ImGui when it wants it, else to the camera
 // or an application command. Pure functions of the input and ImGui's capture flags, so the

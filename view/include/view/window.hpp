@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The GLFW window with an OpenGL 3.3 core context (GLEW loads the functions). One window per
 // process at a time: it initialises GLFW when made and terminates it when destroyed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/paint/canvas_controller.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/paint/canvas_input.hpp"
 
 namespace sandglass {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/paint/column_picker.hpp"
 
 #include "view/render/shader_program.hpp"

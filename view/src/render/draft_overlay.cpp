@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/draft_overlay.hpp"
 
 #include "view/render/shader_program.hpp"

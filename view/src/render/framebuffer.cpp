@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/framebuffer.hpp"
 
 #include "scene/file_io.hpp"

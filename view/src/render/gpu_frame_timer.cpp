@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/gpu_frame_timer.hpp"
 
 namespace sandglass {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/grain_gpu_store.hpp"
 
 #include "view/render/grain_instances.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SceneRenderer::captureGpuPositions: the GPU path's display positions read back through
 // transform feedback, so tests can hold them against sandcore::writeDisplayPositions (R8, V8).
 #include "view/render/scene_renderer.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/hull_mesh.hpp"
 
 #include <array>

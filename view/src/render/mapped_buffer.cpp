@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/mapped_buffer.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/model_surfaces.hpp"
 
 #include "view/render/shader_program.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/render_settings.hpp"
 
 namespace sandglass {

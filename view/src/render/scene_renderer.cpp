@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/scene_renderer.hpp"
 
 #include "view/render/hull_mesh.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/shader_program.hpp"
 
 #include "scene/data_paths.hpp"

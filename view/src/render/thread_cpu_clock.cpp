@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "view/render/thread_cpu_clock.hpp"
 
 #include <chrono>

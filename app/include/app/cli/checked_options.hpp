@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Command-line numbers checked where they enter: every numeric option is read as text and
 // converted exactly (no wrap-around of -1 into a huge unsigned, no saturation of too many

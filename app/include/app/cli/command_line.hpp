@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The command line (SPEC §6): parses the arguments and runs one subcommand.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Each subcommand adds itself to the parser and, when chosen, runs from a callback that
 // stores its exit code in `exitCode`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S7-S9 keys of `simulate --json` and `voxelize --json`: parts, vessel, up_axis.
 

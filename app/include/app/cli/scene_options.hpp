@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scene options every command that builds a scene shares (simulate, gui, render, bench):
 // one registration, one set of ranges (scene_request.hpp), one check (applySceneDefaults).

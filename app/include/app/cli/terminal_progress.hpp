@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC U4: long command-line work shows where it stands on an interactive terminal: a bar with
 // the rate and the time left when the end is known, the count, rate and time so far when it is

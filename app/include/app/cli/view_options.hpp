@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Options shared by `sandglass gui` and `sandglass render`: which scene, how it is drawn, and
 // the window size, turned into the application's start settings.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The canvas as the user works on it: the mouse path into strokes (through the id picker), the
 // draft image, undo and box obstacles, all on the running scene of a SceneHost. The window loop

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The mouse on the canvas (SPEC P1-P4, P7): a cursor position becomes a canvas column through
 // the id picker, and button down / held / up become the painter's begin / continue / end.

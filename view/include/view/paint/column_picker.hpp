@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC P1, picking by colour id: the canvas columns are drawn offscreen into an integer
 // (GL_R32UI) image, one id per column, so any canvas size works (the thesis's RGB code stopped

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC P5: the draft image as one textured quad stretched over the canvas rectangle,
 // half-transparent over the release row (PAINT_TOP) so the sand below stays visible, opaque

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // An offscreen colour + depth target (hidden-window rendering for `sandglass render`, tests and
 // the benchmark), and reading any bound framebuffer back as an RGB image for PNG screenshots.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Owning handles for OpenGL objects: each deletes its object once, when it goes out of scope,
 // so renderer classes hold no raw names they must remember to free.

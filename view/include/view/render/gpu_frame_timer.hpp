@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // GPU time of the frames drawn, read with timer queries. On a hardware GL the CPU's clock cannot
 // see it: draw calls return at once and a driver waits for the GPU in the buffer swap, on some

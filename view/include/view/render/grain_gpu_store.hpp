@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC V8: the grains as the GPU keeps them between frames, in buffer textures indexed by grain
 // id: its cell, grid, last move (cameFrom) and the step of that move (16 bytes, "place"); its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The per-grain records the GPU draws from (SPEC V1): one array per frame, uploaded in one
 // buffer update. The simulation's answers (R8 positions, R12 normals, R13 inner flags) are

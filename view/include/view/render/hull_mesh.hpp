@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The vessel drawn as faint glass (SPEC V6): every face between a cell sand may fill and a cell
 // it may not (INVALID or, for the hourglass, outside the grids), with a smoothed normal so the

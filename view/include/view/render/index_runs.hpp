@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which entries of a buffer mirrored on the GPU changed, one bit per entry: marking costs a bit,
 // and the marked entries come back as ascending runs without sorting them (a step lists the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A GL buffer the CPU changes entry by entry. Where the GL has ARB_buffer_storage (core in 4.4;
 // the renderer itself needs only 3.3) the buffer is mapped once, persistently and coherently, so

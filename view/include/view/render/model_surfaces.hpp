@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPEC S10: a model drawn as modelled. Frame and static parts are opaque, lit in their colour and
 // written to the depth buffer with the sand; glass parts come last, blended without depth

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How grains are drawn (SPEC V1-V6): the display half of the application state. The panels
 // change it; the renderer reads it every frame.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Draws a scene's sand and hull with OpenGL 3.3 (SPEC V1-V6). All per-grain work runs in the
 // vertex shader: the grains go up in one buffer update per frame (none when nothing moved) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // GLSL programs loaded at run time from shaders/ (one file per stage), so a shader can be
 // edited without rebuilding. The folder is found beside the executable (scene/data_paths.hpp).

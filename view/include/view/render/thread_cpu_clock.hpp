@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The calling thread's CPU time: what a frame costs the CPU, apart from waiting. With a software
 // GL (Mesa's llvmpipe) the driver runs its vertex processing on the caller's thread inside the
