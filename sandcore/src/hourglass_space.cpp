@@ -197,7 +197,7 @@ ColumnSpans columnSpansOf(const CellList& cells, const Grid& grid) {
 // than a cell, sealed by its own surface cells) joined through one column of cells: the column
 // where they come closest, nearest their common centre.
 bool joinAcrossNeck(const CellList& a, const ColumnSpans& spansA, const CellList& b, const ColumnSpans& spansB,
-                    const Grid& grid, Candidate& joined) {
+                    const MaskCells& walls, const Grid& grid, Candidate& joined) {
     struct Best { int gap = kMaxNeckWall + 1; int axis = -1; std::array<int, 3> from{}; double offCentre = 0.0; } best;
     for (int axis = 0; axis < 3; ++axis) {
         const auto [u, v] = planeOf(axis);
@@ -214,7 +214,15 @@ bool joinAcrossNeck(const CellList& a, const ColumnSpans& spansA, const CellList
             if (highB[column] < lowA[column]) gap = lowA[column] - highB[column] - 1, start = highB[column] + 1;
             else if (highA[column] < lowB[column]) gap = lowB[column] - highA[column] - 1, start = highA[column] + 1;
             else continue;
-            if (gap < 1) continue;
+            if (gap < 1 || gap > kMaxNeckWall) continue;
+            // Only a wall is cut: open air between two vessels, or another hollow, is no neck.
+            std::array<int, 3> c{};
+            c[std::size_t(axis)] = start;
+            c[std::size_t(u)] = int(column % width);
+            c[std::size_t(v)] = int(column / width);
+            bool allWall = true;
+            for (int i = 0; i < gap && allWall; ++i, ++c[std::size_t(axis)]) allWall = walls[grid.index(c)] != 0;
+            if (!allWall) continue;
             const double du = double(column % width) - centreU, dv = double(column / width) - centreV;
             const double offCentre = du * du + dv * dv;
             if (gap < best.gap || (gap == best.gap && offCentre < best.offCentre)) {
@@ -244,7 +252,8 @@ bool joinAcrossNeck(const CellList& a, const ColumnSpans& spansA, const CellList
 }
 
 // The spaces of one source with the necks under a cell between their largest ones opened.
-void addCandidates(std::vector<CellList> spaces, int source, const Grid& grid, std::vector<Candidate>& out) {
+void addCandidates(std::vector<CellList> spaces, int source, const MaskCells& walls, const Grid& grid,
+                   std::vector<Candidate>& out) {
     std::erase_if(spaces, [](const CellList& c) { return c.size() < kMinSpaceCells; });
     std::stable_sort(spaces.begin(), spaces.end(), [](const CellList& p, const CellList& q) { return p.size() > q.size(); });
     const std::size_t largest = std::min<std::size_t>(spaces.size(), 4);
@@ -256,7 +265,7 @@ void addCandidates(std::vector<CellList> spaces, int source, const Grid& grid, s
             if (spans[j].low[0].empty()) spans[j] = columnSpansOf(spaces[j], grid);
             Candidate joined;
             joined.source = source;
-            if (joinAcrossNeck(spaces[i], spans[i], spaces[j], spans[j], grid, joined)) out.push_back(std::move(joined));
+            if (joinAcrossNeck(spaces[i], spans[i], spaces[j], spans[j], walls, grid, joined)) out.push_back(std::move(joined));
         }
     for (CellList& cells : spaces) {
         Candidate candidate;
@@ -323,18 +332,20 @@ bool segmentCrosses(const std::array<double, 3>& p, int axis, int step, const Tr
 // S2 for a space the walls enclose: a cell is the space's when its centre is. The walls' cells
 // next to the space whose centre no wall separates from a neighbour in the space join it (the
 // cells the surface touches on its inner side), so a single-wall glass loses no layer of sand.
-// The column cut through a neck (`joint`) is no reference: it lies outside the glass by design.
-void addCentresOnTheSpaceSide(CellList& space, const CellList& joint, const MaskCells& walls,
+// The column cut through a neck (`joint`) is no reference: it lies outside the glass by design;
+// nor are the cells the space grew back into a closed gap (`band`): they may lie beyond a rim.
+void addCentresOnTheSpaceSide(CellList& space, const CellList& joint, const MaskCells& band, const MaskCells& walls,
                               const std::vector<TriangleMesh>& wallMeshes, const Grid& grid) {
     MaskCells inSpace(grid.cells(), 0);
-    for (std::uint32_t n : space) inSpace[n] = 1;
+    // References are free cells of the space only: no triangle touches them.
+    for (std::uint32_t n : space) inSpace[n] = !walls[n] && (band.empty() || !band[n]) ? 1 : 0;
     for (std::uint32_t n : joint) inSpace[n] = 0;
     // For each wall cell beside the space: the directions (bits 0..5: -x +x -y +y -z +z) to the
     // space, and those a triangle crosses.
     std::vector<std::uint8_t> towards(grid.cells(), 0), crossed(grid.cells(), 0);
     const std::array<std::array<int, 3>, 6> steps{{{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}}};
     for (std::size_t n = 0; n < grid.cells(); ++n) {
-        if (!walls[n]) continue;
+        if (!walls[n] || inSpace[n]) continue; // a wall cell added by an earlier pass is space already
         const std::array<int, 3> c = grid.coordinates(std::uint32_t(n));
         for (std::size_t d = 0; d < 6; ++d) {
             std::array<int, 3> m = c;
@@ -346,6 +357,8 @@ void addCentresOnTheSpaceSide(CellList& space, const CellList& joint, const Mask
             if (inGrid && inSpace[grid.index(m)]) towards[n] |= std::uint8_t(1u << d);
         }
     }
+    // A triangle that crosses the step from a cell to its neighbour in the space touches the cell:
+    // the neighbour is free, no triangle touches it.
     for (const TriangleMesh& mesh : wallMeshes)
         forEachTouchedCell(mesh, grid.size, [&](std::size_t triangle, std::uint32_t cell) {
             if (!towards[cell]) return;
@@ -420,7 +433,11 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
         appendSurfaceCells(gridMesh, grid.size, shell.surface);
         for (std::uint32_t n : shell.surface) owner[n] = owner[n] == UINT32_MAX ? std::uint32_t(s) : UINT32_MAX - 1;
         shell.closed = closednessOf(shells[s].mesh).closed;
-        const bool mayBeSand = !shells[s].roleFixed || shells[s].role == ShellRole::Sand;
+        // Modelled sand fills part of one bulb: a shell as long as the model on every axis is none.
+        const double longest = std::max({out.placement.size.x, out.placement.size.y, out.placement.size.z});
+        bool partial = false;
+        for (std::size_t a = 0; a < 3; ++a) partial = partial || shell.high[a] - shell.low[a] < kPartOfOneBulb * longest;
+        const bool mayBeSand = (!shells[s].roleFixed && partial) || shells[s].role == ShellRole::Sand;
         const bool mayBeVessel = !shells[s].roleFixed || shells[s].role == ShellRole::Glass;
         if ((shell.closed && mayBeVessel) || mayBeSand) shell.inside = insideCells(gridMesh, grid, shell, threads);
     }
@@ -435,10 +452,15 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
             out.roles[s] = looksLikeModelledSand(std::uint32_t(s), inGrid[s], owner, wallExtent, grid) ? ShellRole::Sand
                                                                                                        : ShellRole::Glass;
     }
+    // The walls, and which wall shell owns each wall cell (UINT32_MAX - 1 where several meet).
     MaskCells walls(grid.cells(), 0);
+    std::vector<std::uint32_t> wallOwner(grid.cells(), UINT32_MAX);
     for (std::size_t s = 0; s < shells.size(); ++s)
         if (out.roles[s] != ShellRole::Sand)
-            for (std::uint32_t n : inGrid[s].surface) walls[n] = 1;
+            for (std::uint32_t n : inGrid[s].surface) {
+                walls[n] = 1;
+                wallOwner[n] = wallOwner[n] == UINT32_MAX ? std::uint32_t(s) : UINT32_MAX - 1;
+            }
 
     // S8, W2: the candidates. A closed glass surface that holds no other wall encloses its sand
     // directly (its inside, as parity gives it); then the spaces the walls enclose, with ever wider gaps closed.
@@ -458,8 +480,8 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
         if (wraps) continue;
         CellList free;
         for (std::uint32_t n : shell.inside)
-            if (!walls[n] || owner[n] == s) free.push_back(n);
-        addCandidates(componentsOf(free, grid.size), -1, grid, candidates);
+            if (!walls[n] || wallOwner[n] == s) free.push_back(n);
+        addCandidates(componentsOf(free, grid.size), -1, walls, grid, candidates);
     }
     const std::size_t solidCandidates = candidates.size();
     // Each closing is independent of the others: with threads to spare they run side by side.
@@ -468,7 +490,7 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
         closings.push_back(std::async(threads > 1 ? std::launch::async : std::launch::deferred,
                                       [&walls, size = grid.size, closing] { return enclosedRegions(walls, size, closing); }));
     for (int closing = 0; closing <= settings.maxClosingCells; ++closing)
-        addCandidates(closings[std::size_t(closing)].get(), closing, grid, candidates);
+        addCandidates(closings[std::size_t(closing)].get(), closing, walls, grid, candidates);
     const Candidate* chosen = bestHourglass(candidates, grid);
     int axis = 1;
     bool plus = true;
@@ -481,8 +503,10 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
     } else {
         // W5: no hourglass. The largest enclosed space, else the inside of an open vessel, else the model.
         std::size_t largest = candidates.size();
-        for (std::size_t i = 0; i < candidates.size(); ++i)
+        for (std::size_t i = 0; i < candidates.size(); ++i) {
+            if (candidates[i].neckOpened) continue; // a column through a wall joins bulbs only
             if (largest == candidates.size() || candidates[i].cells.size() > candidates[largest].cells.size()) largest = i;
+        }
         if (largest < candidates.size()) {
             chosen = &candidates[largest];
             out.kind = largest < solidCandidates ? SandSpaceKind::Solid : SandSpaceKind::Cavity;
@@ -512,7 +536,12 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
             std::vector<TriangleMesh> wallMeshes;
             for (std::size_t s = 0; s < shells.size(); ++s)
                 if (out.roles[s] != ShellRole::Sand) wallMeshes.push_back(gridMeshes[s]);
-            addCentresOnTheSpaceSide(cells, chosen->joint, walls, wallMeshes, grid);
+            MaskCells band;
+            if (chosen->source > 0) {
+                band = grownBy(walls, grid.size, chosen->source);
+                for (std::size_t n = 0; n < band.size(); ++n) band[n] = band[n] && !walls[n];
+            }
+            addCentresOnTheSpaceSide(cells, chosen->joint, band, walls, wallMeshes, grid);
         }
         out.space = maskOf(cells, grid.size);
     } else if (!open.empty()) {
@@ -570,7 +599,8 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
             const std::array<int, 3> c = grid.coordinates(std::uint32_t(n));
             for (std::size_t a = 0; a < 3; ++a) spaceLow[a] = std::min(spaceLow[a], c[a]), spaceHigh[a] = std::max(spaceHigh[a], c[a]);
         }
-    for (std::size_t s = 0; s < shells.size(); ++s) {
+    const bool spaceEmpty = spaceHigh[0] < 0;
+    for (std::size_t s = 0; s < shells.size() && !spaceEmpty; ++s) {
         const GridShell& shell = inGrid[s];
         if (shells[s].roleFixed || out.roles[s] == ShellRole::Sand || shell.surface.empty()) continue;
         const double cells = double(shell.surface.size());
@@ -583,7 +613,7 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
     }
 
     for (const Candidate& c : candidates)
-        out.enclosedSpaces += c.source == out.closingCells && !c.neckOpened ? 1 : 0;
+        out.enclosedSpaces += c.source == 0 && !c.neckOpened ? 1 : 0;
     out.space = turnToUp(out.space, out.up);
     out.modelledSand = turnToUp(out.modelledSand, out.up);
     return out;

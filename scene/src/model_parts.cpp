@@ -53,14 +53,26 @@ void nameUniquely(std::vector<ModelPart>& parts, const std::string& path) {
     }
 }
 
-std::string lowered(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return text;
-}
-
+// A word of the name, not any substring: "Capsule" is no cap, "Landscape" no sand. Words run
+// between non-letters and at lower-to-upper case changes ("GlassTop" holds "glass").
 bool nameHasAny(const std::string& name, std::initializer_list<const char*> words) {
-    const std::string low = lowered(name);
-    return std::any_of(words.begin(), words.end(), [&](const char* w) { return low.find(w) != std::string::npos; });
+    std::vector<std::string> parts(1);
+    for (std::size_t i = 0; i < name.size(); ++i) {
+        const auto c = static_cast<unsigned char>(name[i]);
+        const bool startsWord = std::isupper(c) && i > 0 && std::islower(static_cast<unsigned char>(name[i - 1]));
+        if (!std::isalpha(c) || startsWord) {
+            if (!parts.back().empty()) parts.emplace_back();
+            if (!std::isalpha(c)) continue;
+        }
+        parts.back().push_back(char(std::tolower(c)));
+    }
+    for (const std::string& part : parts)
+        for (const char* w : words) {
+            const std::string word = w;
+            // A plural or a number after it still names it: "plates", "post2".
+            if (part == word || part == word + "s" || part == word + "es") return true;
+        }
+    return false;
 }
 
 } // namespace
@@ -165,13 +177,12 @@ void chooseHourglassRoles(std::vector<ModelPart>& parts) {
     std::map<std::string, int> shellsOf;
     for (const ModelPart& part : parts) ++shellsOf[part.object];
     for (ModelPart& part : parts) {
-        std::string name = lowered(part.object);
-        // "hourglass" and "sandglass" name the whole model, not its glass or its sand.
-        for (const std::string whole : {"hourglass", "sandglass"})
-            for (std::size_t at = name.find(whole); at != std::string::npos; at = name.find(whole)) name.erase(at, whole.size());
+        // "hourglass", "sandglass", "sand timer" and "Sanduhr" name the whole model, not its glass
+        // or its sand: as whole words they match no hint below.
+        const std::string& name = part.object;
         const bool glass = nameHasAny(name, {"glass", "vessel", "bulb"});
         const bool frame = nameHasAny(name, {"frame", "base", "cap", "plate", "pillar", "post", "stand", "rod", "wood"});
-        const bool sand = nameHasAny(name, {"sand"}) && !glass;
+        const bool sand = nameHasAny(name, {"sand"}) && !glass && !nameHasAny(name, {"timer", "clock", "uhr"});
         part.role = sand ? PartRole::Sand : frame && !glass ? PartRole::Frame : PartRole::Vessel;
         part.roleFixed = sand || ((glass || frame) && shellsOf[part.object] == 1);
     }

@@ -147,8 +147,11 @@ void writePointCloud(const std::filesystem::path& file, const sandcore::Scene& s
     requireWritableFileTarget(file);
     const std::uint32_t count = std::uint32_t(scene.grainCount());
     const sandcore::DisplaySettings& display = frame.display;
-    // The cell size in the frame's units (the model's: its cells are 1 / scale model units).
-    const double cellSize = frame.model ? 1.0 / frame.model->placement.scale[1] : double(display.cellSize);
+    // The cell size in the frame's units: the model's cells are 1 / scale model units along the
+    // model axis that stands up (axes differ only with --stretch).
+    const double cellSize = frame.model
+                                ? 1.0 / frame.model->placement.scale[std::size_t(sandcore::axisTurnFor(frame.model->up).source[1])]
+                                : double(display.cellSize);
     char header[512];
     std::snprintf(header, sizeof header,
                   "ply\nformat binary_little_endian 1.0\ncomment sandglass grains at their display positions, %s\n"

@@ -66,7 +66,7 @@ struct HourglassSpace {
     bool isHourglass = false;          ///< the space has two bulbs and a neck
     int closingCells = 0;              ///< the walls' gaps that had to be closed, cells (0 = none)
     bool neckOpened = false;           ///< a neck narrower than a cell was opened to one cell
-    int enclosedSpaces = 0;            ///< spaces the walls enclose at the chosen closing
+    int enclosedSpaces = 0;            ///< spaces the walls enclose with no gap closed (cavities of 27 cells or more)
     std::vector<ShellRole> roles;      ///< each shell's role as used, in the order given
     /// W5: empty when an hourglass was found; otherwise one line saying why not and what the
     /// space is instead.
@@ -79,8 +79,8 @@ struct HourglassSpace {
 /// neck (the bulb holding more modelled sand on top). Shells not fixed become modelled sand when
 /// walls enclose them and they fill part of one bulb, and frame when the sand space does not
 /// border on them. Without an hourglass, the inside of an open vessel or the model's own inside
-/// is used, with a note. Throws std::invalid_argument for shells without triangles or a grid
-/// placeInGrid refuses.
+/// is used, with a note. Shells without triangles are skipped; throws std::invalid_argument when
+/// there is no shell or placeInGrid refuses the grid.
 HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const HourglassSpaceSettings& settings);
 
 /// An hourglass scene from a sand space: makeHourglassScene, with the modelled sand as the
