@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "sandcore/cavity.hpp"
 
+#include "wall_cavities.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -41,43 +43,13 @@ bool triangleTouchesBox(const Vec& a, const Vec& b, const Vec& c, double h) {
 
 CavitySearch findCavities(const InsideMask& solid) {
     const Int3 s = solid.size;
-    const std::size_t layer = std::size_t(s.x) * std::size_t(s.z);
     // One byte per cell (wall 1, outside 2, a cavity 3): a label per cavity would cost four.
     constexpr std::uint8_t kUnvisited = 0, kOutside = 2, kCavity = 3;
     MaskCells state = solid.inside;
     std::vector<std::uint32_t> queue;
-    // Marks every cell holding `from` that is 6-connected to seed (which holds `from`) with
-    // `mark`; returns how many. A scanline fill: each popped cell grows to the whole run of
-    // `from` cells along x, and the run pushes one cell per run it touches in the four rows
-    // beside it (z and y), so the queue sees a few entries per run instead of six per cell.
+    // Marks every cell holding `from` that is 6-connected to seed with `mark`; returns how many.
     auto fill = [&](std::size_t seed, std::uint8_t mark, std::uint8_t from, MaskCells& cells) {
-        std::int64_t count = 0;
-        const std::size_t width = std::size_t(s.x);
-        queue.clear();
-        queue.push_back(std::uint32_t(seed));
-        while (!queue.empty()) {
-            const std::size_t n = queue.back();
-            queue.pop_back();
-            if (cells[n] != from) continue; // filled since it was pushed
-            const std::size_t rowStart = n - n % width;
-            std::size_t low = n, high = n; // the run is [low, high]
-            while (low > rowStart && cells[low - 1] == from) --low;
-            while (high + 1 < rowStart + width && cells[high + 1] == from) ++high;
-            std::fill(cells.begin() + std::ptrdiff_t(low), cells.begin() + std::ptrdiff_t(high + 1), mark);
-            count += std::int64_t(high - low + 1);
-            const std::size_t row = rowStart / width; // z + size.z * y
-            const std::size_t z = row % std::size_t(s.z), y = row / std::size_t(s.z);
-            auto pushRuns = [&](bool inGrid, std::size_t offsetLow) {
-                if (!inGrid) return;
-                for (std::size_t m = offsetLow; m <= offsetLow + (high - low); ++m)
-                    if (cells[m] == from && (m == offsetLow || cells[m - 1] != from)) queue.push_back(std::uint32_t(m));
-            };
-            pushRuns(z > 0, low - width);
-            pushRuns(z + 1 < std::size_t(s.z), low + width);
-            pushRuns(y > 0, low - layer);
-            pushRuns(y + 1 < std::size_t(s.y), low + layer);
-        }
-        return count;
+        return fillRuns(cells, s, seed, from, mark, queue);
     };
     CavitySearch result;
     // The fills from the border cells (only those: the order of the seeds changes nothing).

@@ -33,36 +33,6 @@ template <class Visit> void forEachLine(Int3 size, int axis, Visit&& visit) {
             for (int x = 0; x < (axis == 0 ? 1 : size.x); ++x) visit(std::size_t(x) + row * std::size_t(z) + layer * std::size_t(y));
 }
 
-// Marks with `mark` every cell 6-connected to seed through cells labelled `from`. A scanline
-// fill: each popped cell grows to its whole run along x, and the run queues one cell per run it
-// touches in the four rows beside it, so the queue holds a few entries per run, not six per cell.
-template <class Label>
-void fillRuns(std::vector<Label>& label, Int3 size, std::size_t seed, Label from, Label mark, std::vector<std::uint32_t>& queue) {
-    const std::size_t width = std::size_t(size.x), layer = width * std::size_t(size.z);
-    queue.assign(1, std::uint32_t(seed));
-    while (!queue.empty()) {
-        const std::size_t n = queue.back();
-        queue.pop_back();
-        if (label[n] != from) continue;
-        const std::size_t rowStart = n - n % width;
-        std::size_t low = n, high = n;
-        while (low > rowStart && label[low - 1] == from) --low;
-        while (high + 1 < rowStart + width && label[high + 1] == from) ++high;
-        std::fill(label.begin() + std::ptrdiff_t(low), label.begin() + std::ptrdiff_t(high + 1), mark);
-        const std::size_t row = rowStart / width;
-        const std::size_t z = row % std::size_t(size.z), y = row / std::size_t(size.z);
-        auto pushRuns = [&](bool inGrid, std::size_t offsetLow) {
-            if (!inGrid) return;
-            for (std::size_t m = offsetLow; m <= offsetLow + (high - low); ++m)
-                if (label[m] == from && (m == offsetLow || label[m - 1] != from)) queue.push_back(std::uint32_t(m));
-        };
-        pushRuns(z > 0, low - width);
-        pushRuns(z + 1 < std::size_t(size.z), low + width);
-        pushRuns(y > 0, low - layer);
-        pushRuns(y + 1 < std::size_t(size.y), low + layer);
-    }
-}
-
 struct Groups {
     std::vector<std::int32_t> parent;
     std::int32_t add() {

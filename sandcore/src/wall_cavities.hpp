@@ -4,6 +4,7 @@
 
 #include "sandcore/inside_mask.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -11,6 +12,40 @@ namespace sandcore {
 
 /// Cells as indices into a grid (InsideMask's layout), ascending.
 using CellList = std::vector<std::uint32_t>;
+
+/// Marks with `mark` every cell 6-connected to `seed` through cells holding `from` (the seed holds
+/// it), in a grid of `size` (InsideMask's layout); returns how many. A scanline fill: each popped
+/// cell grows to its whole run along x, and the run queues one cell per run it touches in the
+/// four rows beside it, so the queue holds a few entries per run, not six per cell.
+template <class Cells, class Label>
+std::int64_t fillRuns(Cells& cells, Int3 size, std::size_t seed, Label from, Label mark, std::vector<std::uint32_t>& queue) {
+    const std::size_t width = std::size_t(size.x), layer = width * std::size_t(size.z);
+    std::int64_t count = 0;
+    queue.assign(1, std::uint32_t(seed));
+    while (!queue.empty()) {
+        const std::size_t n = queue.back();
+        queue.pop_back();
+        if (cells[n] != from) continue; // filled since it was queued
+        const std::size_t rowStart = n - n % width;
+        std::size_t low = n, high = n; // the run is [low, high]
+        while (low > rowStart && cells[low - 1] == from) --low;
+        while (high + 1 < rowStart + width && cells[high + 1] == from) ++high;
+        std::fill(cells.begin() + std::ptrdiff_t(low), cells.begin() + std::ptrdiff_t(high + 1), mark);
+        count += std::int64_t(high - low + 1);
+        const std::size_t row = rowStart / width; // z + size.z * y
+        const std::size_t z = row % std::size_t(size.z), y = row / std::size_t(size.z);
+        auto queueRuns = [&](bool inGrid, std::size_t offsetLow) {
+            if (!inGrid) return;
+            for (std::size_t m = offsetLow; m <= offsetLow + (high - low); ++m)
+                if (cells[m] == from && (m == offsetLow || cells[m - 1] != from)) queue.push_back(std::uint32_t(m));
+        };
+        queueRuns(z > 0, low - width);
+        queueRuns(z + 1 < std::size_t(size.z), low + width);
+        queueRuns(y > 0, low - layer);
+        queueRuns(y + 1 < std::size_t(size.y), low + layer);
+    }
+    return count;
+}
 
 /// `cells` (1 = set) grown by `radius` cells in every direction: a cube of side 2 * radius + 1.
 MaskCells grownBy(const MaskCells& cells, Int3 size, int radius);
