@@ -6,7 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
+#include <future>
+#include <iterator>
 #include <vector>
 
 namespace sandcore {
@@ -15,15 +16,22 @@ namespace {
 
 using Vec = std::array<double, 3>;
 
+// Fewer triangles than this per thread are not worth a thread of their own.
+constexpr std::size_t kTrianglesPerThread = 100'000;
+
 Vec minus(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec cross(const Vec& a, const Vec& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-// Akenine-Moeller's separating-axis test: does the triangle (already relative to the box's
-// centre) touch the box of half size h? Touching counts, so a wall on a cell face marks both cells.
-bool triangleTouchesBox(const Vec& a, const Vec& b, const Vec& c, double h) {
+} // namespace
+
+bool triangleTouchesCell(const std::array<Vec, 3>& corners) {
+    const Vec& a = corners[0];
+    const Vec& b = corners[1];
+    const Vec& c = corners[2];
+    constexpr double h = 0.5;
     const Vec edges[3] = {minus(b, a), minus(c, b), minus(a, c)};
     const Vec axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     auto separated = [&](const Vec& axis) {
@@ -38,8 +46,6 @@ bool triangleTouchesBox(const Vec& a, const Vec& b, const Vec& c, double h) {
         if (separated(u)) return false;
     return !separated(cross(edges[0], edges[1]));
 }
-
-} // namespace
 
 CavitySearch findCavities(const InsideMask& solid) {
     const Int3 s = solid.size;
@@ -98,38 +104,29 @@ TriangleMesh toGridSpace(const TriangleMesh& mesh, const VoxelPlacement& p) {
     return grid;
 }
 
-void forEachTouchedCell(const TriangleMesh& gridMesh, Int3 size,
-                        const std::function<void(std::size_t triangle, std::uint32_t cell)>& visit) {
-    const int limits[3] = {size.x, size.y, size.z};
-    for (std::size_t n = 0; n < gridMesh.triangles.size(); ++n) {
-        const auto& t = gridMesh.triangles[n];
-        Vec corner[3];
-        for (int i = 0; i < 3; ++i) {
-            const Vec3 v = gridMesh.vertices[t[std::size_t(i)]];
-            corner[i] = {double(v.x), double(v.y), double(v.z)};
-        }
-        int lo[3], hi[3];
-        for (std::size_t a = 0; a < 3; ++a) {
-            const double mn = std::min({corner[0][a], corner[1][a], corner[2][a]});
-            const double mx = std::max({corner[0][a], corner[1][a], corner[2][a]});
-            lo[a] = std::max(0, int(std::floor(mn)) - (std::floor(mn) == mn ? 1 : 0));
-            hi[a] = std::min(limits[a] - 1, int(std::floor(mx)));
-        }
-        for (int y = lo[1]; y <= hi[1]; ++y)
-            for (int z = lo[2]; z <= hi[2]; ++z)
-                for (int x = lo[0]; x <= hi[0]; ++x) {
-                    const Vec centre{x + 0.5, y + 0.5, z + 0.5};
-                    if (triangleTouchesBox(minus(corner[0], centre), minus(corner[1], centre), minus(corner[2], centre), 0.5))
-                        visit(n, std::uint32_t(std::size_t(x) + std::size_t(size.x) * (std::size_t(z) + std::size_t(size.z) * std::size_t(y))));
-                }
+void appendSurfaceCells(const TriangleMesh& gridMesh, Int3 size, std::vector<std::uint32_t>& cells, int threads) {
+    // Each thread lists the cells of its share of the triangles; the lists are merged in order.
+    const std::size_t triangles = gridMesh.triangles.size();
+    const auto parts = std::size_t(std::clamp<std::size_t>(triangles / kTrianglesPerThread, 1, std::size_t(std::max(1, threads))));
+    std::vector<std::future<std::vector<std::uint32_t>>> lists;
+    for (std::size_t part = 0; part < parts; ++part)
+        lists.push_back(std::async(part + 1 < parts ? std::launch::async : std::launch::deferred, [&, part] {
+            std::vector<std::uint32_t> touched;
+            forEachTouchedCell(gridMesh, size, [&](std::size_t, std::uint32_t cell) { touched.push_back(cell); },
+                               triangles * part / parts, triangles * (part + 1) / parts);
+            std::sort(touched.begin(), touched.end());
+            touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+            return touched;
+        }));
+    std::vector<std::uint32_t> all;
+    for (auto& list : lists) {
+        std::vector<std::uint32_t> part = list.get();
+        std::vector<std::uint32_t> merged;
+        merged.reserve(all.size() + part.size());
+        std::set_union(all.begin(), all.end(), part.begin(), part.end(), std::back_inserter(merged));
+        all = std::move(merged);
     }
-}
-
-void appendSurfaceCells(const TriangleMesh& gridMesh, Int3 size, std::vector<std::uint32_t>& cells) {
-    const std::size_t first = cells.size();
-    forEachTouchedCell(gridMesh, size, [&](std::size_t, std::uint32_t cell) { cells.push_back(cell); });
-    std::sort(cells.begin() + std::ptrdiff_t(first), cells.end());
-    cells.erase(std::unique(cells.begin() + std::ptrdiff_t(first), cells.end()), cells.end());
+    cells.insert(cells.end(), all.begin(), all.end());
 }
 
 InsideMask surfaceCells(const TriangleMesh& gridMesh, Int3 size) {

@@ -430,9 +430,9 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
             wallLow[a] = std::min(wallLow[a], bounds.min[a]);
             wallHigh[a] = std::max(wallHigh[a], bounds.max[a]);
         }
-        appendSurfaceCells(gridMesh, grid.size, shell.surface);
+        appendSurfaceCells(gridMesh, grid.size, shell.surface, threads);
         for (std::uint32_t n : shell.surface) owner[n] = owner[n] == UINT32_MAX ? std::uint32_t(s) : UINT32_MAX - 1;
-        shell.closed = closednessOf(shells[s].mesh).closed;
+        shell.closed = shells[s].closed ? *shells[s].closed : closednessOf(shells[s].mesh).closed;
         // Modelled sand fills part of one bulb: a shell as long as the model on every axis is none.
         const double longest = std::max({out.placement.size.x, out.placement.size.y, out.placement.size.z});
         bool partial = false;

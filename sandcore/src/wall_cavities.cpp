@@ -165,12 +165,10 @@ std::vector<CellList> enclosedRegions(const MaskCells& walls, Int3 size, int clo
 
 std::vector<CellList> componentsOf(const CellList& cells, Int3 size) {
     const Neighbours around(size);
-    // Component index per listed cell, found through a binary search of the ascending list.
+    // Each listed cell's position in the list, by cell (-1: not listed).
+    std::vector<std::int32_t> position(std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z), -1);
+    for (std::size_t i = 0; i < cells.size(); ++i) position[cells[i]] = std::int32_t(i);
     std::vector<std::int32_t> component(cells.size(), -1);
-    auto position = [&](std::size_t n) -> std::ptrdiff_t {
-        const auto it = std::lower_bound(cells.begin(), cells.end(), std::uint32_t(n));
-        return it != cells.end() && *it == n ? it - cells.begin() : -1;
-    };
     std::vector<CellList> out;
     std::vector<std::size_t> queue;
     for (std::size_t i = 0; i < cells.size(); ++i) {
@@ -184,7 +182,7 @@ std::vector<CellList> componentsOf(const CellList& cells, Int3 size) {
             queue.pop_back();
             out.back().push_back(cells[at]);
             around.forEach(cells[at], [&](std::size_t m) {
-                const std::ptrdiff_t p = position(m);
+                const std::int32_t p = position[m];
                 if (p >= 0 && component[std::size_t(p)] < 0) {
                     component[std::size_t(p)] = id;
                     queue.push_back(std::size_t(p));

@@ -3,8 +3,11 @@
 // SPEC W2: the spaces a model's walls enclose, with gaps of a few cells closed. Private to sandcore.
 
 #include "sandcore/inside_mask.hpp"
+#include "sandcore/triangle_mesh.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -45,6 +48,49 @@ std::int64_t fillRuns(Cells& cells, Int3 size, std::size_t seed, Label from, Lab
         queueRuns(y + 1 < std::size_t(size.y), low + layer);
     }
     return count;
+}
+
+/// Does the triangle (corners relative to a cell's centre, cell units) touch the closed cell box?
+/// Akenine-Moeller's separating-axis test; touching counts, so a wall on a cell face marks both cells.
+bool triangleTouchesCell(const std::array<std::array<double, 3>, 3>& corners);
+
+/// Calls visit(triangle index, cell index) for every cell each triangle of the grid-space mesh
+/// touches (closed cell boxes), as surfaceCells() decides it; only triangles [first, last) when given.
+template <class Visit>
+void forEachTouchedCell(const TriangleMesh& gridMesh, Int3 size, Visit&& visit, std::size_t first = 0,
+                        std::size_t last = SIZE_MAX) {
+    const int limits[3] = {size.x, size.y, size.z};
+    for (std::size_t n = first; n < std::min(last, gridMesh.triangles.size()); ++n) {
+        std::array<std::array<double, 3>, 3> corner;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const Vec3 v = gridMesh.vertices[gridMesh.triangles[n][i]];
+            corner[i] = {double(v.x), double(v.y), double(v.z)};
+        }
+        int lo[3], hi[3], spanned = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const double mn = std::min({corner[0][a], corner[1][a], corner[2][a]});
+            const double mx = std::max({corner[0][a], corner[1][a], corner[2][a]});
+            lo[a] = std::max(0, int(std::floor(mn)) - (std::floor(mn) == mn ? 1 : 0));
+            hi[a] = std::min(limits[a] - 1, int(std::floor(mx)));
+            spanned += hi[a] > lo[a] ? 1 : 0;
+        }
+        // Within one layer of cells on two axes, the triangle touches every cell its bounds cover:
+        // it is connected, so it meets every slab of the third axis between its lowest and highest
+        // corner, and there it lies inside the one cell of the other two.
+        const bool everyCell = spanned <= 1;
+        for (int y = lo[1]; y <= hi[1]; ++y)
+            for (int z = lo[2]; z <= hi[2]; ++z)
+                for (int x = lo[0]; x <= hi[0]; ++x) {
+                    if (!everyCell) {
+                        const double centre[3] = {x + 0.5, y + 0.5, z + 0.5};
+                        std::array<std::array<double, 3>, 3> relative;
+                        for (std::size_t i = 0; i < 3; ++i)
+                            for (std::size_t a = 0; a < 3; ++a) relative[i][a] = corner[i][a] - centre[a];
+                        if (!triangleTouchesCell(relative)) continue;
+                    }
+                    visit(n, std::uint32_t(std::size_t(x) + std::size_t(size.x) * (std::size_t(z) + std::size_t(size.z) * std::size_t(y))));
+                }
+    }
 }
 
 /// `cells` (1 = set) grown by `radius` cells in every direction: a cube of side 2 * radius + 1.

@@ -53,7 +53,7 @@ void findHourglass(SandSpace& out, const sandcore::VoxelizeSettings& settings, c
     const auto start = Clock::now();
     std::vector<sandcore::ModelShell> shells;
     shells.reserve(out.parts.size());
-    for (const ModelPart& part : out.parts) shells.push_back({part.mesh, shellRoleOf(part.role), part.roleFixed});
+    for (const ModelPart& part : out.parts) shells.push_back({part.mesh, shellRoleOf(part.role), part.roleFixed, part.closed});
     sandcore::HourglassSpaceSettings search;
     search.voxelize = settings;
     search.up = request.up;

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 #include <stdexcept>
 
 namespace sandglass::wild {
@@ -218,6 +220,32 @@ std::size_t WildModel::triangleCount() const {
     std::size_t count = 0;
     for (const Object& object : objects) count += object.mesh.triangles.size();
     return count;
+}
+
+sandcore::TriangleMesh subdivided(const sandcore::TriangleMesh& mesh, int times) {
+    sandcore::TriangleMesh out = mesh;
+    for (int round = 0; round < times; ++round) {
+        sandcore::TriangleMesh finer;
+        finer.vertices = out.vertices;
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
+        auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+            const auto [it, added] = midpoints.try_emplace({std::min(a, b), std::max(a, b)}, std::uint32_t(finer.vertices.size()));
+            if (added) {
+                const sandcore::Vec3 p = out.vertices[a], q = out.vertices[b];
+                finer.vertices.push_back({0.5f * (p.x + q.x), 0.5f * (p.y + q.y), 0.5f * (p.z + q.z)});
+            }
+            return it->second;
+        };
+        for (const auto& [a, b, c] : out.triangles) {
+            const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+            finer.triangles.push_back({a, ab, ca});
+            finer.triangles.push_back({ab, b, bc});
+            finer.triangles.push_back({ca, bc, c});
+            finer.triangles.push_back({ab, bc, ca});
+        }
+        out = std::move(finer);
+    }
+    return out;
 }
 
 } // namespace sandglass::wild

@@ -153,6 +153,10 @@ struct WildModel {
 /// any standard library (cos and sin aside).
 WildModel generate(ModelClass modelClass, std::uint64_t seed);
 
+/// The same surface with every triangle split into four, `times` times over (edge midpoints
+/// shared between neighbours, so a closed mesh stays closed).
+sandcore::TriangleMesh subdivided(const sandcore::TriangleMesh& mesh, int times);
+
 /// Writes an OBJ file: one "o NAME" per object, then its v and f lines. Throws std::runtime_error
 /// when the file cannot be written.
 void writeObj(const WildModel& model, const std::filesystem::path& path);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // wild_report: loads generated models of every class as a user would (no options) and prints the
 // share of each class that passes the checks of wild_checks.hpp, with the first failures.
-//   wild_report [--count N] [--seed S] [--res R] [--no-drain]
+//   wild_report [--count N] [--seed S] [--res R] [--no-drain] [--failures]
+// --failures also lists every failing model on standard error as it is found.
 #include "wild_models/wild_checks.hpp"
 
 #include <algorithm>
@@ -17,14 +18,16 @@ int main(int argc, char** argv) {
     int count = 20;
     std::uint64_t seed = 1;
     CheckSettings settings;
+    bool everyFailure = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--count" && i + 1 < argc) count = std::atoi(argv[++i]);
         else if (arg == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
         else if (arg == "--res" && i + 1 < argc) settings.resolution = std::atoi(argv[++i]);
         else if (arg == "--no-drain") settings.drain = false;
+        else if (arg == "--failures") everyFailure = true;
         else {
-            std::fprintf(stderr, "usage: wild_report [--count N] [--seed S] [--res R] [--no-drain]\n");
+            std::fprintf(stderr, "usage: wild_report [--count N] [--seed S] [--res R] [--no-drain] [--failures]\n");
             return 2;
         }
     }
@@ -42,8 +45,10 @@ int main(int argc, char** argv) {
             const ModelCheck check = checkModel(model, file, settings);
             passed += check.passed() ? 1 : 0;
             if (check.loaded) milliseconds.push_back(check.loadMilliseconds);
-            if (!check.passed() && firstFailure.empty())
-                firstFailure = "seed " + std::to_string(s) + " " + file.extension().string() + ": " + check.failure;
+            if (check.passed()) continue;
+            const std::string failure = "seed " + std::to_string(s) + " " + file.extension().string() + ": " + check.failure;
+            if (firstFailure.empty()) firstFailure = failure;
+            if (everyFailure) std::fprintf(stderr, "%s %s\n", className(modelClass), failure.c_str());
         }
         std::sort(milliseconds.begin(), milliseconds.end());
         const double median = milliseconds.empty() ? 0.0 : milliseconds[milliseconds.size() / 2];

@@ -9,7 +9,6 @@
 #include "sandcore/voxelizer.hpp"
 
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace sandcore {
@@ -35,12 +34,8 @@ TriangleMesh toGridSpace(const TriangleMesh& mesh, const VoxelPlacement& placeme
 /// boxes, separating-axis test), so a wall thinner than a cell still seals what it encloses.
 InsideMask surfaceCells(const TriangleMesh& gridMesh, Int3 size);
 
-/// Calls visit(triangle index, cell index) for every cell each triangle of the grid-space mesh
-/// touches, as surfaceCells() decides it.
-void forEachTouchedCell(const TriangleMesh& gridMesh, Int3 size,
-                        const std::function<void(std::size_t triangle, std::uint32_t cell)>& visit);
-
-/// The cells surfaceCells() marks, appended to `cells` as ascending indices (InsideMask's layout).
-void appendSurfaceCells(const TriangleMesh& gridMesh, Int3 size, std::vector<std::uint32_t>& cells);
+/// The cells surfaceCells() marks, appended to `cells` as ascending indices (InsideMask's layout),
+/// found on up to `threads` threads.
+void appendSurfaceCells(const TriangleMesh& gridMesh, Int3 size, std::vector<std::uint32_t>& cells, int threads = 1);
 
 } // namespace sandcore

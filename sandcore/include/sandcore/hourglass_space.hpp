@@ -34,6 +34,8 @@ struct ModelShell {
     /// The role came from a name or from the user and is kept; otherwise the search decides
     /// between glass, frame and modelled sand from the shell's place in the model.
     bool roleFixed = false;
+    /// Whether the mesh is closed, when the caller already knows (closednessOf()); found otherwise.
+    std::optional<bool> closed = std::nullopt;
 };
 
 /// Where the sand of a model hourglass lives.
