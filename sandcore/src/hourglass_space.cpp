@@ -3,7 +3,10 @@
 
 #include "sandcore/cavity.hpp"
 #include "sandcore/mesh_shells.hpp"
+#include "neck_joint.hpp"
+#include "space_grid.hpp"
 #include "wall_cavities.hpp"
+#include "wall_side_cells.hpp"
 
 #include <algorithm>
 #include <future>
@@ -43,25 +46,9 @@ constexpr double kPartOfOneBulb = 0.55;
 constexpr double kTouchingShare = 0.35;
 constexpr double kNearShare = 0.5;
 constexpr int kNearCells = 3;
-// A neck narrower than a cell fills with its own wall cells over its length: bulbs up to this
-// many cells apart along an axis are joined through one column.
-constexpr int kMaxNeckWall = 8;
 // Two spaces are the two bulbs of one hourglass only when the smaller holds at least this share
 // of the larger: a sliver in a wall or a post's inside is no bulb.
 constexpr double kBulbShare = 0.2;
-
-struct Grid {
-    Int3 size;
-    std::size_t cells() const { return std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z); }
-    std::array<int, 3> coordinates(std::uint32_t n) const {
-        const std::size_t row = std::size_t(size.x), layer = row * std::size_t(size.z);
-        return {int(n % row), int(n / layer), int((n / row) % std::size_t(size.z))};
-    }
-    std::uint32_t index(const std::array<int, 3>& c) const {
-        return std::uint32_t(std::size_t(c[0]) + std::size_t(size.x) * (std::size_t(c[2]) + std::size_t(size.z) * std::size_t(c[1])));
-    }
-    int length(int axis) const { return axis == 0 ? size.x : axis == 1 ? size.y : size.z; }
-};
 
 // A shell in the model's grid.
 struct GridShell {
@@ -159,98 +146,6 @@ void findNeck(Candidate& candidate, const Grid& grid) {
     }
 }
 
-// Where a space lies along each column across an axis: its lowest and highest layer there.
-struct ColumnSpans {
-    std::array<std::vector<int>, 3> low, high; // per axis, per column of the plane across it
-    std::array<double, 3> centreU{}, centreV{};  // the space's centre in each plane
-};
-
-// The plane across an axis: its two axes.
-std::array<int, 2> planeOf(int axis) { return {axis == 0 ? 1 : 0, axis == 2 ? 1 : 2}; }
-
-ColumnSpans columnSpansOf(const CellList& cells, const Grid& grid) {
-    ColumnSpans spans;
-    for (int axis = 0; axis < 3; ++axis) {
-        const auto [u, v] = planeOf(axis);
-        const std::size_t plane = std::size_t(grid.length(u)) * std::size_t(grid.length(v));
-        spans.low[std::size_t(axis)].assign(plane, INT32_MAX);
-        spans.high[std::size_t(axis)].assign(plane, -1);
-    }
-    for (std::uint32_t n : cells) {
-        const std::array<int, 3> c = grid.coordinates(n);
-        for (int axis = 0; axis < 3; ++axis) {
-            const auto [u, v] = planeOf(axis);
-            const std::size_t column = std::size_t(c[std::size_t(u)]) + std::size_t(grid.length(u)) * std::size_t(c[std::size_t(v)]);
-            int& low = spans.low[std::size_t(axis)][column];
-            int& high = spans.high[std::size_t(axis)][column];
-            low = std::min(low, c[std::size_t(axis)]);
-            high = std::max(high, c[std::size_t(axis)]);
-            spans.centreU[std::size_t(axis)] += c[std::size_t(u)];
-            spans.centreV[std::size_t(axis)] += c[std::size_t(v)];
-        }
-    }
-    for (std::size_t a = 0; a < 3; ++a) spans.centreU[a] /= double(cells.size()), spans.centreV[a] /= double(cells.size());
-    return spans;
-}
-
-// W2: two bulbs that a wall under kMaxNeckWall cells separates along an axis (a neck narrower
-// than a cell, sealed by its own surface cells) joined through one column of cells: the column
-// where they come closest, nearest their common centre.
-bool joinAcrossNeck(const CellList& a, const ColumnSpans& spansA, const CellList& b, const ColumnSpans& spansB,
-                    const MaskCells& walls, const Grid& grid, Candidate& joined) {
-    struct Best { int gap = kMaxNeckWall + 1; int axis = -1; std::array<int, 3> from{}; double offCentre = 0.0; } best;
-    for (int axis = 0; axis < 3; ++axis) {
-        const auto [u, v] = planeOf(axis);
-        const auto width = std::size_t(grid.length(u));
-        const std::vector<int>& lowA = spansA.low[std::size_t(axis)];
-        const std::vector<int>& highA = spansA.high[std::size_t(axis)];
-        const std::vector<int>& lowB = spansB.low[std::size_t(axis)];
-        const std::vector<int>& highB = spansB.high[std::size_t(axis)];
-        const double centreU = 0.5 * (spansA.centreU[std::size_t(axis)] + spansB.centreU[std::size_t(axis)]);
-        const double centreV = 0.5 * (spansA.centreV[std::size_t(axis)] + spansB.centreV[std::size_t(axis)]);
-        for (std::size_t column = 0; column < lowA.size(); ++column) {
-            if (highA[column] < 0 || highB[column] < 0) continue;
-            int gap = 0, start = 0;
-            if (highB[column] < lowA[column]) gap = lowA[column] - highB[column] - 1, start = highB[column] + 1;
-            else if (highA[column] < lowB[column]) gap = lowB[column] - highA[column] - 1, start = highA[column] + 1;
-            else continue;
-            if (gap < 1 || gap > kMaxNeckWall) continue;
-            // Only a wall is cut: open air between two vessels, or another hollow, is no neck.
-            std::array<int, 3> c{};
-            c[std::size_t(axis)] = start;
-            c[std::size_t(u)] = int(column % width);
-            c[std::size_t(v)] = int(column / width);
-            bool allWall = true;
-            for (int i = 0; i < gap && allWall; ++i, ++c[std::size_t(axis)]) allWall = walls[grid.index(c)] != 0;
-            if (!allWall) continue;
-            const double du = double(column % width) - centreU, dv = double(column / width) - centreV;
-            const double offCentre = du * du + dv * dv;
-            if (gap < best.gap || (gap == best.gap && offCentre < best.offCentre)) {
-                best.gap = gap;
-                best.axis = axis;
-                best.offCentre = offCentre;
-                best.from[std::size_t(axis)] = start;
-                best.from[std::size_t(u)] = int(column % width);
-                best.from[std::size_t(v)] = int(column / width);
-            }
-        }
-    }
-    if (best.axis < 0) return false;
-    std::array<int, 3> c = best.from;
-    for (int i = 0; i < best.gap; ++i, ++c[std::size_t(best.axis)]) joined.joint.push_back(grid.index(c));
-    std::sort(joined.joint.begin(), joined.joint.end());
-    CellList bulbs;
-    bulbs.reserve(a.size() + b.size());
-    std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(bulbs));
-    joined.cells.reserve(bulbs.size() + joined.joint.size());
-    std::merge(bulbs.begin(), bulbs.end(), joined.joint.begin(), joined.joint.end(), std::back_inserter(joined.cells));
-    joined.neckOpened = true;
-    joined.jointAxis = best.axis;
-    joined.jointLow = best.from[std::size_t(best.axis)];
-    joined.jointHigh = joined.jointLow + best.gap - 1;
-    return true;
-}
-
 // The spaces of one source with the necks under a cell between their largest ones opened.
 void addCandidates(std::vector<CellList> spaces, int source, const MaskCells& walls, const Grid& grid,
                    std::vector<Candidate>& out) {
@@ -263,9 +158,21 @@ void addCandidates(std::vector<CellList> spaces, int source, const MaskCells& wa
             if (double(spaces[j].size()) < kBulbShare * double(spaces[i].size())) continue;
             if (spans[i].low[0].empty()) spans[i] = columnSpansOf(spaces[i], grid);
             if (spans[j].low[0].empty()) spans[j] = columnSpansOf(spaces[j], grid);
+            const std::optional<NeckJoint> joint = jointAcrossNeck(spans[i], spans[j], walls, grid);
+            if (!joint) continue;
             Candidate joined;
             joined.source = source;
-            if (joinAcrossNeck(spaces[i], spans[i], spaces[j], spans[j], walls, grid, joined)) out.push_back(std::move(joined));
+            joined.neckOpened = true;
+            joined.jointAxis = joint->axis;
+            joined.jointLow = joint->low;
+            joined.jointHigh = joint->high;
+            joined.joint = joint->cells;
+            CellList bulbs;
+            bulbs.reserve(spaces[i].size() + spaces[j].size());
+            std::merge(spaces[i].begin(), spaces[i].end(), spaces[j].begin(), spaces[j].end(), std::back_inserter(bulbs));
+            joined.cells.reserve(bulbs.size() + joined.joint.size());
+            std::merge(bulbs.begin(), bulbs.end(), joined.joint.begin(), joined.joint.end(), std::back_inserter(joined.cells));
+            out.push_back(std::move(joined));
         }
     for (CellList& cells : spaces) {
         Candidate candidate;
@@ -297,87 +204,6 @@ const Candidate* bestHourglass(std::vector<Candidate>& candidates, const Grid& g
         first = end;
     }
     return best;
-}
-
-// Does the segment from p to p + step (one cell along an axis) cross the triangle? Touching counts:
-// a centre on the surface is not on the space's side.
-bool segmentCrosses(const std::array<double, 3>& p, int axis, int step, const TriangleMesh& mesh,
-                    const std::array<std::uint32_t, 3>& t) {
-    std::array<std::array<double, 3>, 3> v;
-    for (std::size_t i = 0; i < 3; ++i) {
-        const Vec3 c = mesh.vertices[t[i]];
-        v[i] = {double(c.x) - p[0], double(c.y) - p[1], double(c.z) - p[2]};
-    }
-    // The triangle's plane must separate or touch 0 and the step's end; then the crossing point,
-    // projected along the axis, must lie in the triangle (signed areas of one sign, zero allowed).
-    const std::array<double, 3> e1{v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2]};
-    const std::array<double, 3> e2{v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2]};
-    const std::array<double, 3> normal{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    const double atStart = -(normal[0] * v[0][0] + normal[1] * v[0][1] + normal[2] * v[0][2]);
-    const double atEnd = atStart + normal[std::size_t(axis)] * step;
-    if ((atStart > 0 && atEnd > 0) || (atStart < 0 && atEnd < 0)) return false;
-    if (normal[std::size_t(axis)] == 0.0) return atStart == 0.0; // in the plane: count it
-    const double t01 = atStart / (atStart - atEnd);
-    std::array<double, 3> hit{0, 0, 0};
-    hit[std::size_t(axis)] = t01 * step;
-    const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2;
-    auto area = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-        return (a[std::size_t(u)] - hit[std::size_t(u)]) * (b[std::size_t(w)] - hit[std::size_t(w)]) -
-               (a[std::size_t(w)] - hit[std::size_t(w)]) * (b[std::size_t(u)] - hit[std::size_t(u)]);
-    };
-    const double a0 = area(v[0], v[1]), a1 = area(v[1], v[2]), a2 = area(v[2], v[0]);
-    return (a0 >= 0 && a1 >= 0 && a2 >= 0) || (a0 <= 0 && a1 <= 0 && a2 <= 0);
-}
-
-// S2 for a space the walls enclose: a cell is the space's when its centre is. The walls' cells
-// next to the space whose centre no wall separates from a neighbour in the space join it (the
-// cells the surface touches on its inner side), so a single-wall glass loses no layer of sand.
-// The column cut through a neck (`joint`) is no reference: it lies outside the glass by design;
-// nor are the cells the space grew back into a closed gap (`band`): they may lie beyond a rim.
-void addCentresOnTheSpaceSide(CellList& space, const CellList& joint, const MaskCells& band, const MaskCells& walls,
-                              const std::vector<TriangleMesh>& wallMeshes, const Grid& grid) {
-    MaskCells inSpace(grid.cells(), 0);
-    // References are free cells of the space only: no triangle touches them.
-    for (std::uint32_t n : space) inSpace[n] = !walls[n] && (band.empty() || !band[n]) ? 1 : 0;
-    for (std::uint32_t n : joint) inSpace[n] = 0;
-    // For each wall cell beside the space: the directions (bits 0..5: -x +x -y +y -z +z) to the
-    // space, and those a triangle crosses.
-    std::vector<std::uint8_t> towards(grid.cells(), 0), crossed(grid.cells(), 0);
-    const std::array<std::array<int, 3>, 6> steps{{{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}}};
-    for (std::size_t n = 0; n < grid.cells(); ++n) {
-        if (!walls[n] || inSpace[n]) continue; // a wall cell added by an earlier pass is space already
-        const std::array<int, 3> c = grid.coordinates(std::uint32_t(n));
-        for (std::size_t d = 0; d < 6; ++d) {
-            std::array<int, 3> m = c;
-            bool inGrid = true;
-            for (std::size_t a = 0; a < 3; ++a) {
-                m[a] += steps[d][a];
-                inGrid = inGrid && m[a] >= 0 && m[a] < grid.length(int(a));
-            }
-            if (inGrid && inSpace[grid.index(m)]) towards[n] |= std::uint8_t(1u << d);
-        }
-    }
-    // A triangle that crosses the step from a cell to its neighbour in the space touches the cell:
-    // the neighbour is free, no triangle touches it.
-    for (const TriangleMesh& mesh : wallMeshes)
-        forEachTouchedCell(mesh, grid.size, [&](std::size_t triangle, std::uint32_t cell) {
-            if (!towards[cell]) return;
-            const std::array<int, 3> c = grid.coordinates(cell);
-            const std::array<double, 3> centre{c[0] + 0.5, c[1] + 0.5, c[2] + 0.5};
-            for (std::size_t d = 0; d < 6; ++d) {
-                if (!(towards[cell] & (1u << d)) || (crossed[cell] & (1u << d))) continue;
-                const int axis = int(d / 2), step = d % 2 ? 1 : -1;
-                if (segmentCrosses(centre, axis, step, mesh, mesh.triangles[triangle])) crossed[cell] |= std::uint8_t(1u << d);
-            }
-        });
-    CellList added;
-    for (std::size_t n = 0; n < grid.cells(); ++n)
-        if ((towards[n] & ~crossed[n]) && !std::binary_search(joint.begin(), joint.end(), std::uint32_t(n)))
-            added.push_back(std::uint32_t(n));
-    CellList merged;
-    merged.reserve(space.size() + added.size());
-    std::merge(space.begin(), space.end(), added.begin(), added.end(), std::back_inserter(merged));
-    space = std::move(merged);
 }
 
 InsideMask maskOf(const CellList& cells, Int3 size) {
