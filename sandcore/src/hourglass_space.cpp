@@ -59,7 +59,7 @@ struct GridShell {
 };
 
 // The cells whose centres a grid-space mesh encloses, voxelized within its own bounds only: by
-// parity when it is closed, by the robust vote when it is open (modelled sand with a hole).
+// parity when it is closed, by the robust vote when it is open (modelled sand or a glass with a hole).
 CellList insideCells(const TriangleMesh& gridMesh, const Grid& grid, const GridShell& shell, int threads) {
     std::array<int, 3> from{}, sub{};
     for (std::size_t a = 0; a < 3; ++a) {
@@ -114,9 +114,19 @@ bool looksLikeModelledSand(std::uint32_t s, const GridShell& shell, const std::v
     return enclosed * 4 >= samples * 3;
 }
 
+// Do at least three quarters of the cells of `part` (a sample of them) lie in `space`? Both ascending.
+bool mostlyWithin(const CellList& part, const CellList& space) {
+    const std::size_t samples = std::min<std::size_t>(64, part.size());
+    std::size_t within = 0;
+    for (std::size_t i = 0; i < samples; ++i)
+        within += std::binary_search(space.begin(), space.end(), part[i * part.size() / samples]) ? 1 : 0;
+    return samples > 0 && within * 4 >= samples * 3;
+}
+
 struct Candidate {
     CellList cells;
-    int source = 0;        // -1: a closed glass's inside; 0, 1, 2...: the walls' gaps closed by that many cells
+    int source = 0;        // -1: a glass surface's inside; 0, 1, 2...: the walls' gaps closed by that many cells
+    bool voted = false;    // the inside of an open glass surface, by the robust vote
     bool neckOpened = false;
     int jointAxis = -1;    // an opened neck: the axis of the column cut through the wall
     int jointLow = 0, jointHigh = 0; // ... and the layers it spans
@@ -182,8 +192,9 @@ void addCandidates(std::vector<CellList> spaces, int source, const MaskCells& wa
     }
 }
 
-// Of each source the largest space with a neck; a later source (wider gaps closed) replaces an
-// earlier one only when its space is clearly larger (a leak sealed, not a few cells regained).
+// Of each source the largest space with a neck; a later source (wider gaps closed, or an open
+// glass's inside by the vote) replaces an earlier one only when its space is clearly larger (a
+// leak sealed, not a few cells regained).
 // Necks are looked for from the largest space of a source down, until one has a neck.
 const Candidate* bestHourglass(std::vector<Candidate>& candidates, const Grid& grid) {
     const Candidate* best = nullptr;
@@ -265,7 +276,7 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
         for (std::size_t a = 0; a < 3; ++a) partial = partial || shell.high[a] - shell.low[a] < kPartOfOneBulb * longest;
         const bool mayBeSand = (!shells[s].roleFixed && partial) || shells[s].role == ShellRole::Sand;
         const bool mayBeVessel = !shells[s].roleFixed || shells[s].role == ShellRole::Glass;
-        if ((shell.closed && mayBeVessel) || mayBeSand) shell.inside = insideCells(gridMesh, grid, shell, threads);
+        if (mayBeVessel || mayBeSand) shell.inside = insideCells(gridMesh, grid, shell, threads);
     }
     std::array<double, 3> wallExtent;
     for (std::size_t a = 0; a < 3; ++a) wallExtent[a] = wallHigh[a] - wallLow[a];
@@ -289,11 +300,13 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
             }
 
     // S8, W2: the candidates. A closed glass surface that holds no other wall encloses its sand
-    // directly (its inside, as parity gives it); then the spaces the walls enclose, with ever wider gaps closed.
-    std::vector<Candidate> candidates;
+    // directly (its inside, as parity gives it); then the spaces the walls enclose, with ever wider
+    // gaps closed; last, as the robust vote gives it, the inside of an open glass surface (one with
+    // holes cut into it wider than the closings close).
+    std::vector<Candidate> candidates, voted;
     for (std::size_t s = 0; s < shells.size(); ++s) {
         const GridShell& shell = inGrid[s];
-        if (out.roles[s] != ShellRole::Glass || !shell.closed || shell.inside.empty()) continue;
+        if (out.roles[s] != ShellRole::Glass || shell.inside.empty()) continue;
         // The outer surface of a glass with thickness wraps its inner surface: its inside is no sand space.
         bool wraps = false;
         for (std::size_t o = 0; o < shells.size() && !wraps; ++o) {
@@ -301,15 +314,16 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
             bool within = true;
             for (std::size_t a = 0; a < 3; ++a)
                 within = within && inGrid[o].low[a] >= shell.low[a] && inGrid[o].high[a] <= shell.high[a];
-            wraps = within;
+            // Within its bounds is not enough: a post beside a round glass lies within them too.
+            wraps = within && mostlyWithin(inGrid[o].surface, shell.inside);
         }
         if (wraps) continue;
         CellList free;
         for (std::uint32_t n : shell.inside)
             if (!walls[n] || wallOwner[n] == s) free.push_back(n);
-        addCandidates(componentsOf(free, grid.size), -1, walls, grid, candidates);
+        addCandidates(componentsOf(free, grid.size), -1, walls, grid, shell.closed ? candidates : voted);
     }
-    const std::size_t solidCandidates = candidates.size();
+    for (Candidate& c : voted) c.voted = true;
     // Each closing is independent of the others: with threads to spare they run side by side.
     std::vector<std::future<std::vector<CellList>>> closings;
     for (int closing = 0; closing <= settings.maxClosingCells; ++closing)
@@ -317,12 +331,13 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
                                       [&walls, size = grid.size, closing] { return enclosedRegions(walls, size, closing); }));
     for (int closing = 0; closing <= settings.maxClosingCells; ++closing)
         addCandidates(closings[std::size_t(closing)].get(), closing, walls, grid, candidates);
+    std::move(voted.begin(), voted.end(), std::back_inserter(candidates));
     const Candidate* chosen = bestHourglass(candidates, grid);
     int axis = 1;
     bool plus = true;
     if (chosen) {
         out.isHourglass = true;
-        out.kind = std::size_t(chosen - candidates.data()) < solidCandidates ? SandSpaceKind::Solid : SandSpaceKind::Cavity;
+        out.kind = chosen->source < 0 ? SandSpaceKind::Solid : SandSpaceKind::Cavity;
         out.closingCells = std::max(0, chosen->source);
         out.neckOpened = chosen->neckOpened;
         axis = chosen->neckAxis;
@@ -330,12 +345,14 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
         // W5: no hourglass. The largest enclosed space, else the inside of an open vessel, else the model.
         std::size_t largest = candidates.size();
         for (std::size_t i = 0; i < candidates.size(); ++i) {
-            if (candidates[i].neckOpened) continue; // a column through a wall joins bulbs only
+            // A column through a wall joins bulbs only; the vote's inside of an open surface is no
+            // closed space: a funnel's would hold its sand.
+            if (candidates[i].neckOpened || candidates[i].voted) continue;
             if (largest == candidates.size() || candidates[i].cells.size() > candidates[largest].cells.size()) largest = i;
         }
         if (largest < candidates.size()) {
             chosen = &candidates[largest];
-            out.kind = largest < solidCandidates ? SandSpaceKind::Solid : SandSpaceKind::Cavity;
+            out.kind = chosen->source < 0 ? SandSpaceKind::Solid : SandSpaceKind::Cavity;
             out.closingCells = std::max(0, chosen->source);
             out.note = "no hourglass found: the largest space the model encloses has no neck between two bulbs; it is filled "
                        "and runs out of its bottom onto the floor below";

@@ -5,6 +5,7 @@
 #include "sandcore/mask_cleanup.hpp"
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cmath>
 #include <stdexcept>
@@ -54,38 +55,31 @@ InsideMask trimmedToInsideLayers(const InsideMask& mask) {
     return sliceLayers(mask, bottom, top);
 }
 
-// The cells of a lower bulb (its top layer the neck) that the heap under the neck fills before
-// the neck chokes: cells a falling grain can reach (one layer down and at most one cell aside in
-// x and z per step, R2's successors, through the bulb's own cells: a long neck tube delays the
-// spread) and that lie within an octagon widening one cell per layer below the neck's centre
-// (the square of the slips with its corners cut, as piles that spread over a curved floor
-// leave them). A square fill jammed some generated bulbs, a round one left some under 40% full.
-std::int64_t heapCapacity(const InsideMask& lower) {
+// The bulb above the neck layer of `vessel`, carved (S3) so that sand anywhere in it finds a way
+// down. The neck layer drains only where a cell of the layer below lies under it: a neck cell over
+// the lower bulb's shoulder would hold its grains for ever.
+InsideMask drainedBulbAbove(const InsideMask& vessel, int neck) {
+    InsideMask carved = vessel;
+    removeSharpEdges(carved, neck - 1, vessel.size.y - 1);
+    return sliceLayers(carved, neck, vessel.size.y - 1);
+}
+
+// The cells of a lower bulb (its top layer the neck) that a grain can reach from the neck cell
+// (apexX, apexZ): one layer down and at most one cell aside in x and z per step (R2's
+// successors), through the bulb's own cells.
+std::int64_t reachableBelow(const InsideMask& lower, int apexX, int apexZ) {
     const int neck = lower.size.y - 1;
-    double cx = 0.0, cz = 0.0;
-    std::vector<std::uint32_t> layer, next;
-    for (int z = 0; z < lower.size.z; ++z)
-        for (int x = 0; x < lower.size.x; ++x)
-            if (lower.at(x, neck, z)) {
-                cx += x, cz += z;
-                layer.push_back(std::uint32_t(lower.indexOf(x, neck, z)));
-            }
-    if (layer.empty()) return 0;
-    cx /= double(layer.size());
-    cz /= double(layer.size());
+    std::vector<std::uint32_t> layer{std::uint32_t(lower.indexOf(apexX, neck, apexZ))}, next;
     std::vector<std::uint8_t> reached(lower.inside.size(), 0);
     std::int64_t cells = 0;
     for (int y = neck; y > 0 && !layer.empty(); --y) {
         next.clear();
-        const double depth = double(neck - (y - 1));
         for (std::uint32_t n : layer) {
             const int x = int(n % std::uint32_t(lower.size.x)), z = int((n / std::uint32_t(lower.size.x)) % std::uint32_t(lower.size.z));
             for (int dz = -1; dz <= 1; ++dz)
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int bx = x + dx, bz = z + dz;
                     if (bx < 0 || bz < 0 || bx >= lower.size.x || bz >= lower.size.z || !lower.at(bx, y - 1, bz)) continue;
-                    const double ax = std::abs(bx - cx), az = std::abs(bz - cz);
-                    if (ax > depth || az > depth || ax + az > 1.5 * depth) continue;
                     const std::size_t m = lower.indexOf(bx, y - 1, bz);
                     if (!reached[m]) {
                         reached[m] = 1;
@@ -97,6 +91,38 @@ std::int64_t heapCapacity(const InsideMask& lower) {
         layer.swap(next);
     }
     return cells;
+}
+
+// The sand a lower bulb surely takes without choking its neck (S3, W1). A grain rests in a neck
+// cell only when the 9 cells below it are full, and so on down: only when every cell a grain
+// can reach from that neck cell is full. Less sand than the fewest cells reachable from any
+// neck cell therefore all runs through. The fewest are found at the neck's rim: its middle and
+// its farthest cells along the four axis and four diagonal directions stand for the rest.
+std::int64_t heapCapacity(const InsideMask& lower) {
+    const int neck = lower.size.y - 1;
+    std::vector<std::array<int, 2>> cells;
+    double cx = 0.0, cz = 0.0;
+    for (int z = 0; z < lower.size.z; ++z)
+        for (int x = 0; x < lower.size.x; ++x)
+            if (lower.at(x, neck, z)) {
+                cells.push_back({x, z});
+                cx += x, cz += z;
+            }
+    if (cells.empty()) return 0;
+    cx /= double(cells.size());
+    cz /= double(cells.size());
+    constexpr std::array<std::array<int, 2>, 8> kDirections{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}}};
+    std::vector<std::array<int, 2>> apexes;
+    // The middle: the neck cell nearest the neck's centre.
+    auto nearCentre = [&](const std::array<int, 2>& c) { return (c[0] - cx) * (c[0] - cx) + (c[1] - cz) * (c[1] - cz); };
+    apexes.push_back(*std::min_element(cells.begin(), cells.end(), [&](const auto& p, const auto& q) { return nearCentre(p) < nearCentre(q); }));
+    for (const std::array<int, 2>& d : kDirections)
+        apexes.push_back(*std::max_element(cells.begin(), cells.end(), [&](const auto& p, const auto& q) {
+            return d[0] * p[0] + d[1] * p[1] < d[0] * q[0] + d[1] * q[1];
+        }));
+    std::int64_t fewest = INT64_MAX;
+    for (const std::array<int, 2>& apex : apexes) fewest = std::min(fewest, reachableBelow(lower, apex[0], apex[1]));
+    return fewest;
 }
 
 } // namespace
@@ -130,18 +156,17 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialS
         for (int y = 0; y < upper.size.y; ++y)
             for (int z = 0; z < upper.size.z; ++z)
                 for (int x = 0; x < upper.size.x; ++x) modelledCells += initialSand.at(x, y + firstLayer, z) ? 1 : 0;
-    if (hourglass.drainCompletely) removeSharpEdges(upper, 0, upper.size.y - 1);
+    if (hourglass.drainCompletely) {
+        if (split) upper = drainedBulbAbove(vessel, neck);
+        else removeSharpEdges(upper, 0, upper.size.y - 1);
+    }
     requireInside(upper, "the upper bulb");
     CellGrid lowerLayout(vessel.size, kEmpty);
     std::int64_t capacity = INT64_MAX;
     if (split) {
-        InsideMask lower = sliceLayers(vessel, 0, neck);
         // Turned over (T1), the lower bulb drains too: carve it as the upper bulb it then becomes.
-        if (hourglass.drainCompletely) {
-            lower = mirroredInY(lower);
-            removeSharpEdges(lower, 0, lower.size.y - 1);
-            lower = mirroredInY(lower);
-        }
+        const InsideMask lower = hourglass.drainCompletely ? mirroredInY(drainedBulbAbove(mirroredInY(vessel), top - neck))
+                                                           : sliceLayers(vessel, 0, neck);
         capacity = heapCapacity(lower);
         lowerLayout = layoutFromMask(lower);
     }

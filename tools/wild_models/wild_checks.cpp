@@ -129,7 +129,8 @@ void checkHourglass(const WildModel& model, const BuiltScene& first, const Check
         return;
     }
     // At the end every grain has passed the neck into the lower bulb's grid.
-    if (built.scene.counters().grainsUpper > 0)
+    out.grainsLeftAbove = built.scene.counters().grainsUpper;
+    if (out.grainsLeftAbove > 0)
         out.failure = "after the drain (" + std::to_string(steps) + " steps) " + std::to_string(built.scene.counters().grainsUpper) +
                       " grains stay above the neck";
 }

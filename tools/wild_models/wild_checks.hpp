@@ -16,6 +16,7 @@ struct ModelCheck {
     bool loaded = false;            ///< the file built a scene
     std::string failure;            ///< the first property that failed, one line; empty when all held
     bool grainOutside = false;      ///< W3 broken: a grain was found outside the glass (or body) at some check
+    std::int64_t grainsLeftAbove = -1; ///< after the drain, grains that stayed above the neck; -1: not drained
     std::string note;               ///< the program's W5 note, if it gave one
     std::int64_t grains = 0;        ///< grains at the start
     double upperFillShare = 0.0;    ///< grains in the upper bulb / the upper bulb's volume in cells
