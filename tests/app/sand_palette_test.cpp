@@ -94,13 +94,6 @@ int bandOf(testing::Pixel px) {
     return nearest;
 }
 
-std::size_t differentPixels(const RgbImage& a, const RgbImage& b) {
-    REQUIRE(a.pixels.size() == b.pixels.size());
-    std::size_t different = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) different += a.pixels[i] != b.pixels[i] ? 1 : 0;
-    return different;
-}
-
 } // namespace
 
 TEST_CASE("palettes: every grain of the warm palettes has red > green > blue") {
@@ -188,7 +181,7 @@ TEST_CASE("render: the layers palette draws its colour bands on both grain paths
     app->state().render.palette = SandPalette::Layers;
     app->renderFrame(0.0);
     images.push_back(app->captureFrame());
-    CHECK(differentPixels(desert, images[2]) > 0);
-    CHECK(differentPixels(images[0], images[1]) == 0);
-    CHECK(differentPixels(images[0], images[2]) == 0);
+    CHECK(testing::differentPixels(desert, images[2]) > 0);
+    CHECK(testing::differentPixels(images[0], images[1]) == 0);
+    CHECK(testing::differentPixels(images[0], images[2]) == 0);
 }
