@@ -41,13 +41,6 @@ RenderSettings renderSettings(Path path, bool light, bool inner) {
     return render;
 }
 
-std::size_t differentPixels(const RgbImage& a, const RgbImage& b) {
-    REQUIRE(a.pixels.size() == b.pixels.size());
-    std::size_t different = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) different += a.pixels[i] != b.pixels[i] ? 1 : 0;
-    return different;
-}
-
 // Grains on every face of a grid and at its corners, blocks whose middle grains are inner, and
 // layers with holes on both sides of the seam (the lower grid's top two rows, the upper grid's
 // bottom two), each with its own pattern of holes: a grain there is inner or not by what the
@@ -135,7 +128,7 @@ TEST_CASE("V8: grains at the grid edges and the seam: the GPU's flags and normal
                     REQUIRE(gpu.size() == reference.size());
                     for (std::size_t picture = 0; picture < gpu.size(); ++picture) {
                         CAPTURE(picture); // 0-2: the three views before the steps; 3-5: after them
-                        CHECK(differentPixels(gpu[picture], reference[picture]) == 0);
+                        CHECK(testing::differentPixels(gpu[picture], reference[picture]) == 0);
                     }
                 }
             }
@@ -147,9 +140,9 @@ TEST_CASE("V8: inner grains hidden and shown draw different pictures at the grid
     const std::vector<RgbImage> hidden = picturesOf(Path::GpuCellBits, true, false, true, 0, &inner);
     const std::vector<RgbImage> shown = picturesOf(Path::GpuCellBits, true, true, true, 0, &inner);
     // A corner grain is inner (the grid's outside hides it) yet faces the camera: showing it shows.
-    CHECK(differentPixels(hidden[0], shown[0]) > 0);
-    CHECK(differentPixels(hidden[1], shown[1]) > 0);
-    CHECK(differentPixels(hidden[2], shown[2]) > 0);
+    CHECK(testing::differentPixels(hidden[0], shown[0]) > 0);
+    CHECK(testing::differentPixels(hidden[1], shown[1]) > 0);
+    CHECK(testing::differentPixels(hidden[2], shown[2]) > 0);
 }
 
 TEST_CASE("V8: a software GL draws hidden inner grains from the per-grain flags, shown ones from the cell bits") {

@@ -245,11 +245,7 @@ TEST_CASE("V8: the GPU path draws the same picture as the full CPU upload, every
                     app->renderFrame(0.0);
                     images.push_back(app->captureFrame());
                 }
-                REQUIRE(images[0].pixels.size() == images[1].pixels.size());
-                std::size_t different = 0;
-                for (std::size_t i = 0; i < images[0].pixels.size(); ++i)
-                    different += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
-                CHECK(different == 0);
+                CHECK(testing::differentPixels(images[0], images[1]) == 0);
             }
 }
 
@@ -285,9 +281,6 @@ TEST_CASE("V8: after frames that upload only changes, both grain paths draw the 
         const RgbImage gpu = pictureAfterSteppedFrames(GrainPath::GpuInterpolated, 12, &persistent);
         unsetenv("SANDGLASS_GL_BUFFER_STORAGE");
         if (!mapping) CHECK(!persistent); // the runs path really ran
-        REQUIRE(gpu.pixels.size() == reference.pixels.size());
-        std::size_t different = 0;
-        for (std::size_t i = 0; i < gpu.pixels.size(); ++i) different += gpu.pixels[i] != reference.pixels[i] ? 1 : 0;
-        CHECK(different == 0);
+        CHECK(testing::differentPixels(gpu, reference) == 0);
     }
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // SPEC S12: sand that looks like sand. Every grain of the warm palettes has red > green > blue,
 // the default stays in V2's range, and in the default look (the framed hourglass, unlit and lit)
-// at least 90% of the pixels where grains are drawn are warm.
+// at least 90% of the pixels where grains are drawn are warm. The layers palette shows its bands
+// on both grain paths, in the same picture, also when chosen while the grains are on the GPU.
 #include "support/app_test_support.hpp"
 
 #include "app/application.hpp"
@@ -15,6 +16,9 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -29,6 +33,66 @@ struct Rgb {
 Rgb channels(std::uint32_t color) { return {int(color & 255u), int((color >> 8) & 255u), int((color >> 16) & 255u)}; }
 
 bool warm(int r, int g, int b) { return r > g && g > b; }
+
+// The default hourglass (its model) framed in a 200 x 200 window after 60 steps, panels off.
+ApplicationOptions defaultHourglass(const RenderSettings& render, const char* title) {
+    ApplicationOptions options;
+    options.window = {200, 200, false, false, title};
+    options.offscreen = true;
+    options.initial.showGui = false;
+    options.initial.scene.request.modelPath = defaultModelFor(sandcore::SceneKind::Hourglass);
+    options.initial.scene.request.resolution = 32;
+    options.initial.render = render;
+    options.initial.simulationRunning = false;
+    options.stepsBeforeStart = 60;
+    return options;
+}
+
+// The pixels of `image` (the application's last frame) where its grains' display positions fall,
+// the background's grey left out; `grains` is set to the number of grains.
+std::vector<testing::Pixel> sandPixels(Application& app, const RgbImage& image, int& grains) {
+    const sandcore::Scene& scene = app.scene();
+    const RenderSettings& render = app.state().render;
+    std::vector<sandcore::Vec3> positions(scene.grains().size());
+    sandcore::writeDisplayPositions(scene, app.displayStepFraction(), {render.cellSize, render.jitter}, positions);
+    grains = int(positions.size());
+    const glm::mat4 viewProjection = app.camera().projection(float(image.width) / float(image.height)) * app.camera().view();
+    std::vector<testing::Pixel> sand;
+    for (const sandcore::Vec3& p : positions) {
+        const glm::vec4 clip = viewProjection * glm::vec4(p.x, p.y, p.z, 1.0f);
+        const int x = int((clip.x / clip.w * 0.5f + 0.5f) * float(image.width));
+        const int y = int((0.5f - clip.y / clip.w * 0.5f) * float(image.height));
+        if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+        const testing::Pixel px = testing::pixelAt(image, x, y);
+        if (std::abs(px.r - px.g) <= 2 && std::abs(px.g - px.b) <= 2) continue; // background grey
+        sand.push_back(px);
+    }
+    return sand;
+}
+
+constexpr std::uint32_t kLayerBands = 6;
+
+// The layers palette's band a pixel shows, or -1 for none: the band colour nearest in
+// chromaticity (each channel over their sum, which shading and lighting leave alone), if near.
+int bandOf(testing::Pixel px) {
+    const float sum = float(std::max(px.r + px.g + px.b, 1));
+    int nearest = -1;
+    // The pattern's variation keeps a band's grains within this; of desert sand only a few dark
+    // grains come as near, to terracotta.
+    float nearestDistance = 0.03f;
+    for (std::uint32_t band = 0; band < kLayerBands; ++band) {
+        const Rgb color = channels(layerColor(SandPalette::Layers, band, 1));
+        const float colorSum = float(color.r + color.g + color.b);
+        const float dr = float(px.r) / sum - float(color.r) / colorSum, dg = float(px.g) / sum - float(color.g) / colorSum,
+                    db = float(px.b) / sum - float(color.b) / colorSum;
+        const float distance = std::sqrt(dr * dr + dg * dg + db * db);
+        if (distance < nearestDistance) {
+            nearest = int(band);
+            nearestDistance = distance;
+        }
+    }
+    return nearest;
+}
 
 } // namespace
 
@@ -69,36 +133,55 @@ TEST_CASE("render: in the default look at least 90% of sand pixels are warm, unl
     if (!testing::requireDisplay("warm sand")) return;
     for (bool light : {false, true}) {
         CAPTURE(light);
-        ApplicationOptions options;
-        options.window = {200, 200, false, false, "sandglass warm sand test"};
-        options.offscreen = true;
-        options.initial.showGui = false;
-        options.initial.scene.request.modelPath = defaultModelFor(sandcore::SceneKind::Hourglass);
-        options.initial.scene.request.resolution = 32;
-        options.initial.render.lighting = light;
-        options.stepsBeforeStart = 60;
-        std::optional<Application> app = testing::openApplication(std::move(options), "warm sand");
+        RenderSettings render;
+        render.lighting = light;
+        std::optional<Application> app = testing::openApplication(defaultHourglass(render, "sandglass warm sand test"), "warm sand");
         if (!app) return;
         app->renderFrame(0.0);
-        const RgbImage image = app->captureFrame();
-        const sandcore::Scene& scene = app->scene();
-        const RenderSettings& render = app->state().render;
-        std::vector<sandcore::Vec3> positions(scene.grains().size());
-        sandcore::writeDisplayPositions(scene, app->displayStepFraction(), {render.cellSize, render.jitter}, positions);
-        const glm::mat4 viewProjection = app->camera().projection(1.0f) * app->camera().view();
-        int sand = 0, warmPixels = 0;
-        for (const sandcore::Vec3& p : positions) {
-            const glm::vec4 clip = viewProjection * glm::vec4(p.x, p.y, p.z, 1.0f);
-            const int x = int((clip.x / clip.w * 0.5f + 0.5f) * float(image.width));
-            const int y = int((0.5f - clip.y / clip.w * 0.5f) * float(image.height));
-            if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
-            const testing::Pixel px = testing::pixelAt(image, x, y);
-            if (std::abs(px.r - px.g) <= 2 && std::abs(px.g - px.b) <= 2) continue; // background grey
-            ++sand;
-            if (warm(px.r, px.g, px.b)) ++warmPixels;
-        }
-        REQUIRE(sand > int(positions.size()) / 2);
-        MESSAGE("warm sand pixels, lighting " << light << ": " << warmPixels << " of " << sand); // shown with -s
-        CHECK(warmPixels * 10 >= sand * 9);
+        int grains = 0;
+        const std::vector<testing::Pixel> sand = sandPixels(*app, app->captureFrame(), grains);
+        const auto warmPixels = std::count_if(sand.begin(), sand.end(), [](testing::Pixel px) { return warm(px.r, px.g, px.b); });
+        REQUIRE(int(sand.size()) > grains / 2);
+        MESSAGE("warm sand pixels, lighting " << light << ": " << warmPixels << " of " << sand.size()); // shown with -s
+        CHECK(std::size_t(warmPixels) * 10 >= sand.size() * 9);
     }
+}
+
+TEST_CASE("render: the layers palette draws its colour bands on both grain paths, also when chosen while drawing") {
+    if (!testing::requireDisplay("layers palette")) return;
+    std::vector<RgbImage> images; // the CPU path's, the GPU path's, the GPU path's after a change of palette
+    for (GrainPath path : {GrainPath::CpuFullUpload, GrainPath::GpuInterpolated}) {
+        CAPTURE(path == GrainPath::GpuInterpolated);
+        RenderSettings render;
+        render.palette = SandPalette::Layers;
+        render.grainPath = path;
+        std::optional<Application> app = testing::openApplication(defaultHourglass(render, "sandglass layers test"), "layers palette");
+        if (!app) return;
+        app->renderFrame(0.0);
+        images.push_back(app->captureFrame());
+        int grains = 0;
+        const std::vector<testing::Pixel> sand = sandPixels(*app, images.back(), grains);
+        REQUIRE(int(sand.size()) > grains / 2);
+        std::array<std::size_t, kLayerBands> perBand{};
+        for (testing::Pixel px : sand)
+            if (const int band = bandOf(px); band >= 0) ++perBand[std::size_t(band)];
+        // Bands of at least a twentieth of the sand pixels each: the picture really is banded.
+        const auto shown = std::count_if(perBand.begin(), perBand.end(), [&](std::size_t n) { return n * 20 >= sand.size(); });
+        MESSAGE("sand pixels per band: " << perBand[0] << " " << perBand[1] << " " << perBand[2] << " " << perBand[3]
+                                         << " " << perBand[4] << " " << perBand[5] << " of " << sand.size());
+        CHECK(shown >= 2);
+    }
+    // Desert sand first, then layers: the grains already on the GPU take the new colours.
+    RenderSettings render;
+    render.grainPath = GrainPath::GpuInterpolated;
+    std::optional<Application> app = testing::openApplication(defaultHourglass(render, "sandglass layers test"), "layers palette");
+    if (!app) return;
+    app->renderFrame(0.0);
+    const RgbImage desert = app->captureFrame();
+    app->state().render.palette = SandPalette::Layers;
+    app->renderFrame(0.0);
+    images.push_back(app->captureFrame());
+    CHECK(testing::differentPixels(desert, images[2]) > 0);
+    CHECK(testing::differentPixels(images[0], images[1]) == 0);
+    CHECK(testing::differentPixels(images[0], images[2]) == 0);
 }

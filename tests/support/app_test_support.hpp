@@ -7,6 +7,8 @@
 
 #include "app/application.hpp"
 
+#include <algorithm>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -72,6 +74,14 @@ struct Pixel {
 inline Pixel pixelAt(const RgbImage& image, int x, int y) {
     const std::size_t i = (std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3;
     return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
+}
+
+/// The channel values in which two frames differ; frames of different sizes differ in all of them.
+inline std::size_t differentPixels(const RgbImage& a, const RgbImage& b) {
+    if (a.pixels.size() != b.pixels.size()) return std::max(a.pixels.size(), b.pixels.size());
+    std::size_t different = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) different += a.pixels[i] != b.pixels[i] ? 1 : 0;
+    return different;
 }
 
 } // namespace sandglass::testing

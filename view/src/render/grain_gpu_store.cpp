@@ -180,7 +180,8 @@ bool GrainGpuStore::canUpdate(const sandcore::Scene& scene, const sandcore::Surf
                               const RenderSettings& settings) const {
     const sandcore::Int3 size = scene.grid(sandcore::GridLevel::Lower).size();
     const bool bits = !surface.kept().grainFlags;
-    return grainCount_ == std::int64_t(scene.grains().size()) && uploadedJitter_ == settings.jitter && bitsMode_ == bits &&
+    return grainCount_ == std::int64_t(scene.grains().size()) && uploadedJitter_ == settings.jitter &&
+           uploadedPalette_ == settings.palette && bitsMode_ == bits &&
            (bits || gradientUploaded_ || !needsGradient(settings)) && (columnsUploaded_ || !needsColumns(settings)) &&
            columnsX_ == size.x && columnsZ_ == size.z;
 }
@@ -300,7 +301,7 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
     for (std::uint32_t id = 0; id < count; ++id) {
         places_[id] = placeOf(grains, id);
         looks[2 * std::size_t(id)] = grains.identity[id];
-        looks[2 * std::size_t(id) + 1] = grains.color[id];
+        looks[2 * std::size_t(id) + 1] = drawnGrainColor(grains, id, settings.palette);
         const sandcore::Vec3 jitter = sandcore::jitterOffset(grains.identity[id], settings.jitter);
         jitters[4 * std::size_t(id)] = jitter.x;
         jitters[4 * std::size_t(id) + 1] = jitter.y;
@@ -357,6 +358,7 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
     columnsX_ = size.x;
     columnsZ_ = size.z;
     uploadedJitter_ = settings.jitter;
+    uploadedPalette_ = settings.palette;
     columnsUploaded_ = surface.kept().columnNormals;
     if (!columnsUploaded_) { // lighting without column normals: the texture is not read
         packedColumns_.clear();

@@ -20,6 +20,12 @@ float unpackComponent(std::uint32_t bits) {
 }
 } // namespace
 
+std::uint32_t drawnGrainColor(const sandcore::GrainStore& grains, std::uint32_t id, SandPalette palette) {
+    if (grains.color[id] != 0) return grains.color[id];
+    const std::uint32_t grainsPerBand = std::max(grains.size() / 6, 1u);
+    return layerColor(palette, grains.identity[id], grainsPerBand);
+}
+
 std::uint32_t packNormal(sandcore::Vec3 normal) {
     return packComponent(normal.x) | (packComponent(normal.y) << 10) | (packComponent(normal.z) << 20);
 }
@@ -57,8 +63,6 @@ std::span<const GrainInstance> GrainInstanceBuilder::build(const sandcore::Scene
     sandcore::writeDisplayPositions(scene, stepFraction, {settings.cellSize, settings.jitter}, positions_);
     const sandcore::GrainStore& grains = scene.grains();
     instances_.resize(count);
-    // S12 layers: six bands over the fill, by identity (the hourglass fills from the bottom up).
-    const auto band = std::uint32_t(std::max<std::size_t>(count / 6, 1));
     std::size_t written = 0;
     for (std::size_t i = 0; i < count; ++i) {
         if (!settings.innerGrains && inner_[i]) continue;
@@ -68,7 +72,7 @@ std::span<const GrainInstance> GrainInstanceBuilder::build(const sandcore::Scene
         out.z = positions_[i].z;
         out.normal = packedNormals_[i];
         out.identity = grains.identity[i];
-        out.color = grains.color[i] != 0 ? grains.color[i] : layerColor(settings.palette, grains.identity[i], band);
+        out.color = drawnGrainColor(grains, std::uint32_t(i), settings.palette);
     }
     builtCount_ = written;
     return {instances_.data(), written};

@@ -82,7 +82,7 @@ public:
     /// Uploads only what the upkeep lists as changed since its last clearChanges(). Returns the bytes sent.
     std::int64_t uploadChanges(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface);
     /// True when uploadChanges can follow the last upload of this surface under these settings
-    /// (same grains, same jitter, same kind of surface, the normals the lighting needs already there).
+    /// (same grains, same jitter and palette, same kind of surface, the normals the lighting needs already there).
     bool canUpdate(const sandcore::Scene& scene, const sandcore::SurfaceUpkeep& surface, const RenderSettings& settings) const;
     /// False when the scene has more grains than this GL's buffer textures hold (draw another way).
     bool holds(const sandcore::Scene& scene) const { return std::int64_t(scene.grains().size()) <= maxTexels_; }
@@ -162,6 +162,7 @@ private:
     bool columnsUploaded_ = false;              // the column normals are there
     int columnsX_ = 0, columnsZ_ = 0;
     float uploadedJitter_ = -1.0f;
+    SandPalette uploadedPalette_ = SandPalette::Desert; // the grains' colours depend on it (drawnGrainColor)
     bool gradientUploaded_ = false;
 };
 

@@ -24,6 +24,11 @@ struct GrainInstance {
 };
 static_assert(sizeof(GrainInstance) == 24);
 
+/// The colour grain `id` is drawn in, on either grain path (RGBA8, 0 = its pattern's sand colours):
+/// its own colour where it has one (painted, loaded), else under the layers palette (S12) the band
+/// of its identity, six bands over the scene's grains (the hourglass fills from the bottom up).
+std::uint32_t drawnGrainColor(const sandcore::GrainStore& grains, std::uint32_t id, SandPalette palette);
+
 /// Packs a unit vector into signed normalised 10:10:10:2 (x in the low bits).
 std::uint32_t packNormal(sandcore::Vec3 normal);
 /// Unpacks packNormal's result (for tests).
