@@ -39,18 +39,19 @@ constexpr auto kNthSetBit = [] {
 
 } // namespace
 
-// The hot path: `inline` keeps it inside the strip loop, which the compiler otherwise declines.
+// The hot path, kept inside the strip loop (the compiler declines to inline it unasked).
 // Away from the grid's sides the 8 successors are read with no bounds tests and the slip is
 // picked from a mask of the empty ones without branches; at the sides chooseMove does it. Both
 // make the same choice. The grain's record is written here or fed (SweepContext::feed).
-inline bool ClassicStep::visit(StripLog& log, int x, int y, int z) const {
+[[gnu::always_inline]] inline bool ClassicStep::visit(StripLog& log, const Row& row, int x) const {
+    const int y = row.y, z = row.z;
     CellGrid& grid = context.grid;
     CellValue* cells = grid.cells().data();
     const Int3 size = awake.size();
     const auto sizeX = std::uint32_t(size.x);
-    const std::uint32_t from = grid.index(x, y, z);
+    const std::uint32_t from = row.firstCell + std::uint32_t(x);
     const CellValue grain = cells[from];
-    AwakeCells::Word& word = awake.words()[awake.wordOf(awake.rowOf(y, z), x)];
+    AwakeCells::Word& word = row.words[x >> 6];
     const std::uint64_t bit = std::uint64_t{1} << (x & 63);
     if (grain < 0) {
         word.occupied &= ~bit;
@@ -110,9 +111,16 @@ void ClassicStep::prefetchFirstAwake(int y, int z) const {
     }
 }
 
+SweepResult ClassicStep::sweepStrip(int y, int strip, StripLog& log) const {
+    // On a copy held in a local, the visits' references stay in registers, where those of *this
+    // would be loaded again after each store of a byte (a row's flag may alias anything).
+    const ClassicStep step = *this;
+    return step.sweepRows(y, strip, log);
+}
+
 // Each word's awake bits are taken at once: classic moves only wake cells in the layers above
 // and below, never in this row. A strip none of whose rows is awake is skipped whole.
-SweepResult ClassicStep::sweepStrip(int y, int strip, StripLog& log) const {
+[[gnu::always_inline]] inline SweepResult ClassicStep::sweepRows(int y, int strip, StripLog& log) const {
     SweepResult totals;
     const bool sleeping = context.sleeping;
     const int zEnd = std::min((strip + 1) * kStripRows, awake.size().z);
@@ -123,14 +131,14 @@ SweepResult ClassicStep::sweepStrip(int y, int strip, StripLog& log) const {
         if (sleeping && !rowAwake[row]) continue;
         rowAwake[row] = 0;
         // Without sleeping, every cell of the row is visited as if awake.
-        AwakeCells::Word* words = awake.rowWords(row);
+        const Row at{y, z, context.grid.index(0, y, z), awake.rowWords(row)};
         if (sleeping && z + 1 < zEnd && rowAwake[row + 1]) prefetchFirstAwake(y, z + 1);
         for (int w = 0; w < awake.rowWords(); ++w) {
-            std::uint64_t bits = sleeping ? words[w].awake : awake.wholeWord(w);
-            words[w].awake = 0;
+            std::uint64_t bits = sleeping ? at.words[w].awake : awake.wholeWord(w);
+            at.words[w].awake = 0;
             for (; bits; bits &= bits - 1) {
                 ++totals.visited;
-                totals.moves += visit(log, w * 64 + std::countr_zero(bits), y, z) ? 1 : 0;
+                totals.moves += visit(log, at, w * 64 + std::countr_zero(bits)) ? 1 : 0;
             }
         }
         if (context.feed) context.feed->publishSome();

@@ -23,7 +23,14 @@ struct ClassicStep {
     SweepResult sweepStrip(int y, int strip, StripLog& log) const;
 
 private:
-    bool visit(StripLog& log, int x, int y, int z) const; // true when the grain moved
+    /// The row a visit lies in, as the strip loop has it at hand.
+    struct Row {
+        int y, z;
+        std::uint32_t firstCell;  ///< the index of cell (0, y, z)
+        AwakeCells::Word* words; ///< the row's awake and occupied bits
+    };
+    SweepResult sweepRows(int y, int strip, StripLog& log) const;
+    bool visit(StripLog& log, const Row& row, int x) const; // true when the grain moved
     void prefetchFirstAwake(int y, int z) const;
 };
 

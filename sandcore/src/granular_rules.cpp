@@ -236,7 +236,7 @@ GranularOutcome moveGrain(CellGrid& grid, CellValue grain, std::uint32_t from, s
 
 } // namespace
 
-GranularOutcome GranularRules::fall(const GranularContext& on, GrainCell at, CellValue grain, bool mayBeMoving) const {
+GranularOutcome GranularRules::fall(const GranularContext& on, const GrainCell& at, CellValue grain, bool mayBeMoving) const {
     CellGrid& grid = on.grid;
     const std::span<FallState> falls = on.falls;
     const std::uint32_t from = at.index;
@@ -279,7 +279,7 @@ std::uint64_t GranularRules::carriedSlides(const ThresholdDither& dither, int x,
     return carriesOf(dithers, restComplement_);
 }
 
-GranularOutcome GranularRules::slide(const GranularContext& on, GrainCell at, CellValue grain, bool onVessel) const {
+GranularOutcome GranularRules::slide(const GranularContext& on, const GrainCell& at, CellValue grain, bool onVessel) const {
     CellGrid& grid = on.grid;
     const int x = at.x, y = at.y, z = at.z;
     const std::uint32_t from = at.index;

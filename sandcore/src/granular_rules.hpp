@@ -256,8 +256,8 @@ public:
 private:
     static_assert(ThresholdDither::kGroups * 8 == kOffsets, "a dither word holds 8 slides' bytes");
 
-    GranularOutcome fall(const GranularContext& on, GrainCell at, CellValue grain, bool mayBeMoving) const;
-    GranularOutcome slide(const GranularContext& on, GrainCell at, CellValue grain, bool onVessel) const;
+    GranularOutcome fall(const GranularContext& on, const GrainCell& at, CellValue grain, bool mayBeMoving) const;
+    GranularOutcome slide(const GranularContext& on, const GrainCell& at, CellValue grain, bool onVessel) const;
 
     std::array<Offset, kOffsets> offsets_{};
     // blockedBy_[r][taken]: the slides (bit k for offset k) whose path crosses one of the cells

@@ -21,8 +21,8 @@ GranularStep::GranularStep(const SweepContext& context, const GranularSweepState
       rowWords_(state.awake.rowWords()), bottomIsOutlet_(state.bottomIsOutlet) {}
 
 // The occupied bits are kept as the classic visit keeps them, so the granular wakes can AND with
-// them instead of reading cells. Inline: the strip loop calls it for every visited cell.
-inline GranularStep::Visit GranularStep::visit(StripLog& log, const VisitedCell& cell) const {
+// them instead of reading cells. Kept inside the strip loop, which calls it for every visited cell.
+[[gnu::always_inline]] inline GranularStep::Visit GranularStep::visit(StripLog& log, const VisitedCell& cell) const {
     const int x = cell.x, y = y_, z = cell.z;
     const std::size_t word = std::size_t(cell.row) * std::size_t(rowWords_) + std::size_t(x >> 6);
     const std::uint64_t bit = std::uint64_t{1} << (x & 63);
