@@ -40,8 +40,8 @@ struct GranularSweepState {
 };
 
 /// The granular visits of one layer's turn, or of one strip of it where threads share the
-/// turn's strips. What every visit reads is gathered here once: held in a local object, the
-/// values stay in registers, where members of the sweep would be loaded again after each store.
+/// turn's strips. What every visit reads is gathered here once per turn, read through one
+/// pointer instead of through the sweep's members and their vectors.
 class GranularStep {
 public:
     GranularStep(const SweepContext& context, const GranularSweepState& state, int y);

@@ -15,7 +15,7 @@ namespace sandcore {
 // EMPTY up to layer y (layersAbove). Each row's 7 bits are shifted into place and ANDed with the
 // occupied bits, as AwakeCells::wakeSpan does, so EMPTY and INVALID cells stay asleep. In the
 // layers above, this runs before their turn in the step; in the emptied cell's own layer, at the
-// sweep's end (GranularTurns::wakeAroundCellsLeft), for the next step.
+// sweep's end (wakeAroundCellsLeft, granular_step.hpp), for the next step.
 void GranularWakes::wakeSleepingGrainsAround(int x, int y, int z, int layersAbove, std::uint64_t woken) const {
     if (layersAbove == 0) {
         // A slide that needs its column two cells deep also needs the cell under its target EMPTY,

@@ -29,7 +29,6 @@
 // (grainEntered, cellBlocked, wakeAroundEmptied), and whoever reads a state meanwhile (a grain
 // landing on it, a save) reads it caught up (GranularRules::caughtUp). Their occupied bits are
 // cleared while they sleep, so the wakes of cells emptied nearby pass them by.
-
 //
 // The jobs lie in files of their own: the classic visits (classic_step.hpp), the granular ones
 // (granular_step.hpp) and whom a granular move wakes (granular_wakes.hpp), the awake bits
@@ -152,7 +151,7 @@ private:
     EmptyCellBits empty_;
     // Granular only: which cells are INVALID (the vessel and obstacles), kept with every change as
     // empty_, so a wake asks whether a grain lies on the vessel without reading the cell under it
-    // (the bits of a grid take a thirtieth of its cells' memory, so they stay in the cache).
+    // (the bits take a thirty-second of the cells' memory, so they stay in the cache).
     LayoutBits layout_;
     TurnStrips turn_;                          // granular: the strips of the current layer's turn
     std::vector<StripLog::Cell> turnQueue_;    // granular: the awake cells of a turn one thread sweeps (StripLog::awake)
