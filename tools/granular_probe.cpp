@@ -6,15 +6,13 @@
 //                                             canvas: 16 rays, then 16 sectors of 5 rays each
 //   granular_probe drain NECK [HEIGHT] [g]    discharge of a granular hourglass
 //   granular_probe cost HEIGHT THREADS        ms per step, classic vs granular drain
-//   granular_probe cost-in-turns HEIGHT THREADS [CODE]  the same, both drains stepped in turns;
-//                                             CODE 0 fastest, 1 portable, 2 bmi2 (sandcore::SweepCode)
-//   granular_probe cost-kinds HEIGHT THREADS KIND...  drains in turns given one by one: c or g
-//                                             (the rules), then f, p or b (the sweep's build)
+//   granular_probe cost-in-turns HEIGHT THREADS  the same, both drains stepped in turns
+//   granular_probe cost-kinds HEIGHT THREADS LEVEL...  drains in turns given one by one: c or g
+//                                             (the rules)
 #include "bench/granular_report.hpp"
 #include "sandcore/pile_slopes.hpp"
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
-#include "sandcore/sweep_code.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -131,40 +129,37 @@ int cost(int height, int threads) {
 
 // Both levels' drains in one process, stepped in turns (sandbench::drainCostInTurns, the bench
 // report's cost measure), so a busy machine slows both alike.
-// One drain of a cost comparison: its rules, the sweep's build it ran, steps, time, moves, hash.
+// One drain of a cost comparison: its rules, steps, time, moves, hash.
 void printCost(const sandbench::DrainCost& cost) {
-    std::printf("%s, %s code: %llu steps, %.3f ms/step, %.0f moves/step, hash %016llx%s\n",
-                std::string(physicsLevelName(cost.kind.level)).c_str(),
-                std::string(sweepCodeName(cost.kind.level, cost.kind.code)).c_str(), (unsigned long long)cost.steps,
+    std::printf("%s: %llu steps, %.3f ms/step, %.0f moves/step, hash %016llx%s\n",
+                std::string(physicsLevelName(cost.level)).c_str(), (unsigned long long)cost.steps,
                 cost.msPerStep, cost.movesPerStep, (unsigned long long)cost.hash, cost.conserved ? "" : " (grains lost)");
 }
 
-int costInTurns(int height, int threads, SweepCode code) {
+int costInTurns(int height, int threads) {
     StepSettings step;
     step.threads = threads;
-    step.sweepCode = code;
     const auto costs = sandbench::drainCostInTurns(height, step);
     for (const auto& cost : costs) printCost(cost);
     std::printf("granular / classic: %.2fx\n", costs[1].msPerStep / costs[0].msPerStep);
     return 0;
 }
 
-// Drains in turns given one by one (sandbench::drainsInTurns): each KIND is the rules, c or g,
-// then the sweep's build, f(astest), p(ortable) or b(mi2); prints each one's ms per step.
+// Drains in turns given one by one (sandbench::drainsInTurns): each LEVEL is the rules, c or g;
+// prints each one's ms per step.
 int costKinds(int height, int threads, int argc, char** argv) {
     StepSettings step;
     step.threads = threads;
-    std::vector<sandbench::DrainKind> kinds;
+    std::vector<PhysicsLevel> levels;
     for (int i = 4; i < argc; ++i) {
-        const std::string kind = argv[i];
-        const auto code = kind.size() == 2 ? std::string_view("fpb").find(kind[1]) : std::string_view::npos;
-        if ((kind[0] != 'c' && kind[0] != 'g') || code == std::string_view::npos) {
-            std::fprintf(stderr, "granular_probe: a drain is c or g, then f, p or b; got '%s'\n", argv[i]);
+        const std::string level = argv[i];
+        if (level != "c" && level != "g") {
+            std::fprintf(stderr, "granular_probe: a drain is c or g; got '%s'\n", argv[i]);
             return 2;
         }
-        kinds.push_back({kind[0] == 'g' ? PhysicsLevel::Granular : PhysicsLevel::Classic, SweepCode(int(code))});
+        levels.push_back(level == "g" ? PhysicsLevel::Granular : PhysicsLevel::Classic);
     }
-    for (const auto& cost : sandbench::drainsInTurns(height, step, kinds)) printCost(cost);
+    for (const auto& cost : sandbench::drainsInTurns(height, step, levels)) printCost(cost);
     return 0;
 }
 
@@ -177,7 +172,7 @@ int main(int argc, char** argv) {
     if (what == "drain") return drain(arg(2, 4), int(arg(3, 96)), arg(4, 0.05), int(arg(5, 1)));
     if (what == "cost") return cost(int(arg(2, 248)), int(arg(3, 2)));
     if (what == "cost-kinds") return costKinds(int(arg(2, 248)), int(arg(3, 2)), argc, argv);
-    if (what == "cost-in-turns") return costInTurns(int(arg(2, 248)), int(arg(3, 2)), SweepCode(int(arg(4, 0))));
+    if (what == "cost-in-turns") return costInTurns(int(arg(2, 248)), int(arg(3, 2)));
     std::fprintf(stderr, "usage: granular_probe pour|drain|cost|cost-in-turns|cost-kinds ...\n");
     return 2;
 }

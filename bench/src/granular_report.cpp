@@ -8,7 +8,6 @@
 #include "sandcore/pile_slopes.hpp"
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
-#include "sandcore/sweep_code.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -171,45 +170,31 @@ std::string neckPart(const ReportOptions& options, std::ostream& log, bool& pass
 
 std::string costPart(const ReportOptions& options, std::ostream& log, bool& passed) {
     const int height = options.quick ? 96 : 248;
-    Table table{{"physics", "sweep code", "grains", "steps", "ms per step (mean over the drain)", "moves per step",
+    Table table{{"physics", "grains", "steps", "ms per step (mean over the drain)", "moves per step",
                  "vs classic", "discharge, middle 80% (grains/step)", "CV", "neck model (grains/step)", "state hash"},
                 {}};
-    // The build of the sweep each level runs by default, then, where this CPU runs both
-    // (sandcore/sweep_code.hpp), the other one: the table shows why each level runs the one it does.
-    std::vector<DrainKind> kinds;
-    for (PhysicsLevel level : {PhysicsLevel::Classic, PhysicsLevel::Granular}) kinds.push_back({level, options.step.sweepCode});
-    if (sandcore::bmi2SweepAvailable())
-        for (PhysicsLevel level : {PhysicsLevel::Classic, PhysicsLevel::Granular})
-            kinds.push_back({level, sandcore::runsBmi2Sweep(level, options.step.sweepCode) ? sandcore::SweepCode::Portable
-                                                                                           : sandcore::SweepCode::Bmi2});
-    log << "granular: cost of the " << height << "-cell hourglass, " << kinds.size() << " drains in turns\n";
-    const std::vector<DrainCost> costs = drainsInTurns(height, options.step, kinds);
+    const PhysicsLevel levels[] = {PhysicsLevel::Classic, PhysicsLevel::Granular};
+    log << "granular: cost of the " << height << "-cell hourglass, " << std::size(levels) << " drains in turns\n";
+    const std::vector<DrainCost> costs = drainsInTurns(height, options.step, levels);
     for (const DrainCost& cost : costs) {
-        const bool granular = cost.kind.level == PhysicsLevel::Granular;
-        // Both builds end alike: the level's first drain (its default build) holds the hash.
-        const DrainCost& first = costs[granular ? 1 : 0];
-        passed = passed && cost.conserved && cost.hash == first.hash;
+        const bool granular = cost.level == PhysicsLevel::Granular;
+        passed = passed && cost.conserved;
         const std::vector<double> middle = windowedDischargeRates(cost.discharge, 10, 0.1, 0.9);
         double rate = 0;
         for (double r : middle) rate += r;
         rate = middle.empty() ? 0.0 : rate / double(middle.size());
-        table.rows.push_back({granular ? "granular" : "classic", std::string(sandcore::sweepCodeName(cost.kind.level, cost.kind.code)),
-                              std::to_string(cost.grains), std::to_string(cost.steps), fixed(cost.msPerStep, 3),
-                              fixed(cost.movesPerStep, 0), fixed(cost.msPerStep / costs[0].msPerStep, 2) + "x",
+        table.rows.push_back({granular ? "granular" : "classic", std::to_string(cost.grains), std::to_string(cost.steps),
+                              fixed(cost.msPerStep, 3),                              fixed(cost.movesPerStep, 0), fixed(cost.msPerStep / costs[0].msPerStep, 2) + "x",
                               fixed(rate, 1), fixed(100.0 * coefficientOfVariation(middle), 1) + "%",
                               granular ? fixed(cost.neckModelRate, 1) : "-", sandglass::toHex16(cost.hash)});
     }
     writeCsv(table, options.outDir / "cost.csv");
-    std::string builds = "each level with the build of the sweep it runs by default";
-    if (costs.size() > 2)
-        builds += " and then with the other one (`sandcore/sweep_code.hpp`: one build for every x86-64 CPU, one for CPUs "
-                  "with BMI1 and BMI2; the same state hashes)";
     return "Cost (PH6): the procedural hourglass of height " + std::to_string(height) + " drained until nothing "
-           "moves, " + std::to_string(options.step.threads) + " threads, sleeping grains skipped, " + builds +
-           ", all in this one process and in turns (after each " + std::to_string(kGranularStepsPerTurn) + " granular steps, "
+           "moves, " + std::to_string(options.step.threads) + " threads, sleeping grains skipped, both levels in this one "
+           "process and in turns (after each " + std::to_string(kGranularStepsPerTurn) + " granular steps, "
            "classic steps until it has passed as large a share of its sand), so load from elsewhere slows all alike; the "
-           "time is that of the steps alone; \"vs classic\" is against the first row. Granular against classic, each "
-           "with its default build: **" + fixed(costs[1].msPerStep / costs[0].msPerStep, 2) + "x**. At the default "
+           "time is that of the steps alone; \"vs classic\" is against the first row. Granular against classic: **" +
+           fixed(costs[1].msPerStep / costs[0].msPerStep, 2) + "x**. At the default "
            "gravity the granular drain runs below the neck model's rate: a grain of the neck row passes only where the "
            "cell below it, in the stream under the neck, is free.\n\n" +
            toMarkdown(table) + "\n";
@@ -217,23 +202,22 @@ std::string costPart(const ReportOptions& options, std::ostream& log, bool& pass
 
 } // namespace
 
-std::vector<DrainCost> drainsInTurns(int height, const sandcore::StepSettings& step, std::span<const DrainKind> kinds) {
+std::vector<DrainCost> drainsInTurns(int height, const sandcore::StepSettings& step, std::span<const PhysicsLevel> levels) {
     struct Drain {
         sandcore::Scene scene;
         DrainCost cost;
         double seconds = 0, moves = 0;
     };
     std::vector<Drain> drains;
-    drains.reserve(kinds.size());
-    for (const DrainKind& kind : kinds) {
+    drains.reserve(levels.size());
+    for (const PhysicsLevel level : levels) {
         sandcore::StepSettings settings = step;
-        settings.physics.level = kind.level;
-        settings.sweepCode = kind.code;
+        settings.physics.level = level;
         Drain& drain = drains.emplace_back(Drain{
             sandcore::makeHourglassScene(
                 sandcore::makeHourglassMask({height, sandcore::defaultNeckRadius(height), 0.0f}), {}, settings),
             {}});
-        drain.cost.kind = kind;
+        drain.cost.level = level;
         drain.cost.grains = drain.scene.grainCount();
         drain.cost.discharge.grainsAtStart = drain.scene.counters().grainsUpper;
     }
@@ -250,7 +234,7 @@ std::vector<DrainCost> drainsInTurns(int height, const sandcore::StepSettings& s
         d.moves += double(d.scene.counters().movesLastStep);
         d.cost.discharge.grainsPerStep.push_back(d.scene.counters().grainsLower - before);
     };
-    auto granular = [](const Drain& d) { return d.cost.kind.level == PhysicsLevel::Granular; };
+    auto granular = [](const Drain& d) { return d.cost.level == PhysicsLevel::Granular; };
     const auto pace = std::find_if(drains.begin(), drains.end(), granular);
     auto allDone = [&] { return std::all_of(drains.begin(), drains.end(), done); };
     while (!allDone()) {
@@ -278,8 +262,8 @@ std::vector<DrainCost> drainsInTurns(int height, const sandcore::StepSettings& s
 }
 
 std::array<DrainCost, 2> drainCostInTurns(int height, const sandcore::StepSettings& step) {
-    const DrainKind kinds[] = {{PhysicsLevel::Classic, step.sweepCode}, {PhysicsLevel::Granular, step.sweepCode}};
-    std::vector<DrainCost> costs = drainsInTurns(height, step, kinds);
+    const PhysicsLevel levels[] = {PhysicsLevel::Classic, PhysicsLevel::Granular};
+    std::vector<DrainCost> costs = drainsInTurns(height, step, levels);
     return {std::move(costs[0]), std::move(costs[1])};
 }
 

@@ -5,6 +5,7 @@
 #include "sandcore/counter_random.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 
@@ -158,7 +159,7 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
     }
     for (int t = 0; t < kAcrossWindow * kAcrossWindow; ++t)
         for (std::uint64_t grains = slidesAcrossCentreTo_[std::size_t(t)]; grains; grains &= grains - 1) {
-            const int bit = __builtin_ctzll(grains);
+            const int bit = std::countr_zero(grains);
             auto& row = targetsAcrossCentreByRow_[std::size_t(bit / kWindow)];
             for (std::size_t pattern = 0; pattern < row.size(); ++pattern)
                 if (pattern >> (bit % kWindow) & 1) row[pattern] |= 1u << t;
@@ -205,7 +206,7 @@ std::uint64_t carriesOf(const std::uint64_t (&dithers)[GranularRules::kOffsets /
 #if defined(__SSE2__)
     // The dithers go into the vector registers straight from the general ones: stored and loaded
     // again 16 bytes at a time, each load would wait for two 8-byte stores it cannot be forwarded
-    // from (2% of the granular drain's time).
+    // from.
     std::uint64_t notCarried = 0;
     for (int part = 0; part < 3; ++part) {
         const __m128i dither = _mm_set_epi64x(std::int64_t(dithers[2 * part + 1]), std::int64_t(dithers[2 * part]));
@@ -235,14 +236,16 @@ GranularOutcome moveGrain(CellGrid& grid, CellValue grain, std::uint32_t from, s
 
 } // namespace
 
-GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
-                                    std::uint32_t from, CellValue grain, bool mayBeMoving, std::uint64_t step) const {
+GranularOutcome GranularRules::fall(const GranularContext& on, const GrainCell& at, CellValue grain, bool mayBeMoving) const {
+    CellGrid& grid = on.grid;
+    const std::span<FallState> falls = on.falls;
+    const std::uint32_t from = at.index;
     const auto id = std::size_t(grain);
     const FallState before = mayBeMoving ? falls[id] : FallState{};
     // x(n) = g n^2 / 2 exactly at whole steps: each step advances by the mean speed v + g/2.
     const std::uint64_t travel = std::uint64_t(before.fraction) + before.speed + gravity_ / 2;
     const std::uint32_t speed = std::min(before.speed + gravity_, kMaxFallSpeed);
-    const int wanted = int(std::min<std::uint64_t>(travel >> 16, std::uint64_t(y)));
+    const int wanted = int(std::min<std::uint64_t>(travel >> 16, std::uint64_t(at.y)));
     if (wanted == 0) {
         falls[id] = {speed, std::uint16_t(travel)};
         GranularOutcome outcome{GranularOutcome::Waiting, {}};
@@ -253,19 +256,19 @@ GranularOutcome GranularRules::fall(CellGrid& grid, std::span<FallState> falls, 
     const std::uint32_t layer = grid.layerSize();
     int fallen = 1; // the cell below is EMPTY
     while (fallen < wanted && grid[from - std::uint32_t(fallen + 1) * layer] == kEmpty) ++fallen;
-    const int landedY = y - fallen;
+    const int landedY = at.y - fallen;
     FallState after;
     if (landedY == 0) { // the grid's bottom layer: an outlet keeps the speed, a floor stops it
-        after = {bottomIsOutlet ? speed : 0, 0};
+        after = {on.bottomIsOutlet ? speed : 0, 0};
     } else if (fallen == int(travel >> 16)) { // free flight: nothing touched
         after = {speed, std::uint16_t(travel)};
     } else { // contact: the speed of a grain it lands on (0 when resting), or 0 on a wall
         // A grain it lands on may be a gatherer that sleeps (grid_sweep.hpp): read up to date.
         const CellValue under = grid[from - std::uint32_t(fallen + 1) * layer];
-        after = {under >= 0 ? std::min(speed, caughtUp(falls[std::size_t(under)], step).speed) : 0, 0};
+        after = {under >= 0 ? std::min(speed, caughtUp(falls[std::size_t(under)], on.step).speed) : 0, 0};
     }
     falls[id] = after;
-    GranularOutcome outcome = moveGrain(grid, grain, from, from - std::uint32_t(fallen) * layer, {0, fallen, 0}, {x, landedY, z});
+    GranularOutcome outcome = moveGrain(grid, grain, from, from - std::uint32_t(fallen) * layer, {0, fallen, 0}, {at.x, landedY, at.z});
     outcome.inMotion = (after.speed | after.fraction) != 0;
     return outcome;
 }
@@ -276,13 +279,14 @@ std::uint64_t GranularRules::carriedSlides(const ThresholdDither& dither, int x,
     return carriesOf(dithers, restComplement_);
 }
 
-GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty, const ThresholdDither& dither, std::uint64_t stepKey,
-                                     std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain,
-                                     bool onVessel) const {
+GranularOutcome GranularRules::slide(const GranularContext& on, const GrainCell& at, CellValue grain, bool onVessel) const {
+    CellGrid& grid = on.grid;
+    const int x = at.x, y = at.y, z = at.z;
+    const std::uint32_t from = at.index;
     const std::int64_t row = grid.size().x, layer = grid.layerSize();
     // The 7x7 windows of EMPTY cells in the grain's layer (paths) and the layers below (targets,
     // columns) as bit masks, bit (dz + 3) * 7 + (dx + 3); cells outside the grid count as taken.
-    auto emptyWindow = [&](int dy) { return empty.window<kGranularReach>(x, y + dy, z); };
+    auto emptyWindow = [&](int dy) { return on.empty.window<kGranularReach>(x, y + dy, z); };
     // Every path starts in one of the 8 cells around the grain: when all are taken (inside the
     // bulk), nothing can slide and the layer below need not be read.
     const std::uint64_t emptyHere = emptyWindow(0);
@@ -299,7 +303,7 @@ GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty,
     // dither per column and offset (8 bits each, 8 offsets to a word). The slides that need d cells
     // are a mask; layer by layer down, those whose column ends above it drop out.
     if (!onVessel && (open & (wholeAtLeast_[2] | wholeExactly_[1]))) {
-        const std::uint64_t carry = carriedSlides(dither, x, z);
+        const std::uint64_t carry = carriedSlides(on.dither, x, z);
         std::uint64_t deep = ~std::uint64_t{0}; // columns EMPTY from layer y - 2 down to layer y - d
         for (int d = 2; d <= maxDrop_; ++d) {
             const std::uint64_t needing = (wholeAtLeast_[std::size_t(d)] | (wholeExactly_[std::size_t(d - 1)] & carry)) & open;
@@ -316,8 +320,8 @@ GranularOutcome GranularRules::slide(CellGrid& grid, const EmptyCellBits& empty,
     if (!open) return {};
     // The n-th possible slide in ascending offset order, n drawn by a counter hash (R3).
     const auto count = std::uint32_t(setBitCount(open));
-    for (std::uint32_t n = pickBelow(counterRandomFromKey(stepKey, stream, from), count); n > 0; --n) open &= open - 1;
-    const Offset& o = offsets_[std::size_t(__builtin_ctzll(open))];
+    for (std::uint32_t n = pickBelow(counterRandomFromKey(on.stepKey, on.stream, from), count); n > 0; --n) open &= open - 1;
+    const Offset& o = offsets_[std::size_t(std::countr_zero(open))];
     const std::uint32_t to = std::uint32_t(std::int64_t(from) - layer + o.dz * row + o.dx);
     return moveGrain(grid, grain, from, to, {-o.dx, 1, -o.dz}, {x + o.dx, y - 1, z + o.dz});
 }

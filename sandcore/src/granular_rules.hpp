@@ -42,6 +42,7 @@
 #include "sandcore/physics_settings.hpp"
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -76,6 +77,24 @@ struct MotionHints {
     bool below = true; ///< the grain below it, if any, may be in motion
 };
 
+/// What every granular visit of one grid's sweep reads alike, set up once per list of strips.
+struct GranularContext {
+    CellGrid& grid;                ///< the grid; a move changes its cells only (the sweep writes the record)
+    const EmptyCellBits& empty;    ///< the grid's EMPTY cells as bits, up to date: the slides read their windows there
+    std::span<FallState> falls;    ///< the fall states of the grid's grains (GrainStore::fall of its level)
+    const ThresholdDither& dither; ///< the grid's under the seed
+    std::uint64_t stepKey;         ///< counterRandomStepKey of this step
+    std::uint64_t stream;          ///< tells the grids apart in the random draws
+    std::uint64_t step;            ///< this step's number: a grain landing on a sleeping gatherer reads it caughtUp to it
+    bool bottomIsOutlet;           ///< layer 0 is open below (the upper grid): a grain falling onto it keeps its speed
+};
+
+/// The cell of the grain a visit applies the rules to, and its index in the grid.
+struct GrainCell {
+    int x, y, z;
+    std::uint32_t index; ///< grid.index(x, y, z)
+};
+
 /// The tables the granular rules need, computed once from PhysicsSettings.
 class GranularRules {
 public:
@@ -84,20 +103,11 @@ public:
 
     explicit GranularRules(const PhysicsSettings& physics);
 
-    /// Applies the rules to the grain at (x, y, z), y >= 1, of `grid`, for the step whose
-    /// counterRandomStepKey is `stepKey`; `dither`: the grid's under the seed; `stream`
-    /// tells the grids apart in the random draws. bottomIsOutlet: the grid's layer 0 is open
-    /// below (the upper grid), so a grain falling onto it keeps its speed. `falls`: the fall
-    /// states of this grid's grains (GrainStore::fall of its level). A move changes the grid's
-    /// cells only: the caller writes the grain's record from the outcome. hints: which fall states
-    /// are known to be zero (the result is the same; only fewer states are read).
-    /// `from`: the cell's index, grid.index(x, y, z); `empty`: the grid's EMPTY cells as bits, up
-    /// to date (the slides read their windows there; the caller updates them after a move).
-    /// `step`: this step's number (a grain landing on a sleeping gatherer reads its state
-    /// caughtUp to it). The visited grain's own state must be up to date (not asleep).
-    GranularOutcome visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls, const ThresholdDither& dither,
-                          std::uint64_t stepKey, std::uint64_t stream, bool bottomIsOutlet, int x, int y, int z,
-                          std::uint32_t from, std::uint64_t step, MotionHints hints = {}) const;
+    /// Applies the rules to the grain in cell `at` (y >= 1) of on.grid. A move changes the grid's
+    /// cells only: the caller writes the grain's record from the outcome and updates the EMPTY
+    /// bits. hints: which fall states are known to be zero (the result is the same; only fewer
+    /// states are read). The visited grain's own state must be up to date (not asleep).
+    GranularOutcome visit(const GranularContext& on, GrainCell at, MotionHints hints = {}) const;
 
     /// A grain resting on a grain that moves at `speed` (> 0) rides it: it takes that speed and
     /// gathers up to a cell of progress (rule 1). Riding when nothing of it changed (it may sleep:
@@ -176,7 +186,7 @@ public:
         const auto& slots = slotAcrossCentreInto_[std::size_t(t)];
         std::uint64_t open = 0;
         for (; grains; grains &= grains - 1) {
-            const int bit = __builtin_ctzll(grains);
+            const int bit = std::countr_zero(grains);
             if (!(paths[slots[std::size_t(bit)]] & ~clear)) open |= std::uint64_t{1} << bit;
         }
         return open;
@@ -211,7 +221,7 @@ public:
         return dither.of(x, z, k) > restComplement_[std::size_t(k)];
     }
     /// carries() of all the slides at once, bit k for slide k, as a slide reads them (16 compares
-    /// a vector instruction where the build has SSE2).
+    /// to a vector instruction where the build has SSE2).
     std::uint64_t carriedSlides(const ThresholdDither& dither, int x, int z) const;
     /// Of the grains around a column c (window bits as in wakeMask), those whose slide into c's
     /// column has a threshold of `whole` whole cells (and a fraction): so needsDepth(d) is true
@@ -246,10 +256,8 @@ public:
 private:
     static_assert(ThresholdDither::kGroups * 8 == kOffsets, "a dither word holds 8 slides' bytes");
 
-    GranularOutcome fall(CellGrid& grid, std::span<FallState> falls, bool bottomIsOutlet, int x, int y, int z,
-                         std::uint32_t from, CellValue grain, bool mayBeMoving, std::uint64_t step) const;
-    GranularOutcome slide(CellGrid& grid, const EmptyCellBits& empty, const ThresholdDither& dither, std::uint64_t stepKey,
-                          std::uint64_t stream, int x, int y, int z, std::uint32_t from, CellValue grain, bool onVessel) const;
+    GranularOutcome fall(const GranularContext& on, const GrainCell& at, CellValue grain, bool mayBeMoving) const;
+    GranularOutcome slide(const GranularContext& on, const GrainCell& at, CellValue grain, bool onVessel) const;
 
     std::array<Offset, kOffsets> offsets_{};
     // blockedBy_[r][taken]: the slides (bit k for offset k) whose path crosses one of the cells
@@ -278,8 +286,8 @@ private:
     std::uint64_t blockedTowardsCentre(std::uint64_t clear) const { return blockedIn<1, kWindow - 2>(towardsBlockedBy_, clear); }
     // For each column t of the 5x5 under c other than c's own: the paths at their level (window
     // bits around c) of the at most 8 grains with a slide across c into t, and which of them is
-    // the grain at each window bit's. 2.8 KB in all (a table of row patterns that stood here took
-    // 179 KB and missed the cache).
+    // the grain at each window bit's: small enough to stay in the cache, where a table of every
+    // row pattern would not.
     static constexpr int kMaxSlidesAcrossInto = 8;
     std::array<std::array<std::uint64_t, kMaxSlidesAcrossInto>, kAcrossWindow * kAcrossWindow> pathsAcrossCentreInto_{};
     std::array<std::array<std::uint8_t, kWindow * kWindow>, kAcrossWindow * kAcrossWindow> slotAcrossCentreInto_{};
@@ -289,35 +297,33 @@ private:
 };
 
 // Inline: the sweep calls it for every visited grain, most of which only take a speed or rest.
-inline GranularOutcome GranularRules::visit(CellGrid& grid, const EmptyCellBits& empty, std::span<FallState> falls,
-                                            const ThresholdDither& dither, std::uint64_t stepKey, std::uint64_t stream, bool bottomIsOutlet,
-                                            int x, int y, int z, std::uint32_t from, std::uint64_t step,
-                                            MotionHints hints) const {
-    const CellValue grain = grid[from];
+inline GranularOutcome GranularRules::visit(const GranularContext& on, GrainCell at, MotionHints hints) const {
+    const CellValue grain = on.grid[at.index];
     if (grain < 0) return {};
-    const CellValue below = grid[from - grid.layerSize()];
-    if (below == kEmpty) return fall(grid, falls, bottomIsOutlet, x, y, z, from, grain, hints.grain, step);
+    const CellValue below = on.grid[at.index - on.grid.layerSize()];
+    if (below == kEmpty) return fall(on, at, grain, hints.grain);
 
     // Most visited grains rest on grains at rest: the hints spare them both states (a cache miss
     // each, by id).
     const auto id = std::size_t(grain);
     // The grain below may be asleep in its fall (this one came to rest on it in the last step).
-    const std::uint32_t speedBelow = below >= 0 && hints.below ? caughtUp(falls[std::size_t(below)], step).speed : 0;
+    const std::span<FallState> falls = on.falls;
+    const std::uint32_t speedBelow = below >= 0 && hints.below ? caughtUp(falls[std::size_t(below)], on.step).speed : 0;
     if (speedBelow > 0) {
         // Resting on a grain that is still moving: move with it, and keep up to a cell of progress
         // so the grain follows at once when the one below moves on (a column flows as one).
         GranularOutcome outcome;
         outcome.inMotion = true; // speed > 0
-        outcome.kind = ride(falls[id], speedBelow, hints.grain, y > 1 || !bottomIsOutlet);
+        outcome.kind = ride(falls[id], speedBelow, hints.grain, at.y > 1 || !on.bottomIsOutlet);
         return outcome;
     }
     if (hints.grain && (falls[id].speed | falls[id].fraction)) { // it was in motion and stops here
         falls[id] = FallState{};
-        GranularOutcome outcome = slide(grid, empty, dither, stepKey, stream, x, y, z, from, grain, below == kInvalid);
+        GranularOutcome outcome = slide(on, at, grain, below == kInvalid);
         outcome.stopped = outcome.kind == GranularOutcome::Resting;
         return outcome;
     }
-    return slide(grid, empty, dither, stepKey, stream, x, y, z, from, grain, below == kInvalid);
+    return slide(on, at, grain, below == kInvalid);
 }
 
 /// The thresholds that make a poured cone stand at `reposeDegrees`, as round as the lattice lets

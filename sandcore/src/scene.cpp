@@ -160,9 +160,9 @@ void Scene::step() {
     MoveFeed* lowerFeed = feeding ? &lowerSweep_->feed() : nullptr;
     MoveFeed* upperFeed = feeding ? &upperSweep_->feed() : nullptr;
     const SweepContext lowerContext{lower_,   grains_,           settings_.seed,      stepNumber, GridLevel::Lower,
-                                    settings_.sleeping, stepKey, lowerFeed, movedList, settings_.sweepCode};
+                                    settings_.sleeping, stepKey, lowerFeed, movedList};
     const SweepContext upperContext{upper_,   grains_,           settings_.seed,      stepNumber, GridLevel::Upper,
-                                    settings_.sleeping, stepKey, upperFeed, movedList, settings_.sweepCode};
+                                    settings_.sleeping, stepKey, upperFeed, movedList};
     if (sideBySide) {
         lowerSweep_->setDeferWakesAbove(true);
         if (feeding) {
@@ -400,8 +400,6 @@ void Scene::setSleeping(bool sleeping) {
     if (sleeping && !settings_.sleeping) markEverythingAwake();
     settings_.sleeping = sleeping;
 }
-
-void Scene::setSweepCode(SweepCode code) { settings_.sweepCode = code; }
 
 void Scene::markEverythingAwake() {
     upperSweep_->readEmptyCells(upper_);

@@ -2,8 +2,6 @@
 // SPEC C1 through the real executable.
 #include "support/run_process.hpp"
 
-#include "sandcore/sweep_code.hpp"
-
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
@@ -36,24 +34,15 @@ TEST_CASE("simulate gives the same hash for 1 and 2 threads and with --full-swee
     CHECK(two["threads"] == 2);
 }
 
-TEST_CASE("simulate gives the same hash with either build of the sweep and names the one it ran") {
-    const std::string base = "simulate --res 32 --physics granular --gravity 0.1 --steps 300 --threads 2 --json";
-    const auto fastest = nlohmann::json::parse(runSandglass(base).out);
-    const auto portable = nlohmann::json::parse(runSandglass(base + " --sweep-code portable").out);
-    const auto bmi2 = nlohmann::json::parse(runSandglass(base + " --sweep-code BMI2").out);
-    CHECK(fastest["moves"].get<long long>() > 0);
-    CHECK(fastest["hash"] == portable["hash"]);
-    CHECK(fastest["hash"] == bmi2["hash"]);
-    CHECK(portable["sweep_code"] == "portable");
-    // Granular steps take the BMI2 build where it runs; this process runs on the same CPU.
-    const std::string bmi2Here = sandcore::bmi2SweepAvailable() ? "bmi2" : "portable";
-    CHECK(fastest["sweep_code"] == bmi2Here);
-    CHECK(bmi2["sweep_code"] == bmi2Here);
-    const auto classic = nlohmann::json::parse(runSandglass("simulate --res 24 --steps 50 --json").out);
-    CHECK(classic["sweep_code"] == "portable"); // classic steps keep the portable build
-    const auto bad = runSandglass("simulate --res 16 --steps 1 --sweep-code avx512");
-    CHECK(bad.exitCode != 0);
-    CHECK(bad.err.find("--sweep-code must be fastest, portable or bmi2, got 'avx512'") != std::string::npos);
+TEST_CASE("simulate gives the same granular hash for 1 and 2 threads and with --full-sweep") {
+    const std::string base = "simulate --res 32 --physics granular --gravity 0.1 --steps 300 --json";
+    const auto one = nlohmann::json::parse(runSandglass(base).out);
+    const auto two = nlohmann::json::parse(runSandglass(base + " --threads 2").out);
+    const auto full = nlohmann::json::parse(runSandglass(base + " --full-sweep").out);
+    CHECK(one["moves"].get<long long>() > 0);
+    CHECK(one["hash"] == two["hash"]);
+    CHECK(one["hash"] == full["hash"]);
+    CHECK_FALSE(one.contains("sweep_code")); // one build of the sweep: nothing to name
 }
 
 TEST_CASE("simulate --pour releases one grain per step on the canvas") {
@@ -112,5 +101,4 @@ TEST_CASE("simulate --help describes the options and succeeds") {
     CHECK(r.exitCode == 0);
     CHECK(r.out.find("--until-settled") != std::string::npos);
     CHECK(r.out.find("--full-sweep") != std::string::npos);
-    CHECK(r.out.find("--sweep-code") != std::string::npos);
 }

@@ -15,7 +15,6 @@
 #include "scene/statistics.hpp"
 
 #include "sandcore/scenes.hpp"
-#include "sandcore/sweep_code.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -40,7 +39,6 @@ struct SimulateOptions {
     bool untilSettled = false;
     std::int64_t maxSteps = 10'000'000;
     bool fullSweep = false;
-    std::string sweepCode = "fastest"; ///< StepSettings::sweepCode
     std::int64_t pour = 0;
     std::vector<std::int64_t> flipAt;
     double duration = 0.0;
@@ -59,7 +57,6 @@ BuiltScene sceneFor(const SimulateOptions& options, const CLI::App& command, Sce
     if (command.count("--threads")) loaded.scene.setThreads(settings.step.threads);
     if (command.count("--seed")) loaded.scene.setSeed(settings.step.seed);
     if (options.fullSweep) loaded.scene.setSleeping(false);
-    if (command.count("--sweep-code")) loaded.scene.setSweepCode(settings.step.sweepCode);
     settings = loaded.settings;
     settings.step = loaded.scene.settings();
     return BuiltScene(std::move(loaded.scene));
@@ -69,10 +66,6 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     using Clock = std::chrono::steady_clock;
     SceneSettings settings = sceneSettingsFrom(options.scene);
     settings.step.sleeping = !options.fullSweep;
-    const auto sweepCode = sandcore::parseSweepCode(options.sweepCode);
-    if (!sweepCode)
-        throw std::invalid_argument("--sweep-code must be fastest, portable or bmi2, got '" + options.sweepCode + "'");
-    settings.step.sweepCode = *sweepCode;
     // Outputs are checked before the run, so a long run never ends in an unwritable path.
     if (!options.save.empty()) requireWritableFileTarget(options.save);
     if (!options.exportFile.empty()) {
@@ -164,7 +157,6 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         out["threads"] = threads;
         out["settled"] = scene.settled();
         out["sleeping"] = !options.fullSweep;
-        out["sweep_code"] = std::string(sandcore::sweepCodeName(settings.step.physics.level, scene.settings().sweepCode));
         out["physics"] = std::string(sandcore::physicsLevelName(settings.step.physics.level));
         out["median_ms_per_step"] = stepMilliseconds.median();
         out["grains_upper"] = scene.counters().grainsUpper;
@@ -191,10 +183,8 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         std::printf("poured %lld of %lld grains\n", (long long)poured, (long long)options.pour);
     std::printf("%lld steps, %lld moves, %s\n", (long long)done, (long long)moves,
                 scene.settled() ? "settled" : "still moving");
-    std::printf("%.3f s, %.1f steps/s, median %.3f ms per step, %d thread(s), %s, %s sweep code\n", seconds,
-                stepsPerSecond, stepMilliseconds.median(), threads,
-                options.fullSweep ? "full sweep" : "sleeping grains skipped",
-                std::string(sandcore::sweepCodeName(settings.step.physics.level, scene.settings().sweepCode)).c_str());
+    std::printf("%.3f s, %.1f steps/s, median %.3f ms per step, %d thread(s), %s\n", seconds, stepsPerSecond,
+                stepMilliseconds.median(), threads, options.fullSweep ? "full sweep" : "sleeping grains skipped");
     std::printf("physics %s\n", std::string(sandcore::physicsLevelName(settings.step.physics.level)).c_str());
     if (options.duration > 0.0)
         std::printf("timer %.1f s: the drain takes %lld steps, so %.3f steps/s; these %lld steps last %.2f s\n",
@@ -220,10 +210,6 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     addNumberOption(*cmd, "--max-steps", options->maxSteps, std::int64_t{1}, kMaxSteps,
                     "with --until-settled: stop after this many steps at most (default 10000000)");
     cmd->add_flag("--full-sweep", options->fullSweep, "visit every cell each step (same result, slower)");
-    cmd->add_option("--sweep-code", options->sweepCode,
-                    "which build of the sweep runs: fastest (default: BMI2 for granular where the CPU has it), "
-                    "portable or bmi2; the result is the same")
-        ->capture_default_str();
     addNumberOption(*cmd, "--pour", options->pour, std::int64_t{0}, std::int64_t{1} << 31,
                     "canvas: release one grain per step at the centre of the top, N grains in all");
     addNumberListOption(*cmd, "--flip-at", options->flipAt, std::int64_t{0}, kMaxSteps,

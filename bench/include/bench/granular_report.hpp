@@ -8,7 +8,6 @@
 #include "bench/speed_error_report.hpp"
 
 #include "sandcore/physics_settings.hpp"
-#include "sandcore/sweep_code.hpp"
 
 #include <array>
 #include <cstdint>
@@ -25,16 +24,9 @@ struct GranularSection {
     bool passed = true;   ///< conservation held and every plot was drawn
 };
 
-/// One drain of a cost comparison: which rules, and which build of the sweep runs them
-/// (sandcore/sweep_code.hpp).
-struct DrainKind {
-    sandcore::PhysicsLevel level = sandcore::PhysicsLevel::Classic;
-    sandcore::SweepCode code = sandcore::SweepCode::Fastest;
-};
-
 /// One drain's cost in a cost comparison.
 struct DrainCost {
-    DrainKind kind;                ///< what drained
+    sandcore::PhysicsLevel level = sandcore::PhysicsLevel::Classic; ///< the rules that drained
     std::int64_t grains = 0;       ///< grains in the scene (kept throughout when conserved)
     bool conserved = false;        ///< the scene still holds every grain at the end
     std::uint64_t steps = 0;       ///< steps until nothing moved
@@ -48,16 +40,17 @@ struct DrainCost {
 /// Granular steps in one turn of drainsInTurns.
 inline constexpr int kGranularStepsPerTurn = 100;
 
-/// PH6: the procedural hourglass of this height drained until nothing moves once per kind,
+/// PH6: the procedural hourglass of this height drained until nothing moves once per level,
 /// `step`'s other settings for all, in one process and in turns: after each
 /// kGranularStepsPerTurn steps of every granular drain, each classic drain steps until it has
 /// passed as large a share of its sand as the first granular one (without a granular drain,
 /// the classic ones run to the end in turns of as many steps). A busy machine then slows all
 /// alike, which one drain after the other does not (the ratio of two levels moved from 2.8x to
-/// 6.5x within hours on a shared machine). Costs in the order of `kinds`.
-std::vector<DrainCost> drainsInTurns(int height, const sandcore::StepSettings& step, std::span<const DrainKind> kinds);
+/// 6.5x within hours on a shared machine). Costs in the order of `levels`.
+std::vector<DrainCost> drainsInTurns(int height, const sandcore::StepSettings& step,
+                                     std::span<const sandcore::PhysicsLevel> levels);
 
-/// drainsInTurns of the classic rules ([0]) and the granular ones ([1]), both with step.sweepCode.
+/// drainsInTurns of the classic rules ([0]) and the granular ones ([1]).
 std::array<DrainCost, 2> drainCostInTurns(int height, const sandcore::StepSettings& step);
 
 /// Measures the granular level and writes repose.csv, fall_time.csv, necks.csv, cost.csv and

@@ -7,7 +7,6 @@
 #include "sandcore/grain_store.hpp"
 #include "sandcore/layout_bits.hpp"
 #include "sandcore/physics_settings.hpp"
-#include "sandcore/sweep_code.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -28,13 +27,12 @@ enum class SceneKind : std::uint8_t {
     Canvas,    ///< MODE_PAINT: the user pours sand into an empty box
 };
 
-/// How a step runs; threads, sleeping and sweepCode never change the result, seed and physics do.
+/// How a step runs; threads and sleeping never change the result, seed and physics do.
 struct StepSettings {
     std::uint64_t seed = 1;  ///< feeds the counter-based randomness of slips (R3)
     int threads = 1;         ///< threads that share a step (R6); the result is the same for any count
     bool sleeping = true;    ///< R5: visit only awake grains; false = sweep every cell (same result, slower)
     PhysicsSettings physics; ///< PH1: classic or granular rules, repose angle, gravity
-    SweepCode sweepCode = SweepCode::Fastest; ///< which build of the sweep runs (sweep_code.hpp)
 };
 
 /// An axis-aligned box of cells, min inclusive, max exclusive, in one grid's coordinates.
@@ -121,7 +119,6 @@ public:
     /// a step (the surface upkeep, a renderer's stores) may share them too, never during one.
     WorkerPool* workers() const { return settings_.threads > 1 ? pool_.get() : nullptr; }
     void setSleeping(bool sleeping);    ///< R5 on or off; the result does not change
-    void setSweepCode(SweepCode code);  ///< StepSettings::sweepCode; the result does not change
     /// PH1: switches the rules (level, repose angle, gravity) from the next step on; every grain
     /// starts at rest. Throws std::invalid_argument for settings validatePhysics refuses.
     void setPhysics(const PhysicsSettings& physics);
