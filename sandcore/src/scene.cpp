@@ -63,7 +63,7 @@ Scene::Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::ve
     lowerLayout_ = LayoutBits(lower_);
     if (settings_.threads < 1) throw std::invalid_argument("threads must be at least 1");
     makeSweeps();
-    pool_ = std::make_unique<WorkerPool>(settings_.threads);
+    pool_ = std::make_unique<WorkerPool>(settings_.threads, settings_.tasks);
     reset();
 }
 
@@ -393,7 +393,7 @@ void Scene::setThreads(int threads) {
     if (threads < 1) throw std::invalid_argument("threads must be at least 1");
     if (threads == settings_.threads) return;
     settings_.threads = threads;
-    pool_ = std::make_unique<WorkerPool>(threads);
+    pool_ = std::make_unique<WorkerPool>(threads, settings_.tasks);
 }
 
 void Scene::setSleeping(bool sleeping) {

@@ -21,7 +21,8 @@ constexpr std::uint64_t nextTaskOf(std::uint64_t ticket) { return ticket & kFiel
 constexpr std::uint64_t taskCountOf(std::uint64_t ticket) { return (ticket >> 21) & kFieldMask; }
 } // namespace
 
-WorkerPool::WorkerPool(int threads) {
+WorkerPool::WorkerPool(int threads, const TaskSystem& host) : host_(host), hostThreads_(std::max(threads, 1)) {
+    if (host_.active()) return;
     const int workers = std::max(threads, 1) - 1;
     workers_.reserve(std::size_t(workers));
     for (int i = 0; i < workers; ++i) workers_.emplace_back([this] { workerLoop(); });
@@ -50,8 +51,28 @@ void WorkerPool::claimAndRunTasks() {
     }
 }
 
+void WorkerPool::runOnHost(int count, const std::function<void(int)>& task) {
+    struct Loop {
+        const std::function<void(int)>* task;
+        std::mutex failureMutex;
+        std::exception_ptr failure; // the first exception a task threw
+    } loop{&task, {}, {}};
+    const TaskSystem::Task run = [](int first, int last, void* context) {
+        Loop& running = *static_cast<Loop*>(context);
+        for (int i = first; i < last; ++i) try {
+                (*running.task)(i);
+            } catch (...) {
+                const std::lock_guard lock(running.failureMutex);
+                if (!running.failure) running.failure = std::current_exception();
+            }
+    };
+    if (void* userTask = host_.enqueue(run, count, 1, &loop, host_.userContext)) host_.finish(userTask, host_.userContext);
+    if (loop.failure) std::rethrow_exception(loop.failure);
+}
+
 void WorkerPool::parallelFor(int count, const std::function<void(int)>& task) {
     if (count < 0 || std::uint64_t(count) > kFieldMask) throw std::invalid_argument("parallelFor: bad task count");
+    if (host_.active() && count > 1) return runOnHost(count, task);
     if (workers_.empty() || count <= 1) {
         std::exception_ptr first;
         for (int i = 0; i < count; ++i) try {

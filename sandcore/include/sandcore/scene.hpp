@@ -7,6 +7,7 @@
 #include "sandcore/grain_store.hpp"
 #include "sandcore/layout_bits.hpp"
 #include "sandcore/physics_settings.hpp"
+#include "sandcore/task_system.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -33,6 +34,9 @@ struct StepSettings {
     int threads = 1;         ///< threads that share a step (R6); the result is the same for any count
     bool sleeping = true;    ///< R5: visit only awake grains; false = sweep every cell (same result, slower)
     PhysicsSettings physics; ///< PH1: classic or granular rules, repose angle, gravity
+    /// The host's task system for the step's parallel loops, split `threads` ways; inactive
+    /// (the default): the scene starts threads of its own.
+    TaskSystem tasks{};
 };
 
 /// An axis-aligned box of cells, min inclusive, max exclusive, in one grid's coordinates.

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // A small pool of persistent worker threads for the step (R6). The caller takes part in every
-// parallel loop, so a pool of N threads starts N - 1 workers.
+// parallel loop, so a pool of N threads starts N - 1 workers. Given a host's task system, it
+// starts none and hands each loop to the host instead.
+
+#include "sandcore/task_system.hpp"
 
 #include <atomic>
 #include <exception>
@@ -17,13 +20,14 @@ namespace sandcore {
 class WorkerPool {
 public:
     /// A pool that runs loops on `threads` threads in all (the caller included); at least 1.
-    explicit WorkerPool(int threads);
+    /// With an active `host`, loops run on the host's task system, split `threads` ways.
+    explicit WorkerPool(int threads, const TaskSystem& host = {});
     ~WorkerPool(); ///< stops and joins the workers
     WorkerPool(const WorkerPool&) = delete;
     WorkerPool& operator=(const WorkerPool&) = delete;
 
     /// Threads that share a loop, the caller included.
-    int threadCount() const { return int(workers_.size()) + 1; }
+    int threadCount() const { return host_.active() ? hostThreads_ : int(workers_.size()) + 1; }
 
     /// Calls task(i) for every i in [0, count < 2^21), spread over the threads; returns when all are done.
     /// Tasks must not depend on which thread runs them or in which order. If tasks throw, the
@@ -32,8 +36,11 @@ public:
 
 private:
     void workerLoop();
+    void runOnHost(int count, const std::function<void(int)>& task);
     void claimAndRunTasks();
 
+    TaskSystem host_;
+    int hostThreads_ = 1;
     std::vector<std::jthread> workers_;
     // The loop being run. Written only while no task of the previous loop is unfinished, and
     // read only by a thread that has claimed a task of this loop, so no reader sees a stale one.
