@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "mesh_preparation.hpp"
 
-#include "welded_mesh.hpp"
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -31,7 +29,7 @@ std::size_t rangeBegin(std::size_t count, std::size_t ranges, std::size_t r) { r
 // bucket). The sorts are stable, so the result does not depend on it.
 std::size_t countingChunks(const WorkerPool& pool) { return std::size_t(std::min(pool.threadCount(), 4)); }
 
-// -0.0 and +0.0 are the same position; everything else is compared bit for bit (as weldVertices).
+// -0.0 and +0.0 are the same position; everything else is compared bit for bit.
 std::uint32_t bitsOf(float value) { return std::bit_cast<std::uint32_t>(value == 0.0f ? 0.0f : value); }
 Key keyOf(Vec3 v) { return {bitsOf(v.x), bitsOf(v.y), bitsOf(v.z)}; }
 std::uint64_t hashOf(const Key& key) {
@@ -110,7 +108,7 @@ void checkIndices(const Triangle& t, std::size_t vertices) {
         throw std::invalid_argument("a triangle refers to a missing vertex");
 }
 
-// weldVertices: positions in the order of their first use, triangles renumbered. Where no two
+// Positions in the order of their first use, triangles renumbered. Where no two
 // vertices share a position the result is the mesh itself, and nothing is copied: fresh memory
 // is what costs most here (the kernel clears every page), and meshes that were welded on
 // loading are the common case. Their indices are checked by the edge walk that follows (it reads
@@ -176,7 +174,7 @@ struct WalkCounts {
     std::vector<std::uint32_t> suspects; // triangles that might repeat another: they share an edge the same way
 };
 
-// The edge walk of orientedOutwardWelded, in parallel: the uses are filed under their smaller
+// The walk over the edges: the uses are filed under their smaller
 // vertex by a stable counting sort (the chunks of triangles in order), then each vertex range
 // groups its uses by edge. Fills `neighbours`; the counts are sums, so the order of ranges does not matter.
 WalkCounts walkEdges(std::span<const Triangle> meshTriangles, std::size_t vertices, BigVector<std::uint32_t>& neighbours, WorkerPool& pool) {
@@ -297,8 +295,10 @@ WalkCounts walkEdges(std::span<const Triangle> meshTriangles, std::size_t vertic
     return total;
 }
 
-// trianglesToKeep, looking only at the triangles that can repeat another: a repeated face and
-// its first copy are both suspects (or degenerate), so every group of equal faces lies among them.
+// Per triangle, 1 when it stays: of the faces that are equal once rotated so their smallest
+// index comes first (the same face with the same orientation), the first one. Empty when every
+// one stays. Looks only at the triangles that can repeat another: a repeated face and its first
+// copy are both suspects (or degenerate), so every group of equal faces lies among them.
 std::vector<char> trianglesToKeepAmong(std::span<const Triangle> triangles, std::vector<std::uint32_t> candidates) {
     for (std::size_t n = 0; n < triangles.size(); ++n)
         if (isDegenerate(triangles[n])) candidates.push_back(std::uint32_t(n));
@@ -337,6 +337,41 @@ void WalkedMesh::keepFirstTriangles(std::size_t count) {
     triangles = ownTriangles;
 }
 
+TriangleMesh WalkedMesh::copy() const {
+    TriangleMesh mesh;
+    mesh.vertices.assign(vertices.begin(), vertices.end());
+    mesh.triangles.assign(triangles.begin(), triangles.end());
+    return mesh;
+}
+
+const char* widenBoundsByCorners(std::span<const Vec3> vertices, std::span<const MeshTriangle> triangles, std::size_t first,
+                                 std::size_t end, MeshBounds& bounds) {
+    // The running bounds in locals: through the reference the compiler would store them at every
+    // corner (they might alias the vertices).
+    std::array<double, 3> low = bounds.min, high = bounds.max;
+    const char* error = nullptr;
+    for (std::size_t n = first; n < end && !error; ++n)
+        for (std::uint32_t i : triangles[n]) {
+            if (i >= vertices.size()) {
+                error = "a triangle refers to a missing vertex";
+                break;
+            }
+            const Vec3 v = vertices[i];
+            const double c[3] = {v.x, v.y, v.z};
+            if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
+                error = "the model has a non-finite coordinate (NaN or infinity)";
+                break;
+            }
+            for (std::size_t a = 0; a < 3; ++a) {
+                low[a] = std::min(low[a], c[a]);
+                high[a] = std::max(high[a], c[a]);
+            }
+        }
+    bounds.min = low;
+    bounds.max = high;
+    return error;
+}
+
 MeshBounds boundsInParallel(const TriangleMesh& mesh, WorkerPool& pool) {
     if (mesh.triangles.empty()) throw std::invalid_argument("the mesh has no triangles");
     struct Part {
@@ -349,7 +384,7 @@ MeshBounds boundsInParallel(const TriangleMesh& mesh, WorkerPool& pool) {
         Part& part = parts[std::size_t(r)];
         part.bounds.min.fill(std::numeric_limits<double>::infinity());
         part.bounds.max.fill(-std::numeric_limits<double>::infinity());
-        part.error = widenBoundsByCorners(mesh, rangeBegin(count, kRanges, r), rangeBegin(count, kRanges, r + 1), part.bounds);
+        part.error = widenBoundsByCorners(mesh.vertices, mesh.triangles, rangeBegin(count, kRanges, r), rangeBegin(count, kRanges, r + 1), part.bounds);
     });
     MeshBounds bounds;
     bounds.min.fill(std::numeric_limits<double>::infinity());
@@ -365,11 +400,18 @@ MeshBounds boundsInParallel(const TriangleMesh& mesh, WorkerPool& pool) {
     return bounds;
 }
 
-WalkedMesh weldAndWalk(const TriangleMesh& mesh, WorkerPool& pool) {
+WalkedMesh weldedVertices(const TriangleMesh& mesh, WorkerPool& pool) {
+    WalkedMesh welded;
+    weld(mesh, welded, pool);
+    return welded;
+}
+
+WalkedMesh weldAndWalk(const TriangleMesh& mesh, WorkerPool& pool, RepeatedFaces repeated) {
     WalkedMesh walked;
     weld(mesh, walked, pool);
     WalkCounts asLoaded = walkEdges(walked.triangles, walked.vertices.size(), walked.neighbours, pool);
     walked.closedness = asLoaded.closedness;
+    if (repeated == RepeatedFaces::Keep) return walked;
     const std::vector<char> keep = trianglesToKeepAmong(walked.triangles, std::move(asLoaded.suspects));
     if (keep.empty()) return walked;
     // Faces written twice go; the walk over what is left links the faces anew.
@@ -383,6 +425,41 @@ WalkedMesh weldAndWalk(const TriangleMesh& mesh, WorkerPool& pool) {
 }
 
 namespace {
+
+// Flips the whole part when, with its current flips, it encloses a negative signed volume about
+// its own centre (a centre near the part keeps the sum's rounding small).
+void orientPartByVolume(std::span<const Vec3> vertices, std::span<const Triangle> triangles, std::span<const std::uint32_t> part,
+                        std::span<std::int8_t> flipped) {
+    std::array<double, 3> low, high;
+    low.fill(std::numeric_limits<double>::infinity());
+    high.fill(-std::numeric_limits<double>::infinity());
+    for (std::uint32_t t : part)
+        for (std::uint32_t i : triangles[t]) {
+            const Vec3 v = vertices[i];
+            const double c[3] = {v.x, v.y, v.z};
+            for (std::size_t a = 0; a < 3; ++a) {
+                low[a] = std::min(low[a], c[a]);
+                high[a] = std::max(high[a], c[a]);
+            }
+        }
+    double sixTimesVolume = 0.0;
+    for (std::uint32_t t : part) {
+        auto tri = triangles[t];
+        if (flipped[t]) std::swap(tri[1], tri[2]);
+        double p[3][3];
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Vec3 v = vertices[tri[k]];
+            p[k][0] = v.x - 0.5 * (low[0] + high[0]);
+            p[k][1] = v.y - 0.5 * (low[1] + high[1]);
+            p[k][2] = v.z - 0.5 * (low[2] + high[2]);
+        }
+        sixTimesVolume += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
+                          p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+                          p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+    }
+    if (sixTimesVolume < 0.0)
+        for (std::uint32_t t : part) flipped[t] ^= 1;
+}
 
 // orientFaces by a depth-first search from each part's first triangle, summing each part's
 // volume in the order the search reaches its triangles: the definition, and the way for
@@ -596,6 +673,18 @@ double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8
         sixTimesVolume += ax * (by * qz - bz * qy) - ay * (bx * qz - bz * qx) + az * (bx * qy - by * qx);
     }
     return sixTimesVolume / 6.0;
+}
+
+TriangleMesh turnedOutward(WalkedMesh walked, WorkerPool& pool) {
+    // The bounds of the corners the faces use. A non-finite coordinate stops them short, but then
+    // no volume sum is finite either, so the orientation falls back to its search, which measures
+    // each part itself.
+    MeshBounds bounds;
+    bounds.min.fill(std::numeric_limits<double>::infinity());
+    bounds.max.fill(-std::numeric_limits<double>::infinity());
+    (void)widenBoundsByCorners(walked.vertices, walked.triangles, 0, walked.triangles.size(), bounds);
+    applyOrientation(walked, orientationOf(walked, bounds), pool);
+    return walked.copy();
 }
 
 void applyOrientation(WalkedMesh& walked, const Orientation& orientation, WorkerPool& pool) {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// What voxelize needs of a loaded mesh before casting rays, computed in parallel with little
-// fresh memory: the same welded vertices, kept triangles, outward orientation, closedness and
-// inconsistency counts as weldVertices -> trianglesToKeep -> orientedOutwardWelded
-// (welded_mesh.hpp), bit for bit and for any thread count. Private to sandcore.
+// Welding, dropping repeated faces, closedness and the outward orientation of a mesh: the one
+// implementation behind the public functions of triangle_mesh.hpp (on one thread) and what
+// voxelize needs of a loaded mesh before casting rays (on all of its threads). Computed in
+// parallel with little fresh memory; the results are the same for any thread count. Private to
+// sandcore.
 
 #include "sandcore/large_pages.hpp"
 #include "sandcore/triangle_mesh.hpp"
@@ -45,16 +46,36 @@ struct WalkedMesh {
     std::span<MeshTriangle> changeableTriangles();
     /// Keeps the first `count` triangles.
     void keepFirstTriangles(std::size_t count);
+    /// The vertices and triangles as a plain mesh of their own.
+    TriangleMesh copy() const;
 };
+
+/// Widens `bounds` by the corners of triangles [first, end), in order (a tie of -0.0 and +0.0
+/// keeps the one met first). Returns the first error met (a missing vertex, a non-finite
+/// coordinate), with `bounds` then incomplete, or nullptr. boundsOf over one range;
+/// boundsInParallel over several.
+const char* widenBoundsByCorners(std::span<const Vec3> vertices, std::span<const MeshTriangle> triangles, std::size_t first,
+                                 std::size_t end, MeshBounds& bounds);
 
 /// boundsOf, in parallel: the same bounds, and the same error for the first bad triangle.
 MeshBounds boundsInParallel(const TriangleMesh& mesh, WorkerPool& pool);
 
-/// Welds the vertices at bit-identical positions, drops repeated faces and links neighbours.
-/// Throws std::invalid_argument for an index out of range or 2^29 triangles and more.
-WalkedMesh weldAndWalk(const TriangleMesh& mesh, WorkerPool& pool);
+/// Welds the vertices at bit-identical positions: the positions in the order of their first use,
+/// the triangles renumbered (no copy where nothing welds). Only the triangles that were
+/// renumbered have their indices checked; nothing is linked.
+WalkedMesh weldedVertices(const TriangleMesh& mesh, WorkerPool& pool);
 
-/// Which triangles orientedOutward flips (1) and closednessOf(its result).inconsistentEdges.
+/// Whether weldAndWalk drops the faces that repeat another with the same orientation.
+enum class RepeatedFaces { Drop, Keep };
+/// Welds the vertices at bit-identical positions, drops repeated faces (unless told to keep
+/// them) and links neighbours. Throws std::invalid_argument for an index out of range or 2^29
+/// triangles and more.
+WalkedMesh weldAndWalk(const TriangleMesh& mesh, WorkerPool& pool, RepeatedFaces repeated = RepeatedFaces::Drop);
+
+/// Which triangles orientedOutward flips (1) and closednessOf(its result).inconsistentEdges:
+/// neighbours across every edge used by exactly two faces agree where they can, and each part
+/// (faces linked through such edges) is turned over as a whole when its signed volume about its
+/// own bounds' centre is negative.
 /// Reads the mesh only, so rays can be cast through it meanwhile.
 struct Orientation {
     LargePageVector<std::uint8_t> flipped;
@@ -63,7 +84,8 @@ struct Orientation {
     /// of one part, whose centre is the bounds' centre); otherwise empty.
     std::optional<double> signedVolume;
 };
-/// `bounds`: boundsInParallel of the mesh as loaded.
+/// `bounds`: the bounds of the corners the walked mesh's triangles use (boundsInParallel of the
+/// mesh as loaded has them).
 Orientation orientationOf(const WalkedMesh& walked, const MeshBounds& bounds);
 
 /// signedVolume of the mesh with the flipped triangles turned over, bit for bit, given the
@@ -74,5 +96,8 @@ double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8
 
 /// Turns the flipped triangles over.
 void applyOrientation(WalkedMesh& walked, const Orientation& orientation, WorkerPool& pool);
+
+/// The walked mesh oriented outward (orientationOf, then applyOrientation), as a plain mesh.
+TriangleMesh turnedOutward(WalkedMesh walked, WorkerPool& pool);
 
 } // namespace sandcore
