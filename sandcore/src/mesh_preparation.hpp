@@ -4,7 +4,7 @@
 // implementation behind the public functions of triangle_mesh.hpp (on one thread) and what
 // voxelize needs of a loaded mesh before casting rays (on all of its threads). Computed in
 // parallel with little fresh memory; the results are the same for any thread count. Private to
-// sandcore.
+// sandcore. The orientation's search and sums: mesh_orientation.cpp.
 
 #include "sandcore/large_pages.hpp"
 #include "sandcore/triangle_mesh.hpp"
@@ -22,6 +22,8 @@ namespace sandcore {
 
 template <class T> using LargePageVector = std::vector<T, FillLaterAllocator<T>>;
 using MeshTriangle = std::array<std::uint32_t, 3>;
+/// WalkedMesh::neighbours of an edge that links no two faces.
+inline constexpr std::uint32_t kNoNeighbour = ~std::uint32_t{0};
 
 /// A welded mesh, its repeated faces dropped, with the links between faces that one walk over
 /// its edges found. Kept in huge pages: fresh memory costs a page fault per 4 KiB otherwise.
@@ -34,7 +36,8 @@ struct WalkedMesh {
     LargePageVector<MeshTriangle> ownTriangles; ///< the triangles' storage once they are changed
     MeshClosedness closedness;                ///< closednessOf the mesh as given (before dropping repeated faces)
     /// Per triangle edge slot 3t + e (edge from corner e to e + 1): the neighbour across an edge
-    /// used by exactly two triangles, other << 1 | (1 when the two run along it the same way).
+    /// used by exactly two triangles, other << 1 | (1 when the two run along it the same way);
+    /// kNoNeighbour for any other edge.
     LargePageVector<std::uint32_t> neighbours;
 
     WalkedMesh() = default;
