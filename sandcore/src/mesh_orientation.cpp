@@ -248,22 +248,26 @@ Orientation orientationOf(const WalkedMesh& walked, const MeshBounds& bounds) {
     return orientationBySearch(walked);
 }
 
-double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8_t>& flipped, const MeshBounds& bounds) {
-    // signedVolume's loops, on the triangles as they will be after the flips.
-    if (walked.triangles.empty()) return 0.0;
+double signedVolumeAbout(std::span<const Vec3> vertices, std::span<const MeshTriangle> triangles,
+                         std::span<const std::uint8_t> flipped, const MeshBounds& bounds) {
+    if (triangles.empty()) return 0.0;
     const double cx = 0.5 * (bounds.min[0] + bounds.max[0]), cy = 0.5 * (bounds.min[1] + bounds.max[1]),
                  cz = 0.5 * (bounds.min[2] + bounds.max[2]);
     double sixTimesVolume = 0.0;
-    for (std::size_t n = 0; n < walked.triangles.size(); ++n) {
-        const Triangle& t = walked.triangles[n];
-        const Vec3 a = walked.vertices[t[0]], b = walked.vertices[t[flipped[n] ? 2 : 1]],
-                   c = walked.vertices[t[flipped[n] ? 1 : 2]];
+    for (std::size_t n = 0; n < triangles.size(); ++n) {
+        const Triangle& t = triangles[n];
+        const bool turned = !flipped.empty() && flipped[n];
+        const Vec3 a = vertices[t[0]], b = vertices[t[turned ? 2 : 1]], c = vertices[t[turned ? 1 : 2]];
         const double ax = a.x - cx, ay = a.y - cy, az = a.z - cz;
         const double bx = b.x - cx, by = b.y - cy, bz = b.z - cz;
         const double qx = c.x - cx, qy = c.y - cy, qz = c.z - cz;
         sixTimesVolume += ax * (by * qz - bz * qy) - ay * (bx * qz - bz * qx) + az * (bx * qy - by * qx);
     }
     return sixTimesVolume / 6.0;
+}
+
+double signedVolumeOf(const WalkedMesh& walked, const LargePageVector<std::uint8_t>& flipped, const MeshBounds& bounds) {
+    return signedVolumeAbout(walked.vertices, walked.triangles, flipped, bounds);
 }
 
 } // namespace sandcore

@@ -91,6 +91,11 @@ struct Orientation {
 /// mesh as loaded has them).
 Orientation orientationOf(const WalkedMesh& walked, const MeshBounds& bounds);
 
+/// Sum of signed tetrahedra about the bounds' centre (signedVolume), the triangles whose
+/// `flipped` entry is nonzero turned over (none when `flipped` is empty).
+double signedVolumeAbout(std::span<const Vec3> vertices, std::span<const MeshTriangle> triangles,
+                         std::span<const std::uint8_t> flipped, const MeshBounds& bounds);
+
 /// signedVolume of the mesh with the flipped triangles turned over, bit for bit, given the
 /// bounds of the mesh as loaded (boundsInParallel). Its triangles' corners are the welded mesh's
 /// at the same positions: welding and dropping repeated faces keep every position a kept

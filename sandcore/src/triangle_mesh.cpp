@@ -55,19 +55,7 @@ TriangleMesh orientedOutward(const TriangleMesh& mesh) {
 
 double signedVolume(const TriangleMesh& mesh) {
     if (mesh.triangles.empty()) return 0.0;
-    const MeshBounds bounds = boundsOf(mesh);
-    const double cx = 0.5 * (bounds.min[0] + bounds.max[0]);
-    const double cy = 0.5 * (bounds.min[1] + bounds.max[1]);
-    const double cz = 0.5 * (bounds.min[2] + bounds.max[2]);
-    double sixTimesVolume = 0.0;
-    for (const auto& t : mesh.triangles) {
-        const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
-        const double ax = a.x - cx, ay = a.y - cy, az = a.z - cz;
-        const double bx = b.x - cx, by = b.y - cy, bz = b.z - cz;
-        const double qx = c.x - cx, qy = c.y - cy, qz = c.z - cz;
-        sixTimesVolume += ax * (by * qz - bz * qy) - ay * (bx * qz - bz * qx) + az * (bx * qy - by * qx);
-    }
-    return sixTimesVolume / 6.0;
+    return signedVolumeAbout(mesh.vertices, mesh.triangles, {}, boundsOf(mesh));
 }
 
 } // namespace sandcore
