@@ -1,13 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "bench/report_files.hpp"
 
+#include "process/child_process.hpp"
 #include "scene/file_io.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 #include <stdexcept>
 #include <utility>
@@ -66,32 +63,11 @@ bool runGnuplot(const std::filesystem::path& scriptFile, const std::string& scri
     writeText(scriptFile, script);
     // Scripts name their data and output files relative to their own folder.
     const std::filesystem::path folder = scriptFile.parent_path().empty() ? "." : scriptFile.parent_path();
-    // No shell: the folder name may hold quotes or anything else. The child changes into the
-    // folder and runs gnuplot with an argument vector; between fork and exec it calls only
-    // async-signal-safe functions (chdir, open, dup2, execvp, _exit), since the bench may have
-    // worker threads. Strings are prepared before the fork.
-    const std::string folderText = folder.string(), scriptName = scriptFile.filename().string();
-    char gnuplot[] = "gnuplot";
-    std::vector<char> scriptArgument(scriptName.begin(), scriptName.end());
-    scriptArgument.push_back('\0');
-    char* const arguments[] = {gnuplot, scriptArgument.data(), nullptr};
-    const pid_t child = ::fork();
-    if (child < 0) return false;
-    if (child == 0) {
-        if (::chdir(folderText.c_str()) != 0) ::_exit(126);
-        const int devNull = ::open("/dev/null", O_RDWR);
-        if (devNull >= 0) {
-            ::dup2(devNull, STDIN_FILENO);
-            ::dup2(devNull, STDOUT_FILENO);
-            ::dup2(devNull, STDERR_FILENO);
-        }
-        ::execvp(gnuplot, arguments);
-        ::_exit(127);
-    }
-    int status = 0;
-    while (::waitpid(child, &status, 0) < 0)
-        if (errno != EINTR) return false;
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    // No shell: the folder name may hold quotes or anything else.
+    sandglass::ChildCommand command;
+    command.arguments = {"gnuplot", scriptFile.filename().string()};
+    command.folder = folder;
+    return sandglass::ChildProcess(command).wait().succeeded();
 }
 
 bool writeLinePlot(const std::filesystem::path& folder, const LinePlot& plot) {

@@ -2,7 +2,6 @@
 #include "sandcore/voxelizer.hpp"
 
 #include "mesh_preparation.hpp"
-#include "welded_mesh.hpp"
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/worker_pool.hpp"
@@ -321,9 +320,8 @@ LargePageVector<Point> quantizedGridPoints(std::span<const Vec3> vertices, const
 // What the rays see: a face written twice counts once, and faces are oriented outward for the
 // winding number of robust mode (parity ignores orientation).
 TriangleMesh preparedForRays(const TriangleMesh& mesh) {
-    TriangleMesh welded = weldVertices(mesh);
-    const std::vector<char> keep = trianglesToKeep(welded);
-    return orientedOutwardWelded(keptTriangles(std::move(welded), keep)).mesh;
+    WorkerPool pool(1);
+    return turnedOutward(weldAndWalk(mesh, pool), pool);
 }
 
 } // namespace

@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: MIT
-// sandglass-import: the model importer as its own process. loadMesh starts it with fork and
-// exec (only async-signal-safe calls between the two), so nothing of the parent's state, no
-// lock another thread held, reaches the process that runs assimp. It writes the encoded
-// triangle list (or one line of error) to stdout and exits.
+// sandglass-import: the model importer as its own process. loadMesh starts it with posix_spawn
+// (import_in_child_process.cpp), so nothing of the parent's state, no lock another thread held,
+// reaches the process that runs assimp. It writes the encoded triangle list (or one line of
+// error) to stdout and exits.
 
 #include "isolated_import.hpp"
 
 #include <cerrno>
+#include <sys/resource.h>
 #include <unistd.h>
 
 int main(int argc, char** argv) {
     if (argc != 2) return 2;
+    const rlimit noCore{0, 0}; // a crash on a corrupt file is expected: no core file
+    ::setrlimit(RLIMIT_CORE, &noCore);
     std::vector<std::uint8_t> reply;
     try {
         reply = sandglass::encodeImport(sandglass::importInThisProcess(argv[1]));

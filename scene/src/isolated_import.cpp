@@ -1,27 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Why another process: assimp (Debian's 5.x) crashes with SIGSEGV, aborts in ai_assert and loops
-// forever on truncated or byte-flipped PLY and OFF files. aiProcess_ValidateDataStructure turns
-// some of these into errors, not all, and no check of ours can know every reader's bugs. So the
-// import runs in a child process; the parent waits with a time limit and reads a plain triangle
-// list from a pipe, checking every count and index.
-//
-// The child is the small executable sandglass-import (scene/src/import_helper_main.cpp), started with fork + exec.
-// The GUI builds scenes on a worker thread, so the fork happens in a multi-threaded process:
-// only the forking thread exists in the child, and a lock another thread held at the fork stays
-// locked there (under ASan even malloc's). Between fork and exec the child therefore calls only
-// async-signal-safe functions (dup2, open, setrlimit, execv, _exit) on strings prepared before
-// the fork; exec then gives it a fresh process image with no inherited lock.
-//
-// Should the helper be missing (a library user who did not build it), the child runs the import
-// itself after the fork: glibc's malloc is fork-safe and the child uses no stdio, GL or logging,
-// and if it still blocks on a lock the time limit ends it with one line. The parent is never at
-// risk. The child leaves with _exit, so no handler or static destructor of the parent runs twice.
+// The import itself (assimp, in the child: importInThisProcess) and the wire format of its reply.
+// Starting the child and reading the reply: import_in_child_process.cpp.
 
 #include "isolated_import.hpp"
-
-#ifdef SANDGLASS_FIND_IMPORT_HELPER
-#include "scene/data_paths.hpp"
-#endif
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
@@ -31,15 +12,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <chrono>
-#include <csignal>
-#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <poll.h>
-#include <sys/resource.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
+#include <stdexcept>
 #include <unistd.h>
 #include <vector>
 
@@ -154,52 +129,6 @@ void put(std::vector<std::uint8_t>& out, const void* data, std::size_t size) {
     std::memcpy(out.data() + at, data, size);
 }
 
-// Reads from a pipe until the writer closes it or the deadline passes; false on timeout.
-bool readUntilClosed(int fd, std::chrono::steady_clock::time_point deadline, std::vector<std::uint8_t>& bytes) {
-    std::uint8_t buffer[65536];
-    for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-        if (left.count() <= 0) return false;
-        pollfd watch{fd, POLLIN, 0};
-        const int ready = ::poll(&watch, 1, int(std::min<long long>(left.count(), 1000)));
-        if (ready < 0 && errno == EINTR) continue;
-        if (ready < 0) return true; // treated as a closed pipe: the reply is decoded as it is
-        if (ready == 0) continue;
-        const ssize_t n = ::read(fd, buffer, sizeof buffer);
-        if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
-        if (n <= 0) return true;
-        bytes.insert(bytes.end(), buffer, buffer + n);
-    }
-}
-
-[[noreturn]] void runChild(const std::string& path, int replyFd) {
-    // Output of the importer (assert messages, sanitizer reports) must not reach the user's
-    // terminal: the parent prints one line.
-    const int devNull = ::open("/dev/null", O_WRONLY);
-    if (devNull >= 0) {
-        ::dup2(devNull, STDOUT_FILENO);
-        ::dup2(devNull, STDERR_FILENO);
-    }
-    const rlimit noCore{0, 0}; // a crash of a corrupt file is expected: no core file
-    ::setrlimit(RLIMIT_CORE, &noCore);
-    std::vector<std::uint8_t> reply;
-    try {
-        reply = encodeImport(importInThisProcess(path));
-    } catch (...) {
-        ImportedTriangles failed;
-        failed.error = "the importer ran out of memory or failed";
-        reply = encodeImport(failed);
-    }
-    std::size_t done = 0;
-    while (done < reply.size()) {
-        const ssize_t n = ::write(replyFd, reply.data() + done, reply.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) ::_exit(3);
-        done += std::size_t(n);
-    }
-    ::_exit(0);
-}
-
 } // namespace
 
 ImportedTriangles importInThisProcess(const std::string& path) {
@@ -263,7 +192,7 @@ std::vector<std::uint8_t> encodeImport(const ImportedTriangles& imported) {
     return out;
 }
 
-ImportedTriangles decodeImport(const std::vector<std::uint8_t>& bytes) {
+ImportedTriangles decodeImport(std::span<const std::uint8_t> bytes) {
     ImportedTriangles out;
     std::size_t at = 0;
     auto take = [&](void* into, std::size_t size) {
@@ -328,81 +257,6 @@ ImportedTriangles decodeImport(const std::vector<std::uint8_t>& bytes) {
     }
     if (covered != out.triangles.size() || at != bytes.size()) return fail();
     return out;
-}
-
-ImportedTriangles importInChildProcess(const std::string& path, double timeLimitSeconds) {
-    ImportedTriangles failed;
-    // Everything the child needs before exec is prepared here: it may not allocate.
-    const char* helper = nullptr;
-#ifdef SANDGLASS_FIND_IMPORT_HELPER
-    // Beside an installed executable or in the build tree (data_paths.hpp).
-    const std::string helperPath = importHelperPath().string();
-    if (!helperPath.empty()) helper = helperPath.c_str();
-#endif
-    std::string helperName = "sandglass-import", pathArgument = path;
-    std::vector<char*> arguments = {helperName.data(), pathArgument.data(), nullptr};
-    int reply[2];
-    if (::pipe2(reply, O_CLOEXEC) != 0) {
-        failed.error = std::string("cannot start the model importer (") + std::strerror(errno) + ")";
-        return failed;
-    }
-    const pid_t child = ::fork();
-    if (child < 0) {
-        failed.error = std::string("cannot start the model importer (") + std::strerror(errno) + ")";
-        ::close(reply[0]);
-        ::close(reply[1]);
-        return failed;
-    }
-    if (child == 0) {
-        ::close(reply[0]);
-        if (helper != nullptr) {
-            // Async-signal-safe calls only, until exec.
-            const int devNull = ::open("/dev/null", O_RDWR);
-            if (devNull >= 0) {
-                ::dup2(devNull, STDIN_FILENO);
-                ::dup2(devNull, STDERR_FILENO);
-            }
-            ::dup2(reply[1], STDOUT_FILENO);
-            const rlimit noCore{0, 0};
-            ::setrlimit(RLIMIT_CORE, &noCore);
-            ::execv(helper, arguments.data());
-            ::_exit(127);
-        }
-        runChild(path, reply[1]);
-    }
-    ::close(reply[1]);
-    const auto limit = std::chrono::duration<double>(timeLimitSeconds);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(limit);
-    std::vector<std::uint8_t> bytes;
-    const bool finished = readUntilClosed(reply[0], deadline, bytes);
-    ::close(reply[0]);
-    if (!finished) ::kill(child, SIGKILL);
-    int status = 0;
-    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (!finished) {
-        char seconds[32];
-        std::snprintf(seconds, sizeof seconds, "%g", timeLimitSeconds);
-        failed.error = std::string("the model importer did not finish within ") + seconds +
-                       " s (the file is probably corrupt)";
-        return failed;
-    }
-    if (WIFSIGNALED(status)) {
-        const int signal = WTERMSIG(status);
-        const char* name = sigabbrev_np(signal);
-        failed.error = "the model importer crashed on this file (signal " + std::to_string(signal) +
-                       (name ? std::string(", SIG") + name : std::string()) + "); the file is probably corrupt";
-        return failed;
-    }
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 127 && bytes.empty()) {
-        failed.error = "cannot start the model importer " + std::string(helper ? helper : "");
-        return failed;
-    }
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        failed.error = "the model importer failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
-        return failed;
-    }
-    return decodeImport(bytes);
 }
 
 } // namespace sandglass

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ struct ImportedTriangles {
     std::string error;                                   ///< one line, empty on success
 };
 
-/// Imports `path` with assimp in a forked child that must finish within timeLimitSeconds.
+/// Imports `path` with assimp in a child process (the sandglass-import executable) that must
+/// finish within timeLimitSeconds.
 /// Never throws for a bad file: a crash, a hang, an importer error or a malformed reply from
 /// the child all come back as `error`.
 ImportedTriangles importInChildProcess(const std::string& path, double timeLimitSeconds);
@@ -39,6 +41,6 @@ ImportedTriangles importInThisProcess(const std::string& path);
 /// The wire format between child and parent; decodeImport checks every count and index
 /// against the bytes it was given, so a truncated or garbled reply is an error, not a crash.
 std::vector<std::uint8_t> encodeImport(const ImportedTriangles& imported);
-ImportedTriangles decodeImport(const std::vector<std::uint8_t>& bytes);
+ImportedTriangles decodeImport(std::span<const std::uint8_t> bytes);
 
 } // namespace sandglass

@@ -128,7 +128,7 @@ TEST_CASE("a bad model leaves the running scene untouched") {
 }
 
 TEST_CASE("models load in a child process while other threads allocate, as in the GUI") {
-    // The GUI builds scenes on a worker thread while others run: the import forks a
+    // The GUI builds scenes on a worker thread while others run: the import starts a child from a
     // multi-threaded process, and the child must neither deadlock nor disturb the parent.
     TempDir dir("threads");
     const std::string cube = dir.write("cube.obj", kCubeObj);

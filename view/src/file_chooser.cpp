@@ -1,16 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "view/file_chooser.hpp"
 
-#include <cerrno>
+#include "process/child_process.hpp"
+
 #include <csignal>
 #include <cstdlib>
-#include <fcntl.h>
 #include <filesystem>
-#include <spawn.h>
-#include <sys/wait.h>
+#include <memory>
 #include <unistd.h>
-
-extern char** environ;
 
 namespace sandglass {
 
@@ -95,31 +92,19 @@ std::vector<std::string> fileChooserCommand(const std::string& program, FileChoi
     return command;
 }
 
-FileChooser::~FileChooser() {
-    if (child_ > 0) {
-        // The dialog's whole process group (a wrapper script and the dialog it starts) goes,
-        // and a program that ignores SIGTERM is killed after half a second.
-        ::kill(-child_, SIGTERM);
-        int status = 0;
-        for (int tries = 0; tries < 50 && ::waitpid(child_, &status, WNOHANG) == 0; ++tries) ::usleep(10'000);
-        if (::waitpid(child_, &status, WNOHANG) == 0) ::kill(-child_, SIGKILL);
-    }
-    close();
-}
+FileChooser::FileChooser() = default;
 
-void FileChooser::close() {
-    if (output_ >= 0) ::close(output_);
-    output_ = -1;
-    if (child_ > 0) {
-        int status = 0;
-        while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
-        }
+FileChooser::~FileChooser() {
+    if (child_) {
+        // The dialog's whole process group (a wrapper script and the dialog it starts) goes,
+        // and a program that ignores SIGTERM is killed after half a second (by the child's end).
+        child_->sendSignal(SIGTERM);
+        for (int tries = 0; tries < 50 && !child_->exited(); ++tries) ::usleep(10'000);
     }
-    child_ = -1;
 }
 
 std::string FileChooser::open(FileChoice choice, const std::string& startPath) {
-    if (child_ > 0) return "a file dialog is already open";
+    if (child_) return "a file dialog is already open";
     std::string program;
     if (const char* chosen = std::getenv("SANDGLASS_FILE_CHOOSER"); chosen && *chosen) {
         program = findProgram(chosen);
@@ -129,62 +114,29 @@ std::string FileChooser::open(FileChoice choice, const std::string& startPath) {
         if (program.empty()) program = findProgram("kdialog");
         if (program.empty()) return "no file dialog found (install zenity); type the path instead";
     }
-    const std::vector<std::string> command = fileChooserCommand(program, choice, startPath);
-    std::vector<char*> arguments;
-    for (const std::string& argument : command) arguments.push_back(const_cast<char*>(argument.c_str()));
-    arguments.push_back(nullptr);
-
-    int pipeEnds[2];
-    if (::pipe2(pipeEnds, O_CLOEXEC) != 0) return "cannot open a file dialog (no pipe)";
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], 1);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0); // toolkit warnings
-    posix_spawn_file_actions_addclosefrom_np(&actions, 3); // the display's socket, GPU files: not the dialog's
-    posix_spawnattr_t attributes;
-    posix_spawnattr_init(&attributes);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-    posix_spawnattr_setpgroup(&attributes, 0); // its own group, so closing the window closes all of it
-    pid_t child = -1;
-    const int failed = ::posix_spawn(&child, program.c_str(), &actions, &attributes, arguments.data(), environ);
-    posix_spawnattr_destroy(&attributes);
-    posix_spawn_file_actions_destroy(&actions);
-    ::close(pipeEnds[1]);
-    if (failed != 0) {
-        ::close(pipeEnds[0]);
-        return "cannot start " + program + " for the file dialog";
-    }
-    ::fcntl(pipeEnds[0], F_SETFL, ::fcntl(pipeEnds[0], F_GETFL) | O_NONBLOCK);
-    child_ = child;
-    output_ = pipeEnds[0];
+    ChildCommand command;
+    command.arguments = fileChooserCommand(program, choice, startPath);
+    command.output = ChildStream::Pipe;  // the path chosen
+    command.errors = ChildStream::Null;  // toolkit warnings
+    command.ownProcessGroup = true;      // so closing the window closes all of it
+    auto child = std::make_unique<ChildProcess>(command);
+    if (!child->started()) return "cannot start " + program + " for the file dialog";
+    child_ = std::move(child);
     choice_ = choice;
     received_.clear();
     return {};
 }
 
 std::optional<ChosenFile> FileChooser::poll() {
-    if (child_ <= 0) return std::nullopt;
-    char buffer[4096];
-    for (;;) {
-        const ssize_t got = ::read(output_, buffer, sizeof buffer);
-        if (got > 0) {
-            received_.append(buffer, std::size_t(got));
-            continue;
-        }
-        if (got < 0 && errno == EINTR) continue;
-        break; // EAGAIN: nothing more yet; 0: the child closed its output
-    }
-    int status = 0;
-    const pid_t done = ::waitpid(child_, &status, WNOHANG);
-    if (done == 0) return std::nullopt; // still open
-    child_ = -1;
-    // Whatever it wrote before it ended.
-    for (ssize_t got; (got = ::read(output_, buffer, sizeof buffer)) > 0;) received_.append(buffer, std::size_t(got));
-    close();
+    if (!child_) return std::nullopt;
+    child_->readAvailableOutput(received_);
+    const std::optional<ChildExit> exit = child_->exited();
+    if (!exit) return std::nullopt; // still open
+    child_->readAvailableOutput(received_); // whatever it wrote before it ended
+    child_.reset();
     ChosenFile chosen{choice_, {}};
     // Exit status 0 and a first line: the path; anything else (Cancel, Esc, closed): nothing chosen.
-    if (done > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+    if (exit->succeeded()) {
         chosen.path = received_.substr(0, received_.find('\n'));
         if (!chosen.path.empty() && chosen.path.back() == '\r') chosen.path.pop_back(); // a name may end in a space
     }

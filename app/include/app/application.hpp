@@ -128,28 +128,36 @@ public:
 
 private:
     friend struct ApplicationCallbacks;
+    // The frame (application.cpp).
     void bindTarget() const;
+    void frameCamera();
+    void buildWindows();
+    void drawHost(SceneHost& host, const RenderSettings& render);
+    // Input (application_input.cpp).
+    void installInputCallbacks();
     void handleMouse();
     void handleKey(KeyCommand command);
+    // Commands (application_commands.cpp).
     void serve(Command command);
     void adoptBuild(const BuildOutcome& outcome);
-    void frameCamera();
-    void drawHost(SceneHost& host, const RenderSettings& render);
+    void rememberModel(const std::string& path);
+    void askToQuit();
+    void runInteractiveBenchmark();
+    // Files and screenshots (application_files.cpp).
+    bool saveStateFile();
+    void chooseFile();
+    void serveChosenFile(const ChosenFile& chosen);
+    bool saveScreenshot(const std::filesystem::path& file);
+    void saveNumberedScreenshot(const RgbImage& image);
+    // What is drawn over the scene, and per-frame extras (application_overlays.cpp,
+    // application_obstacle_drag.cpp).
     void updateStatistics(double elapsedSeconds);
     void updateTimer();
     void updateTurnAnimation();
     void drawOverlays();
     void drawBrushOutline();
-    bool saveScreenshot(const std::filesystem::path& file);
-    void saveNumberedScreenshot(const RgbImage& image);
-    bool saveStateFile();
-    void askToQuit();
-    void serveChosenFile(const ChosenFile& chosen);
-    void runInteractiveBenchmark();
-    void buildWindows();
     void drawBenchmarkProgress();
     void drawObstacleBox();
-    void rememberModel(const std::string& path);
 
     ApplicationOptions options_;
     AppState state_;

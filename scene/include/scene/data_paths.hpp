@@ -29,7 +29,7 @@ std::filesystem::path modelsFolder();
 std::filesystem::path shaderFolder();
 
 /// The model importer's executable: EXE/../libexec/sandglass/sandglass-import when it exists,
-/// else the one the build made; empty when neither is there (the importer then runs in a fork).
+/// else the one the build made; empty when neither is there (no model can be loaded then).
 std::filesystem::path importHelperPath();
 
 } // namespace sandglass

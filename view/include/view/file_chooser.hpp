@@ -4,12 +4,14 @@
 // keeps drawing while it is open and no toolkit is linked in. Debian 12 packages none of the
 // small dialog libraries; both programs are what GNOME and KDE desktops use themselves.
 
+#include <memory>
 #include <optional>
 #include <string>
-#include <sys/types.h>
 #include <vector>
 
 namespace sandglass {
+
+class ChildProcess;
 
 /// What the dialog is for: picks the title, open or save, files or a folder, and the filter.
 enum class FileChoice {
@@ -34,7 +36,7 @@ std::vector<std::string> fileChooserCommand(const std::string& program, FileChoi
 /// One dialog at a time, polled once per frame.
 class FileChooser {
 public:
-    FileChooser() = default;
+    FileChooser();
     ~FileChooser(); ///< closes a dialog still open
     FileChooser(const FileChooser&) = delete;
     FileChooser& operator=(const FileChooser&) = delete;
@@ -45,13 +47,10 @@ public:
     std::string open(FileChoice choice, const std::string& startPath);
     /// Once the dialog has closed: what it gave (once). Nothing while it is open or none is.
     std::optional<ChosenFile> poll();
-    bool isOpen() const { return child_ > 0; } ///< a dialog is showing
+    bool isOpen() const { return child_ != nullptr; } ///< a dialog is showing
 
 private:
-    void close();
-
-    pid_t child_ = -1;
-    int output_ = -1;      // read end of the child's standard output
+    std::unique_ptr<ChildProcess> child_; // the dialog while it is open
     FileChoice choice_ = FileChoice::OpenState;
     std::string received_; // what the child has written so far
 };
