@@ -3,9 +3,7 @@
 // A lathe profile becomes a closed surface of revolution, the voxelizer finds the cells inside
 // it, and makeHourglassScene splits them at the neck and fills the upper bulb. Prints the grains
 // in the upper and lower grid as the sand runs, and once more when nothing moves any more.
-#include <sandcore/mesh_shapes.hpp>
-#include <sandcore/scenes.hpp>
-#include <sandcore/voxelizer.hpp>
+#include <sandcore/sandcore.hpp>
 
 #include <cstdio>
 #include <vector>

@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The example in docs/engine.md and README ("sandcore as a library"), kept compiling and working.
-#include "sandcore/display_positions.hpp"
-#include "sandcore/procedural_shapes.hpp"
-#include "sandcore/scenes.hpp"
-#include "sandcore/sim_clock.hpp"
+// The example at the top of docs/engine.md, kept compiling and working (README's own example is
+// compiled from README itself: tests/CMakeLists.txt).
+#include <sandcore/sandcore.hpp>
 
 #include <doctest/doctest.h>
 

@@ -172,7 +172,9 @@ ModelCheck checkModel(const WildModel& model, const std::filesystem::path& file,
             }
             resolution = std::stoi(match[1]);
         }
-        if (resolution == settings.resolution) {
+        // Keys a cell thick or more may hold cell centres: then sand in them is no failure.
+        const bool thinnerThanACell = model.smallestPartExtent() < model.largestExtent() / settings.resolution;
+        if (resolution == settings.resolution && thinnerThanACell) {
             out.failure = "keys thinner than a cell gave sand at resolution " + std::to_string(resolution);
             return out;
         }

@@ -40,7 +40,8 @@ struct CheckSettings {
 ///   as sand in the upper bulb, and every grain in the lower bulb at the end;
 /// - a funnel: a note, and every grain inside the funnel at the start;
 /// - a character: stood up along its true up axis, every sand cell inside its body;
-/// - a keyboard: a clear refusal that names a resolution, and at that resolution every sand cell in a key.
+/// - a keyboard: where its keys are thinner than a cell, a clear refusal that names a resolution;
+///   at that resolution (or the one asked for) every sand cell in a key.
 ModelCheck checkModel(const WildModel& model, const std::filesystem::path& file, const CheckSettings& settings);
 
 } // namespace sandglass::wild
