@@ -163,12 +163,16 @@ void addCandidates(std::vector<CellList> spaces, int source, const MaskCells& wa
     std::stable_sort(spaces.begin(), spaces.end(), [](const CellList& p, const CellList& q) { return p.size() > q.size(); });
     const std::size_t largest = std::min<std::size_t>(spaces.size(), 4);
     std::vector<ColumnSpans> spans(largest);
+    // With gaps of up to 2 * source cells closed, the gap two open bulbs leave between them at
+    // the neck is wall as well.
+    MaskCells closedWalls;
     for (std::size_t i = 0; i < largest; ++i)
         for (std::size_t j = i + 1; j < largest; ++j) {
             if (double(spaces[j].size()) < kBulbShare * double(spaces[i].size())) continue;
             if (spans[i].low[0].empty()) spans[i] = columnSpansOf(spaces[i], grid);
             if (spans[j].low[0].empty()) spans[j] = columnSpansOf(spaces[j], grid);
-            const std::optional<NeckJoint> joint = jointAcrossNeck(spans[i], spans[j], walls, grid);
+            if (source > 0 && closedWalls.empty()) closedWalls = grownBy(walls, grid.size, source);
+            const std::optional<NeckJoint> joint = jointAcrossNeck(spans[i], spans[j], source > 0 ? closedWalls : walls, grid);
             if (!joint) continue;
             Candidate joined;
             joined.source = source;
@@ -276,7 +280,9 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
         for (std::size_t a = 0; a < 3; ++a) partial = partial || shell.high[a] - shell.low[a] < kPartOfOneBulb * longest;
         const bool mayBeSand = (!shells[s].roleFixed && partial) || shells[s].role == ShellRole::Sand;
         const bool mayBeVessel = !shells[s].roleFixed || shells[s].role == ShellRole::Glass;
-        if (mayBeVessel || mayBeSand) shell.inside = insideCells(gridMesh, grid, shell, threads);
+        // A closed frame part (a plate, a post) is solid: its inside is wall, never a space.
+        const bool solidFrame = shells[s].roleFixed && shells[s].role == ShellRole::Frame && shell.closed;
+        if (mayBeVessel || mayBeSand || solidFrame) shell.inside = insideCells(gridMesh, grid, shell, threads);
     }
     std::array<double, 3> wallExtent;
     for (std::size_t a = 0; a < 3; ++a) wallExtent[a] = wallHigh[a] - wallLow[a];
@@ -293,11 +299,14 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
     MaskCells walls(grid.cells(), 0);
     std::vector<std::uint32_t> wallOwner(grid.cells(), UINT32_MAX);
     for (std::size_t s = 0; s < shells.size(); ++s)
-        if (out.roles[s] != ShellRole::Sand)
+        if (out.roles[s] != ShellRole::Sand) {
             for (std::uint32_t n : inGrid[s].surface) {
                 walls[n] = 1;
                 wallOwner[n] = wallOwner[n] == UINT32_MAX ? std::uint32_t(s) : UINT32_MAX - 1;
             }
+            if (shells[s].roleFixed && out.roles[s] == ShellRole::Frame)
+                for (std::uint32_t n : inGrid[s].inside) walls[n] = 1;
+        }
 
     // S8, W2: the candidates. A closed glass surface that holds no other wall encloses its sand
     // directly (its inside, as parity gives it); then the spaces the walls enclose, with ever wider

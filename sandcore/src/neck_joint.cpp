@@ -10,8 +10,10 @@ namespace sandcore {
 namespace {
 
 // A neck narrower than a cell fills with its own wall cells over its length: bulbs up to this
-// many cells apart along an axis are joined through one column.
+// many cells apart along an axis are joined through one column, or an eighth of the grid's
+// longest side where that is more (the same long thin neck spans more cells at a finer grid).
 constexpr int kMaxNeckWall = 8;
+int maxNeckWall(const Grid& grid) { return std::max(kMaxNeckWall, std::max({grid.size.x, grid.size.y, grid.size.z}) / 8); }
 
 } // namespace
 
@@ -42,12 +44,13 @@ ColumnSpans columnSpansOf(const CellList& cells, const Grid& grid) {
     return spans;
 }
 
-// W2: two bulbs that a wall under kMaxNeckWall cells separates along an axis (a neck narrower
+// W2: two bulbs that a wall of at most maxNeckWall() cells separates along an axis (a neck narrower
 // than a cell, sealed by its own surface cells) joined through one column of cells: the column
 // where they come closest, nearest their common centre.
 std::optional<NeckJoint> jointAcrossNeck(const ColumnSpans& spansA, const ColumnSpans& spansB, const MaskCells& walls,
                                          const Grid& grid) {
-    struct Best { int gap = kMaxNeckWall + 1; int axis = -1; std::array<int, 3> from{}; double offCentre = 0.0; } best;
+    const int maxWall = maxNeckWall(grid);
+    struct Best { int gap = INT_MAX; int axis = -1; std::array<int, 3> from{}; double offCentre = 0.0; } best;
     for (int axis = 0; axis < 3; ++axis) {
         const auto [u, v] = planeOf(axis);
         const auto width = std::size_t(grid.length(u));
@@ -63,7 +66,7 @@ std::optional<NeckJoint> jointAcrossNeck(const ColumnSpans& spansA, const Column
             if (highB[column] < lowA[column]) gap = lowA[column] - highB[column] - 1, start = highB[column] + 1;
             else if (highA[column] < lowB[column]) gap = lowB[column] - highA[column] - 1, start = highA[column] + 1;
             else continue;
-            if (gap < 1 || gap > kMaxNeckWall) continue;
+            if (gap < 1 || gap > maxWall) continue;
             // Only a wall is cut: open air between two vessels, or another hollow, is no neck.
             std::array<int, 3> c{};
             c[std::size_t(axis)] = start;
