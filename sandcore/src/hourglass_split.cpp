@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "sandcore/hourglass_split.hpp"
+#include "hourglass_split.hpp"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "sandcore/scenes.hpp"
 
-#include "sandcore/hourglass_split.hpp"
+#include "hourglass_split.hpp"
 #include "sandcore/mask_cleanup.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "sandcore/hourglass_split.hpp"
+#include "hourglass_split.hpp"
 #include "sandcore/mask_cleanup.hpp"
 #include "sandcore/procedural_shapes.hpp"
 

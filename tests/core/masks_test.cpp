@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Procedural masks, S3 clean-up and the S4 neck split.
-#include "sandcore/hourglass_split.hpp"
+#include "hourglass_split.hpp"
 #include "sandcore/mask_cleanup.hpp"
 #include "sandcore/procedural_shapes.hpp"
 

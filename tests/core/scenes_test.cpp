@@ -2,7 +2,7 @@
 // R10 scenes, R11 obstacles, R14 counters and editing.
 #include "support/scene_fixtures.hpp"
 
-#include "sandcore/hourglass_split.hpp"
+#include "hourglass_split.hpp"
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
 
