@@ -155,8 +155,6 @@ void weld(const TriangleMesh& mesh, WalkedMesh& out, WorkerPool& pool) {
     out.triangles = out.ownTriangles;
 }
 
-
-
 // One use of an edge by a triangle, filed under the edge's smaller vertex: the larger vertex,
 // and the triangle, which of its edges this is and whether it runs from the smaller vertex to
 // the larger one (triangle << 3 | edge << 1 | forward).
