@@ -38,12 +38,32 @@ std::uint64_t hashOf(const Key& key) {
     return h * 0x9E3779B97F4A7C15ull;
 }
 
+// firstAtSamePosition on one thread: one table over all the vertices. The partitions below pay
+// for their counting sort only when threads share them.
+BigVector<std::uint32_t> firstAtSamePositionOnOneThread(const std::vector<Vec3>& vertices) {
+    const std::size_t count = vertices.size();
+    std::size_t capacity = 16;
+    while (capacity < 2 * count) capacity *= 2;
+    constexpr std::uint32_t kFree = ~std::uint32_t{0};
+    std::vector<std::uint32_t> slots(capacity, kFree); // the first vertex at a position
+    BigVector<std::uint32_t> first(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const Key key = keyOf(vertices[i]);
+        std::size_t slot = std::size_t(hashOf(key) >> 32) & (capacity - 1);
+        while (slots[slot] != kFree && keyOf(vertices[slots[slot]]) != key) slot = (slot + 1) & (capacity - 1);
+        if (slots[slot] == kFree) slots[slot] = std::uint32_t(i);
+        first[i] = slots[slot];
+    }
+    return first;
+}
+
 // Per vertex, the first vertex at the same position. The vertices are partitioned by the top
 // bits of their hash (a stable counting sort, so each partition lists them in index order) and
 // every partition is welded with a hash table small enough to stay in cache; a slot holds the
 // position's hash bits and its place in the partition, whose entries carry their keys (reading
 // the vertices again in partition order would miss the cache at every one).
 BigVector<std::uint32_t> firstAtSamePosition(const std::vector<Vec3>& vertices, WorkerPool& pool) {
+    if (pool.threadCount() == 1) return firstAtSamePositionOnOneThread(vertices);
     const std::size_t count = vertices.size();
     int partitionBits = 0;
     while (partitionBits < 16 && (count >> partitionBits) > 2048) ++partitionBits;
