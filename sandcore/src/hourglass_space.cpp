@@ -157,22 +157,21 @@ void findNeck(Candidate& candidate, const Grid& grid) {
 }
 
 // The spaces of one source with the necks under a cell between their largest ones opened.
-void addCandidates(std::vector<CellList> spaces, int source, const MaskCells& walls, const Grid& grid,
+// `closedWalls` are the walls with the source's gaps closed (`walls` for a glass's inside and
+// for closing 0): with gaps of up to 2 * source cells closed, the gap two open bulbs leave
+// between them at the neck is wall as well.
+void addCandidates(std::vector<CellList> spaces, int source, const MaskCells& closedWalls, const Grid& grid,
                    std::vector<Candidate>& out) {
     std::erase_if(spaces, [](const CellList& c) { return c.size() < kMinSpaceCells; });
     std::stable_sort(spaces.begin(), spaces.end(), [](const CellList& p, const CellList& q) { return p.size() > q.size(); });
     const std::size_t largest = std::min<std::size_t>(spaces.size(), 4);
     std::vector<ColumnSpans> spans(largest);
-    // With gaps of up to 2 * source cells closed, the gap two open bulbs leave between them at
-    // the neck is wall as well.
-    MaskCells closedWalls;
     for (std::size_t i = 0; i < largest; ++i)
         for (std::size_t j = i + 1; j < largest; ++j) {
             if (double(spaces[j].size()) < kBulbShare * double(spaces[i].size())) continue;
             if (spans[i].low[0].empty()) spans[i] = columnSpansOf(spaces[i], grid);
             if (spans[j].low[0].empty()) spans[j] = columnSpansOf(spaces[j], grid);
-            if (source > 0 && closedWalls.empty()) closedWalls = grownBy(walls, grid.size, source);
-            const std::optional<NeckJoint> joint = jointAcrossNeck(spans[i], spans[j], source > 0 ? closedWalls : walls, grid);
+            const std::optional<NeckJoint> joint = jointAcrossNeck(spans[i], spans[j], closedWalls, grid);
             if (!joint) continue;
             Candidate joined;
             joined.source = source;
@@ -334,12 +333,18 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
     }
     for (Candidate& c : voted) c.voted = true;
     // Each closing is independent of the others: with threads to spare they run side by side.
+    // The walls grown by each closing serve the joints and the wall cells' band as well.
+    const int closingCount = std::max(settings.maxClosingCells + 1, 0);
+    std::vector<MaskCells> grownWalls(static_cast<std::size_t>(closingCount));
+    auto closedBy = [&](int closing) -> const MaskCells& { return closing > 0 ? grownWalls[std::size_t(closing)] : walls; };
     std::vector<std::future<std::vector<CellList>>> closings;
-    for (int closing = 0; closing <= settings.maxClosingCells; ++closing)
-        closings.push_back(std::async(threads > 1 ? std::launch::async : std::launch::deferred,
-                                      [&walls, size = grid.size, closing] { return enclosedRegions(walls, size, closing); }));
-    for (int closing = 0; closing <= settings.maxClosingCells; ++closing)
-        addCandidates(closings[std::size_t(closing)].get(), closing, walls, grid, candidates);
+    for (int closing = 0; closing < closingCount; ++closing)
+        closings.push_back(std::async(threads > 1 ? std::launch::async : std::launch::deferred, [&, closing] {
+            if (closing > 0) grownWalls[std::size_t(closing)] = grownBy(walls, grid.size, closing);
+            return enclosedRegions(walls, closedBy(closing), grid.size, closing);
+        }));
+    for (int closing = 0; closing < closingCount; ++closing)
+        addCandidates(closings[std::size_t(closing)].get(), closing, closedBy(closing), grid, candidates);
     std::move(voted.begin(), voted.end(), std::back_inserter(candidates));
     const Candidate* chosen = bestHourglass(candidates, grid);
     int axis = 1;
@@ -390,7 +395,7 @@ HourglassSpace findHourglassSpace(const std::vector<ModelShell>& shells, const H
                 if (out.roles[s] != ShellRole::Sand) wallMeshes.push_back(gridMeshes[s]);
             MaskCells band;
             if (chosen->source > 0) {
-                band = grownBy(walls, grid.size, chosen->source);
+                band = closedBy(chosen->source);
                 for (std::size_t n = 0; n < band.size(); ++n) band[n] = band[n] && !walls[n];
             }
             addCentresOnTheSpaceSide(cells, chosen->joint, band, walls, wallMeshes, grid);

@@ -83,12 +83,11 @@ MaskCells grownBy(const MaskCells& walls, Int3 size, int radius) {
     return cells;
 }
 
-std::vector<CellList> enclosedRegions(const MaskCells& walls, Int3 size, int closing) {
+std::vector<CellList> enclosedRegions(const MaskCells& walls, const MaskCells& grownWalls, Int3 size, int closing) {
     const Neighbours around(size);
-    const MaskCells blocked = closing > 0 ? grownBy(walls, size, closing) : walls;
     std::vector<std::int32_t> label(walls.size(), kFree);
     for (std::size_t n = 0; n < walls.size(); ++n)
-        if (blocked[n]) label[n] = kWall;
+        if (grownWalls[n]) label[n] = kWall;
     std::vector<std::uint32_t> queue;
     auto flood = [&](std::size_t seed, std::int32_t mark) { fillRuns(label, size, seed, kFree, mark, queue); };
     // The outside: every free cell reachable from the grid's six faces.

@@ -102,7 +102,8 @@ MaskCells grownBy(const MaskCells& cells, Int3 size, int radius);
 /// to whichever side reaches it first (the outside on a tie, so the grown walls' gaps are shared
 /// with the outside and never leave a cavity). Cavities that meet while growing back are one
 /// region: a neck the grown walls closed opens again. Regions come in order of their first cell.
-std::vector<CellList> enclosedRegions(const MaskCells& walls, Int3 size, int closing);
+/// `grownWalls` is grownBy(walls, size, closing), `walls` itself for closing 0.
+std::vector<CellList> enclosedRegions(const MaskCells& walls, const MaskCells& grownWalls, Int3 size, int closing);
 
 /// The 6-connected components of `cells` (ascending indices into a `size` grid), each ascending,
 /// in order of their first cell.

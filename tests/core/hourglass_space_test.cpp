@@ -65,8 +65,8 @@ TEST_CASE("W2: a gap in a wall is closed by growing the walls and the space grow
             for (int x = 2; x <= 13; ++x)
                 if (x == 2 || x == 13 || y == 2 || y == 13 || z == 2 || z == 13) at(x, y, z) = 1;
     at(7, 13, 7) = 0;
-    CHECK(enclosedRegions(walls, size, 0).empty());
-    const std::vector<CellList> closed = enclosedRegions(walls, size, 1);
+    CHECK(enclosedRegions(walls, walls, size, 0).empty());
+    const std::vector<CellList> closed = enclosedRegions(walls, grownBy(walls, size, 1), size, 1);
     REQUIRE(closed.size() == 1);
     // Grown back, it is the whole inside (10^3 cells), and the hole's cell went to the outside.
     CHECK(closed[0].size() == 1000);
