@@ -9,7 +9,9 @@ namespace sandcore {
 NeckFlow::NeckFlow(std::int64_t neckCells, double gravity) {
     area_ = double(neckCells);
     diameter_ = 2.0 * std::sqrt(area_ / M_PI);
-    rate_ = kBeverlooC * std::sqrt(gravity) * std::pow(std::max(diameter_ - kBeverlooK, 0.0), 2.5);
+    const auto law = [&](double diameter) { return kBeverlooC * std::sqrt(gravity) * std::pow(diameter - kBeverlooK, 2.5); };
+    const double narrowestArea = M_PI * kNarrowestLawDiameter * kNarrowestLawDiameter / 4.0;
+    rate_ = diameter_ >= kNarrowestLawDiameter ? law(diameter_) : area_ * law(kNarrowestLawDiameter) / narrowestArea;
     rateQ32_ = std::uint64_t(std::llround(rate_ * 4294967296.0));
 }
 

@@ -19,6 +19,11 @@ namespace sandcore {
 /// Beverloo's constants as used here.
 inline constexpr double kBeverlooC = 0.58; ///< discharge coefficient
 inline constexpr double kBeverlooK = 1.5;  ///< empty annulus, grain diameters (cells)
+/// The narrowest neck the law is applied to, cells across. The law holds for orifices several
+/// grains wide and falls to nothing at D = k, but a model's neck may be one or two cells (a neck
+/// narrower than a cell is opened to one): a narrower neck passes the law's rate per open cell
+/// at this diameter, so every neck drains.
+inline constexpr double kNarrowestLawDiameter = 4.0;
 
 class NeckFlow {
 public:
@@ -31,7 +36,7 @@ public:
 
     double area() const { return area_; }         ///< open cells of the neck row
     double diameter() const { return diameter_; } ///< 2 sqrt(area / pi), cells
-    double rate() const { return rate_; }         ///< grains per step: C sqrt(g) (D - k)^2.5
+    double rate() const { return rate_; }         ///< grains per step: C sqrt(g) (D - k)^2.5, see kNarrowestLawDiameter
     /// Grains allowed through at step `step` (>= 1).
     std::int64_t allowance(std::uint64_t step) const;
 

@@ -66,8 +66,14 @@ InsideMask drainedBulbAbove(const InsideMask& vessel, int neck) {
 
 // The cells of a lower bulb (its top layer the neck) that a grain can reach from the neck cell
 // (apexX, apexZ): one layer down and at most one cell aside in x and z per step (R2's
-// successors), through the bulb's own cells.
-std::int64_t reachableBelow(const InsideMask& lower, int apexX, int apexZ) {
+// successors), through the bulb's own cells. Under the granular rules (PH2) a move counts only
+// when the cell beside the grain in its own layer lies in the bulb too: a slide needs its path
+// open, so a grain under the bulb's roof, which narrows up to the neck, cannot slide outwards.
+// This is no strict bound there: a slide of one column along a diagonal may need two open cells
+// below (its threshold sqrt(2) T is above 1 from about 30 degrees), so a few grains may rest in
+// the neck of a bulb the sand fills to the top (docs/shapes.md gives how many).
+std::int64_t reachableBelow(const InsideMask& lower, int apexX, int apexZ, PhysicsLevel rules) {
+    const bool granular = rules == PhysicsLevel::Granular;
     const int neck = lower.size.y - 1;
     std::vector<std::uint32_t> layer{std::uint32_t(lower.indexOf(apexX, neck, apexZ))}, next;
     std::vector<std::uint8_t> reached(lower.inside.size(), 0);
@@ -80,6 +86,7 @@ std::int64_t reachableBelow(const InsideMask& lower, int apexX, int apexZ) {
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int bx = x + dx, bz = z + dz;
                     if (bx < 0 || bz < 0 || bx >= lower.size.x || bz >= lower.size.z || !lower.at(bx, y - 1, bz)) continue;
+                    if (granular && !lower.at(bx, y, bz)) continue;
                     const std::size_t m = lower.indexOf(bx, y - 1, bz);
                     if (!reached[m]) {
                         reached[m] = 1;
@@ -96,9 +103,10 @@ std::int64_t reachableBelow(const InsideMask& lower, int apexX, int apexZ) {
 // The sand a lower bulb surely takes without choking its neck (S3, W1). A grain rests in a neck
 // cell only when the 9 cells below it are full, and so on down: only when every cell a grain
 // can reach from that neck cell is full. Less sand than the fewest cells reachable from any
-// neck cell therefore all runs through. The fewest are found at the neck's rim: its middle and
-// its farthest cells along the four axis and four diagonal directions stand for the rest.
-std::int64_t heapCapacity(const InsideMask& lower) {
+// neck cell therefore all runs through. The fewest are found at the
+// neck's rim: its middle and its farthest cells along the four axis and four diagonal
+// directions stand for the rest.
+std::int64_t heapCapacity(const InsideMask& lower, PhysicsLevel rules) {
     const int neck = lower.size.y - 1;
     std::vector<std::array<int, 2>> cells;
     double cx = 0.0, cz = 0.0;
@@ -121,7 +129,7 @@ std::int64_t heapCapacity(const InsideMask& lower) {
             return d[0] * p[0] + d[1] * p[1] < d[0] * q[0] + d[1] * q[1];
         }));
     std::int64_t fewest = INT64_MAX;
-    for (const std::array<int, 2>& apex : apexes) fewest = std::min(fewest, reachableBelow(lower, apex[0], apex[1]));
+    for (const std::array<int, 2>& apex : apexes) fewest = std::min(fewest, reachableBelow(lower, apex[0], apex[1], rules));
     return fewest;
 }
 
@@ -167,7 +175,7 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialS
         // Turned over (T1), the lower bulb drains too: carve it as the upper bulb it then becomes.
         const InsideMask lower = hourglass.drainCompletely ? mirroredInY(drainedBulbAbove(mirroredInY(vessel), top - neck))
                                                            : sliceLayers(vessel, 0, neck);
-        capacity = heapCapacity(lower);
+        capacity = heapCapacity(lower, step.physics.level);
         lowerLayout = layoutFromMask(lower);
     }
     std::vector<std::uint32_t> fill;

@@ -102,8 +102,9 @@ TEST_CASE("painting: Alt or a panel under the mouse never starts a stroke") {
 
 TEST_CASE("painting: thin lines release one grain per distinct cell, thick lines one per sample") {
     REQUIRE_DISPLAY();
-    // The mouse rests on each column for three samples; the sand falls between samples, so
-    // the release cell is free again each time.
+    // The mouse rests on each column for three samples; the sand falls out of the release cell
+    // between samples (granular gravity 0.02 takes it a cell down in 10 steps), so the cell is
+    // free again each time.
     const std::vector<CanvasColumn> samples{{10, 10}, {10, 10}, {10, 10}, {11, 10}, {11, 10}, {11, 10},
                                             {16, 12}, {16, 12}, {16, 12}};
     const std::size_t distinct = joined(samples).size();
@@ -112,7 +113,7 @@ TEST_CASE("painting: thin lines release one grain per distinct cell, thick lines
         std::optional<Application> app = openCanvas();
         if (!app) return;
         app->state().painting.thinLines = thin;
-        stroke(*app, samples, 1);
+        stroke(*app, samples, 10);
         if (thin)
             CHECK(app->scene().grainCount() == std::int64_t(distinct));
         else

@@ -41,8 +41,8 @@ TEST_CASE("simulate --physics granular --trace writes one row per step and keeps
 
 TEST_CASE("granular and classic give different hashes, and granular repeats with 1 and 2 threads and a full sweep") {
     const std::string base = "simulate --scene sculpture --res 16 --steps 80 --seed 5 --json";
-    const auto classic = nlohmann::json::parse(runSandglass(base).out);
-    const auto one = nlohmann::json::parse(runSandglass(base + " --physics granular").out);
+    const auto classic = nlohmann::json::parse(runSandglass(base + " --physics classic").out);
+    const auto one = nlohmann::json::parse(runSandglass(base).out); // granular: the default
     const auto two = nlohmann::json::parse(runSandglass(base + " --physics granular --threads 2").out);
     const auto full = nlohmann::json::parse(runSandglass(base + " --physics granular --full-sweep").out);
     CHECK(classic["physics"] == "classic");

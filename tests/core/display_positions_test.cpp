@@ -24,7 +24,9 @@ Vec3 expectedRestingPoint(const Scene& scene, std::uint32_t id, const DisplaySet
 } // namespace
 
 TEST_CASE("after 10^6 steps every resting grain sits exactly on its cell's display point") {
-    Scene scene = makeCanvasScene({{12, 3, 12}, {12, 8, 12}});
+    StepSettings classic; // a grain poured every step, each moving one cell a step (R2)
+    classic.physics.level = PhysicsLevel::Classic;
+    Scene scene = makeCanvasScene({{12, 3, 12}, {12, 8, 12}}, classic);
     const DisplaySettings display{0.37f, 0.8f};
     std::int64_t glidesChecked = 0;
     for (int i = 0; i < 1'000'000; ++i) {

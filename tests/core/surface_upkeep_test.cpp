@@ -25,10 +25,8 @@ StepSettings stepSettings(std::uint64_t seed, int threads, bool granular) {
     StepSettings step;
     step.seed = seed;
     step.threads = threads;
-    if (granular) {
-        step.physics.level = PhysicsLevel::Granular;
-        step.physics.gravity = 0.3f;
-    }
+    step.physics.level = granular ? PhysicsLevel::Granular : PhysicsLevel::Classic;
+    if (granular) step.physics.gravity = 0.3f;
     return step;
 }
 
@@ -193,7 +191,7 @@ namespace {
 // A canvas with columns of grains in the air: they fall, each grain entering the cell the grain
 // below it left in the same step.
 Scene canvasWithColumn(GridLevel level, int x, int z, int yFrom, int yTo) {
-    Scene scene = makeCanvasScene({{12, 4, 12}, {12, 10, 12}});
+    Scene scene = makeCanvasScene({{12, 4, 12}, {12, 10, 12}}, stepSettings(1, 1, false));
     const CellGrid& grid = scene.grid(level);
     for (int y = yFrom; y <= yTo; ++y) scene.addGrain(level, grid.index(x, y, z));
     return scene;

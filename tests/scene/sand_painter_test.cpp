@@ -60,11 +60,17 @@ TEST_CASE("thin lines release one grain per distinct column, thick lines one per
         PaintSettings settings;
         settings.thinLines = thin;
         painter.beginStroke(scene, {5, 5}, settings);
+        // A released grain leaves its cell within 10 steps (granular gravity 0.02: g n^2 / 2 >= 1),
+        // so the release cell is free again at the next sample.
+        constexpr int kStepsBetweenSamples = 10;
+        const auto fallAway = [&] {
+            for (int i = 0; i < kStepsBetweenSamples; ++i) scene.step();
+        };
         for (int sample = 0; sample < 6; ++sample) {
-            scene.step(); // the released grain falls away, so the release cell is free again
+            fallAway();
             painter.continueStroke(scene, {5, 5}, settings);
         }
-        scene.step();
+        fallAway();
         painter.continueStroke(scene, {6, 5}, settings);
         painter.endStroke();
         CHECK(painter.grainsReleased() == (thin ? 2 : 8));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Small hand-built scenes for rule tests: a lower box under a thin upper grid, both EMPTY.
+// Small hand-built scenes for rule tests: a lower box under a thin upper grid, both EMPTY, run by
+// the classic rules (R2) unless a test switches them.
 
 #include "sandcore/scene.hpp"
 
@@ -16,6 +17,7 @@ inline sandcore::Scene boxScene(sandcore::Int3 lower, int upperHeight = 1,
     for (const sandcore::Int3& c : invalidLower) lowerLayout[lowerLayout.index(c)] = sandcore::kInvalid;
     sandcore::StepSettings step;
     step.seed = seed;
+    step.physics.level = sandcore::PhysicsLevel::Classic;
     return sandcore::Scene(sandcore::SceneKind::Canvas, sandcore::CellGrid({lower.x, upperHeight, lower.z}),
                            std::move(lowerLayout), {}, step);
 }

@@ -53,11 +53,13 @@ std::string grainOutside(const BuiltScene& built, const WildModel& model, double
     return found;
 }
 
-BuiltScene build(const std::filesystem::path& file, sandcore::SceneKind kind, int resolution, double& milliseconds) {
+BuiltScene build(const std::filesystem::path& file, sandcore::SceneKind kind, const CheckSettings& checks, int resolution,
+                 double& milliseconds) {
     SceneSettings settings;
     settings.request.kind = kind;
     settings.request.modelPath = file.string();
     settings.request.resolution = resolution;
+    settings.step.physics.level = checks.physics;
     const auto start = std::chrono::steady_clock::now();
     BuiltScene built = buildSceneWithReport(settings);
     milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -162,7 +164,7 @@ ModelCheck checkModel(const WildModel& model, const std::filesystem::path& file,
         // Keys thinner than a cell: the refusal must name the resolution that holds them.
         try {
             double ignored = 0.0;
-            build(file, kind, resolution, ignored);
+            build(file, kind, settings, resolution, ignored);
         } catch (const ModelError& e) {
             std::smatch match;
             const std::string message = e.what();
@@ -180,7 +182,7 @@ ModelCheck checkModel(const WildModel& model, const std::filesystem::path& file,
         }
     }
     try {
-        const BuiltScene built = build(file, kind, resolution, out.loadMilliseconds);
+        const BuiltScene built = build(file, kind, settings, resolution, out.loadMilliseconds);
         out.loaded = true;
         out.note = built.note;
         out.grains = built.scene.grainCount();

@@ -5,6 +5,8 @@
 
 #include "wild_models/wild_models.hpp"
 
+#include "sandcore/physics_settings.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -28,8 +30,9 @@ struct ModelCheck {
 struct CheckSettings {
     int resolution = 64;   ///< cells along the model's largest extent
     bool drain = true;     ///< step until the sand has run through (hourglass) or collapsed (sculpture)
-    int maxSteps = 20000;  ///< give up draining after this many steps
+    int maxSteps = 200000; ///< give up draining after this many steps (a one-cell neck passes 0.065 grains a step)
     int checkEvery = 10;   ///< look at every grain after this many steps
+    sandcore::PhysicsLevel physics = sandcore::PhysicsSettings{}.level; ///< the rules that drain it
 };
 
 /// Writes the model to `file` (.obj or .stl), builds it as the kind of scene its class is (an

@@ -60,7 +60,7 @@ int runSpeedErrorReport(const BenchOptions& options) {
     report.commandLine = std::string("sandglass bench") + (options.quick ? " --quick" : "") + " --out " + options.out;
     if (options.step.threads != 2) report.commandLine += " --threads " + std::to_string(options.step.threads);
     if (options.step.seed != 1) report.commandLine += " --seed " + std::to_string(options.step.seed);
-    if (options.step.physics.level != sandcore::PhysicsLevel::Classic) report.commandLine += " --physics granular";
+    if (options.step.physics.level != sandcore::PhysicsLevel::Granular) report.commandLine += " --physics classic";
     bool passed = false;
     {
         ElapsedTicker ticker("bench", std::cerr); // the stages' lines scroll above the elapsed time
@@ -93,7 +93,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
                     "seed of every simulated scene (default 1)");
     addNumberOption(*cmd, "--threads", options->step.threads, kThreadsRange.min, kThreadsRange.max,
                     "threads compared with one thread in the report; threads of the scene with --render (default 2)");
-    auto physics = std::make_shared<std::string>("classic");
+    auto physics = std::make_shared<std::string>("granular");
     cmd->add_option("--physics", *physics, "rules of the simulated scenes: classic or granular (the report's "
                                            "granular section measures both either way)")
         ->capture_default_str();

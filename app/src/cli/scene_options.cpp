@@ -34,7 +34,7 @@ void addSceneOptions(CLI::App& command, SceneOptions& options) {
     addNumberOption(command, "--threads", step.threads, kThreadsRange.min, kThreadsRange.max,
                     "worker threads of a step (default 1; the result does not depend on it)");
     command.add_option("--physics", options.physics,
-                       "classic (the thesis's rules) or granular (repose angle, gravity, Beverloo discharge)")
+                       "granular (repose angle, gravity, Beverloo discharge; the default) or classic (the thesis's rules)")
         ->capture_default_str();
     addNumberOption(command, "--repose", step.physics.reposeDegrees, float(kReposeRange.min), float(kReposeRange.max),
                     "granular: angle of repose of a poured cone in degrees (default 33)");

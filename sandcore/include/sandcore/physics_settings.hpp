@@ -26,7 +26,7 @@ inline constexpr float kMaxGravity = 64.0f; ///< see kMinGravity
 
 /// Settings of the granular level; classic ignores everything but `level`.
 struct PhysicsSettings {
-    PhysicsLevel level = PhysicsLevel::Classic; ///< which rules run
+    PhysicsLevel level = PhysicsLevel::Granular; ///< which rules run; granular looks like sand (PH1)
     float reposeDegrees = 33.0f; ///< granular: angle of repose of a poured cone, degrees in [20, 45]
     /// granular: gravity in cells per step squared, in [0.001, 64]. The default is slow motion
     /// (1 mm cells at 700 steps/s; a fall of 100 cells takes 100 steps, as in classic) so that the

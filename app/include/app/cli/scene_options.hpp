@@ -15,7 +15,7 @@ namespace sandglass {
 /// A scene as typed on the command line.
 struct SceneOptions {
     std::string scene = "hourglass"; ///< hourglass, sculpture or canvas
-    std::string physics = "classic"; ///< classic or granular (SPEC PH1)
+    std::string physics = "granular"; ///< granular (default) or classic (SPEC PH1)
     SceneSettings settings;          ///< request and step settings, filled by the options
     std::vector<std::string> parts;  ///< --part NAME=ROLE, as typed (parsed by sceneSettingsFrom)
 };
