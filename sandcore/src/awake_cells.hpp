@@ -175,6 +175,9 @@ public:
         else
             above_->wakeAt(x, 0, z);
     }
+    /// The grain in cell (x, y, z) changed its fall without leaving the cell: a grain of the grid
+    /// above may rest on it across the seam and ride it (Scene::transitionGranular).
+    void fallChanged(int x, int y, int z) { emptied(x, y, z); }
     void applyDeferred() {
         for (const std::uint32_t column : deferred_)
             above_->wakeAt(int(column % std::uint32_t(size_.x)), 0, int(column / std::uint32_t(size_.x)));

@@ -102,6 +102,8 @@ GranularStep::GranularStep(const SweepContext& context, const GranularSweepState
                 words[word + layerWords_].occupied |= bit; // a rider that slept had it cleared
                 rowAwake_[cell.row + std::uint32_t(sizeZ_)] = 1;
             }
+        } else if (y + 1 == sizeY_ && outcome.kind == GranularOutcome::Waiting) {
+            outlet_.fallChanged(x, y, z);
         }
     }
     if (outcome.kind != GranularOutcome::Moved) return {outcome.kind, outcome.stopped};
@@ -183,6 +185,7 @@ int GranularStep::carryRiders(StripLog& log, const Column& column) const {
             if (rules_.ride(state, column.speed, mayBeMoving, above > 1 || !bottomIsOutlet_) == GranularOutcome::Riding)
                 return carried; // it sleeps, as after its own visit
             motion.inMotion |= bit;
+            if (above == sizeY_ - 1) outlet_.fallChanged(x, above, z);
             if (column.asleepUntil) {
                 state.gatheringSince = std::uint16_t(kGatheringAsleep | kRidingAsleep | (context_.step & kAsleepStepMask));
                 words_[word].awake &= ~bit; // not kept awake: its timer wakes it

@@ -258,23 +258,37 @@ void Scene::transition() {
 // The granular transition: as the thesis's, except that in an hourglass the neck lets through
 // only the grains Beverloo's rate allows this step (neck_flow.hpp), chosen by a counter hash so
 // no part of the neck is favoured; the others wait, awake, in the flow.
-// A grain that cannot pass because the cell below is full stops.
+// A grain that cannot pass because the cell below is full rides the grain there while that one
+// falls (as GranularRules::visit does within a grid), so a block crossing the seam falls as one;
+// it stops when the grain below is at rest.
 void Scene::transitionGranular() {
     const int lowerTop = lower_.size().y - 1;
     const std::uint64_t step = counters_.stepsDone;
     std::vector<std::uint32_t>& ready = transitionReady_;
     ready.clear();
-    std::int64_t visited = 0, stopped = 0;
+    std::int64_t visited = 0, stopped = 0, riding = 0;
     upperSweep_->forEachInBottomLayer(settings_.sleeping, [&](std::uint32_t cell) {
         ++visited;
         const CellValue grain = upper_[cell];
         if (grain < 0) return;
         const Int3 c = upper_.coordinate(cell);
-        if (lower_.at(c.x, lowerTop, c.z) == kEmpty) {
+        const CellValue under = lower_.at(c.x, lowerTop, c.z);
+        if (under == kEmpty) {
             ready.push_back(cell);
             return;
         }
         FallState& fall = grains_.fall[kUpperGrid][std::size_t(grain)];
+        const std::uint32_t speedUnder = under >= 0 ? granular_->caughtUp(grains_.fall[kLowerGrid][std::size_t(under)], step).speed : 0;
+        if (speedUnder > 0) {
+            // Kept awake while it rides: the grain under it, in the other grid, cannot wake it.
+            // Its speed changed without a move: the grain resting on it looks again.
+            granular_->ride(fall, speedUnder, true, false);
+            upperSweep_->markInMotion(c.x, 0, c.z);
+            upperSweep_->wakeAt(c.x, 0, c.z);
+            if (upper_.size().y > 1 && upper_.at(c.x, 1, c.z) >= 0) upperSweep_->wakeAt(c.x, 1, c.z);
+            ++riding;
+            return;
+        }
         if (fall.speed | fall.fraction) ++stopped;
         fall = FallState{}; // woken again when that cell empties
     });
@@ -324,8 +338,8 @@ void Scene::transitionGranular() {
     counters_.grainsLower += moved;
     counters_.movesLastStep += moved;
     counters_.visitedLastStep += visited;
-    // The grains held back (and any stopped above a full cell) changed their fall without a move.
-    counters_.speedChangesLastStep += std::int64_t(ready.size() - passing) + stopped;
+    // The grains held back, riding or stopped above a full cell changed their fall without a move.
+    counters_.speedChangesLastStep += std::int64_t(ready.size() - passing) + riding + stopped;
 }
 
 // A grain the transition passed into the lower grid's top row (its record says so already).

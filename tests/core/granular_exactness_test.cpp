@@ -225,8 +225,9 @@ TEST_CASE("granular: a slab wider than a word of bits collapses alike on 1 and 3
     // the bits); since a layer's paths read it as its turn began (granular_rules.hpp), it is the
     // one recorded then, and since the thresholds were calibrated for a round cone at every angle,
     // and again since their dither is blue noise, the one recorded then (every read of the bits
-    // is compared with the cells in empty_cell_bits_test.cpp).
-    CHECK(one.stateHash() == 0x4ecff909cdf9e30full);
+    // is compared with the cells in empty_cell_bits_test.cpp), and since a grain over the seam
+    // rides the falling grain under it, the one recorded then.
+    CHECK(one.stateHash() == 0x6e69a572c1cc9529ull);
 }
 
 TEST_CASE("granular and classic differ, and switching the level mid-run takes effect") {
