@@ -130,8 +130,9 @@ Section simulationSection(const ReportOptions& options, std::ostream& log) {
     section.passed = drainsAgree(runs) && plotted;
     if (!plotted) log << "sandglass: gnuplot could not draw simulation.png\n";
     section.markdown = "## Simulation: ms per step against resolution\n\n"
-                       "The procedural hourglass (neck radius resolution/24) drained until a step moves nothing, "
-                       "seed " + std::to_string(options.step.seed) +
+                       "The procedural hourglass (neck radius resolution/24) drained under the " +
+                       std::string(sandcore::physicsLevelName(options.step.physics.level)) +
+                       " rules until a step moves nothing, seed " + std::to_string(options.step.seed) +
                        ", with sleeping grains skipped and with a full sweep of every cell, on 1 and " +
                        std::to_string(threads) + " threads. Every run of one resolution must end in the same state (same hash, same number of "
                        "steps) and keep every grain.\n\n" +
@@ -147,7 +148,7 @@ Section throughputSection(const ReportOptions& options, std::ostream& log) {
     log << "throughput: memory ceiling, then the " << resolution << "-cell hourglass drain on 1 and " << threads
         << " threads\n";
     const MemoryCeiling ceiling = measureMemoryCeiling(options.quick ? std::size_t{64} << 20 : std::size_t{256} << 20, threads);
-    const std::vector<MoveRate> runs = measureMoveRates(resolution, {1, threads}, options.step.seed);
+    const std::vector<MoveRate> runs = measureMoveRates(resolution, {1, threads}, options.step);
     const Table rates = moveRateTable(runs, ceiling);
     writeCsv(rates, options.outDir / "throughput.csv");
     writeCsv(ceilingTable(ceiling), options.outDir / "memory_ceiling.csv");
@@ -156,7 +157,8 @@ Section throughputSection(const ReportOptions& options, std::ostream& log) {
     section.markdown =
         "## Throughput against the machine's ceiling\n\n"
         "Moves per second while the procedural hourglass at resolution " + std::to_string(resolution) +
-        " drains until settled (sleeping grains skipped), the runs taking turns of 16 steps in one process (so "
+        " drains until settled under the " + std::string(sandcore::physicsLevelName(options.step.physics.level)) +
+        " rules (sleeping grains skipped), the runs taking turns of 16 steps in one process (so "
         "a burst of load from elsewhere hits every run alike; the other run's steps evict what a step would find "
         "in the caches, which on a quiet 2-thread host cost an earlier build's 2-thread step 6-8% against a run alone, "
         "docs/performance.md, Threads), next to what "

@@ -86,17 +86,18 @@ MemoryCeiling measureMemoryCeiling(std::size_t bufferBytes, int threads) {
     return ceiling;
 }
 
-std::vector<MoveRate> measureMoveRates(int resolution, const std::vector<int>& threads, std::uint64_t seed) {
+std::vector<MoveRate> measureMoveRates(int resolution, const std::vector<int>& threads, const sandcore::StepSettings& step) {
     sandcore::HourglassShape shape;
     shape.height = resolution;
     shape.neckRadius = sandcore::defaultNeckRadius(resolution);
-    const sandcore::Scene start = sandcore::makeHourglassScene(sandcore::makeHourglassMask(shape));
+    sandcore::StepSettings oneThread = step;
+    oneThread.threads = 1;
+    const sandcore::Scene start = sandcore::makeHourglassScene(sandcore::makeHourglassMask(shape), {}, oneThread);
     std::vector<sandcore::Scene> scenes;
     std::vector<MoveRate> runs;
     std::vector<std::vector<double>> milliseconds(threads.size());
     for (int t : threads) {
         scenes.push_back(start.clone());
-        scenes.back().setSeed(seed);
         scenes.back().setThreads(t);
         runs.push_back(emptyRun(resolution, t, start));
     }

@@ -20,7 +20,11 @@ TEST_CASE("the memory ceiling is measured on a buffer of the size asked, rounded
 }
 
 TEST_CASE("moves per second on 1 and 2 threads come from drains that agree move for move") {
-    const std::vector<MoveRate> runs = measureMoveRates(24, {1, 2}, 5);
+    const std::vector<MoveRate> runs = measureMoveRates(24, {1, 2}, [] {
+        sandcore::StepSettings step;
+        step.seed = 5;
+        return step;
+    }());
     REQUIRE(runs.size() == 2);
     CHECK(runs[0].threads == 1);
     CHECK(runs[1].threads == 2);

@@ -39,9 +39,10 @@ struct MoveRate {
     std::uint64_t hash = 0;     ///< state hash once settled
 };
 
-/// Drains the hourglass at this resolution once per thread count (sleeping on, the given seed),
-/// the runs taking turns of a few steps in one process so they share the machine's conditions.
-std::vector<MoveRate> measureMoveRates(int resolution, const std::vector<int>& threads, std::uint64_t seed);
+/// Drains the hourglass at this resolution once per thread count (sleeping on, the seed and the
+/// rules of `step`), the runs taking turns of a few steps in one process so they share the
+/// machine's conditions.
+std::vector<MoveRate> measureMoveRates(int resolution, const std::vector<int>& threads, const sandcore::StepSettings& step);
 
 /// The rates next to the ceiling: per run, moves per second and how many random writes per move
 /// the machine could have done in the same time (1 thread: the 1-thread rate, more: the N-thread rate).
