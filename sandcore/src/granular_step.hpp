@@ -9,7 +9,7 @@
 #include "empty_cells.hpp"
 #include "granular_rules.hpp"
 #include "granular_wakes.hpp"
-#include "sandcore/layout_bits.hpp"
+#include "layout_bits.hpp"
 #include "sleeping_falls.hpp"
 #include "sweep_context.hpp"
 #include "threshold_dither.hpp"

@@ -10,7 +10,7 @@
 #include "empty_cells.hpp"
 #include "granular_rules.hpp"
 #include "sandcore/cell_grid.hpp"
-#include "sandcore/layout_bits.hpp"
+#include "layout_bits.hpp"
 #include "threshold_dither.hpp"
 
 #include <algorithm>

@@ -45,7 +45,7 @@
 #include "threshold_dither.hpp"
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/large_pages.hpp"
-#include "sandcore/layout_bits.hpp"
+#include "layout_bits.hpp"
 
 #include <cstdint>
 #include <vector>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "sandcore/layout_bits.hpp"
+#include "layout_bits.hpp"
 
 #include <bit>
 

@@ -3,6 +3,7 @@
 
 #include "granular_rules.hpp"
 #include "grid_sweep.hpp"
+#include "layout_bits.hpp"
 #include "move_feed.hpp"
 #include "neck_flow.hpp"
 #include "sandcore/counter_random.hpp"
@@ -59,8 +60,8 @@ Scene::Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::ve
         if (cell >= upper_.cellCount() || upper_[cell] != kEmpty)
             throw std::invalid_argument("a fill cell lies outside the upper grid or on an INVALID cell");
     // The grids hold the layouts until reset() fills them: keep a bit per cell of each.
-    upperLayout_ = LayoutBits(upper_);
-    lowerLayout_ = LayoutBits(lower_);
+    upperLayout_ = std::make_unique<LayoutBits>(upper_);
+    lowerLayout_ = std::make_unique<LayoutBits>(lower_);
     if (settings_.threads < 1) throw std::invalid_argument("threads must be at least 1");
     makeSweeps();
     pool_ = std::make_unique<WorkerPool>(settings_.threads, settings_.tasks);
@@ -74,7 +75,7 @@ void Scene::configurePhysics() {
     granular_ = granular ? std::make_unique<GranularRules>(physics) : nullptr;
     // Model only what a scene needs: the neck's discharge belongs to the hourglass.
     neckFlow_ = granular && kind_ == SceneKind::Hourglass
-                    ? std::make_unique<NeckFlow>(upperLayout_.openCellsOfBottomLayer(), double(physics.gravity))
+                    ? std::make_unique<NeckFlow>(upperLayout_->openCellsOfBottomLayer(), double(physics.gravity))
                     : nullptr;
     for (GridSweep* sweep : {upperSweep_.get(), lowerSweep_.get()}) {
         sweep->setGranular(granular_.get());
@@ -94,12 +95,14 @@ void Scene::setPhysics(const PhysicsSettings& physics) {
 double Scene::neckFlowRate() const { return neckFlow_ ? neckFlow_->rate() : 0.0; }
 
 Scene::~Scene() = default;
+
+CellGrid Scene::layout(GridLevel level) const { return (level == GridLevel::Upper ? *upperLayout_ : *lowerLayout_).grid(); }
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 
 void Scene::makeSweeps() {
-    upperSweep_ = std::make_unique<GridSweep>(upperLayout_.size(), true);
-    lowerSweep_ = std::make_unique<GridSweep>(lowerLayout_.size(), false);
+    upperSweep_ = std::make_unique<GridSweep>(upperLayout_->size(), true);
+    lowerSweep_ = std::make_unique<GridSweep>(lowerLayout_->size(), false);
     lowerSweep_->setGridAbove(upperSweep_.get());
     configurePhysics(); // the new sweeps get the rules; a turned hourglass's neck is measured again
 }
@@ -108,7 +111,7 @@ GridSweep& Scene::sweepOf(GridLevel level) { return level == GridLevel::Upper ? 
 
 void Scene::rebuildCells(GridLevel level) {
     CellGrid& grid = gridRef(level);
-    (level == GridLevel::Upper ? upperLayout_ : lowerLayout_).writeInto(grid);
+    (level == GridLevel::Upper ? *upperLayout_ : *lowerLayout_).writeInto(grid);
     for (const CellBox& box : obstacles(level))
         forEachCellIn(grid, box, [&](std::uint32_t n) { grid[n] = kInvalid; });
 }
@@ -117,8 +120,8 @@ void Scene::reset() {
     if (flipped_) {
         // The fill belongs to the upright hourglass: turn the layouts back first.
         flipLayouts();
-        upper_ = CellGrid(upperLayout_.size());
-        lower_ = CellGrid(lowerLayout_.size());
+        upper_ = CellGrid(upperLayout_->size());
+        lower_ = CellGrid(lowerLayout_->size());
     }
     grains_.clear();
     movedGrains_.clear();
@@ -441,14 +444,14 @@ void Scene::restore(const SceneSnapshot& saved) {
     // Checked before anything changes, so a snapshot of another scene leaves this one as it was:
     // turned over, the upper grid takes the lower layout's size and the lower the upper's.
     const bool turn = saved.flipped != flipped_;
-    const Int3 upperSize = turn ? lowerLayout_.size() : upperLayout_.size();
-    const Int3 lowerSize = turn ? upperLayout_.size() : lowerLayout_.size();
+    const Int3 upperSize = turn ? lowerLayout_->size() : upperLayout_->size();
+    const Int3 lowerSize = turn ? upperLayout_->size() : lowerLayout_->size();
     if (!(saved.upper.size() == upperSize) || !(saved.lower.size() == lowerSize))
         throw std::invalid_argument("the snapshot belongs to a scene with other grids");
     if (turn) {
         flipLayouts();
-        upper_ = CellGrid(upperLayout_.size());
-        lower_ = CellGrid(lowerLayout_.size());
+        upper_ = CellGrid(upperLayout_->size());
+        lower_ = CellGrid(lowerLayout_->size());
     }
     std::copy(saved.upper.cells().begin(), saved.upper.cells().end(), upper_.cells().begin());
     std::copy(saved.lower.cells().begin(), saved.lower.cells().end(), lower_.cells().begin());
@@ -530,7 +533,7 @@ void Scene::clearObstacles(GridLevel level) {
     const std::vector<CellBox> removed = std::move(list);
     list.clear();
     CellGrid& grid = gridRef(level);
-    const LayoutBits& layout = level == GridLevel::Upper ? upperLayout_ : lowerLayout_;
+    const LayoutBits& layout = level == GridLevel::Upper ? *upperLayout_ : *lowerLayout_;
     for (const CellBox& box : removed)
         forEachCellIn(grid, box, [&](std::uint32_t n) {
             if (grid[n] != kInvalid || !layout.open(n)) return;

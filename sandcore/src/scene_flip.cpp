@@ -5,6 +5,7 @@
 #include "sandcore/scene.hpp"
 
 #include "grid_sweep.hpp"
+#include "layout_bits.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -25,12 +26,12 @@ std::vector<CellBox> mirroredInY(const std::vector<CellBox>& boxes, int sizeY) {
 
 // Layouts, obstacle lists and sweeps turn over; the live grids and grains are the caller's.
 void Scene::flipLayouts() {
-    const int upperHeight = upperLayout_.size().y, lowerHeight = lowerLayout_.size().y;
-    LayoutBits upperLayout(mirroredInY(lowerLayout_.grid())), lowerLayout(mirroredInY(upperLayout_.grid()));
+    const int upperHeight = upperLayout_->size().y, lowerHeight = lowerLayout_->size().y;
+    LayoutBits upperLayout(mirroredInY(lowerLayout_->grid())), lowerLayout(mirroredInY(upperLayout_->grid()));
     std::vector<CellBox> upperObstacles = mirroredInY(lowerObstacles_, lowerHeight);
     std::vector<CellBox> lowerObstacles = mirroredInY(upperObstacles_, upperHeight);
-    upperLayout_ = std::move(upperLayout);
-    lowerLayout_ = std::move(lowerLayout);
+    upperLayout_ = std::make_unique<LayoutBits>(std::move(upperLayout));
+    lowerLayout_ = std::make_unique<LayoutBits>(std::move(lowerLayout));
     upperObstacles_ = std::move(upperObstacles);
     lowerObstacles_ = std::move(lowerObstacles);
     makeSweeps();
@@ -69,8 +70,8 @@ bool Scene::flip() {
 
 Scene Scene::clone() const {
     // Built upright, as its fill expects; restore() turns it as this scene is turned.
-    Scene copy(kind_, flipped_ ? mirroredInY(lowerLayout_.grid()) : upperLayout_.grid(),
-               flipped_ ? mirroredInY(upperLayout_.grid()) : lowerLayout_.grid(), upperFill_, settings_);
+    Scene copy(kind_, flipped_ ? mirroredInY(lowerLayout_->grid()) : upperLayout_->grid(),
+               flipped_ ? mirroredInY(upperLayout_->grid()) : lowerLayout_->grid(), upperFill_, settings_);
     copy.restore(snapshot());
     return copy;
 }

@@ -5,7 +5,6 @@
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
-#include "sandcore/layout_bits.hpp"
 #include "sandcore/physics_settings.hpp"
 #include "sandcore/task_system.hpp"
 
@@ -18,6 +17,7 @@ namespace sandcore {
 
 class WorkerPool;
 class GridSweep;
+class LayoutBits;
 class GranularRules;
 class NeckFlow;
 
@@ -163,7 +163,7 @@ public:
     /// scene is (flipped()): with fillCells(), kind() and settings() what the constructor needs
     /// to build this scene again, after mirroring both layouts back when it is turned over.
     /// Built on each call from the one bit per cell the scene keeps.
-    CellGrid layout(GridLevel level) const { return (level == GridLevel::Upper ? upperLayout_ : lowerLayout_).grid(); }
+    CellGrid layout(GridLevel level) const;
     /// The upper-grid cells reset() fills with sand, in the order they are filled.
     const std::vector<std::uint32_t>& fillCells() const { return upperFill_; }
     /// The identity the next new grain gets (part of snapshot(), without copying the grids).
@@ -185,7 +185,7 @@ private:
 
     SceneKind kind_;
     StepSettings settings_;
-    LayoutBits upperLayout_, lowerLayout_;
+    std::unique_ptr<LayoutBits> upperLayout_, lowerLayout_; // the grids as built: what reset restores
     CellGrid upper_, lower_;
     std::vector<std::uint32_t> upperFill_;
     std::vector<CellBox> upperObstacles_, lowerObstacles_;
