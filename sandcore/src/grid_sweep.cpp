@@ -4,7 +4,7 @@
 #include "classic_step.hpp"
 #include "granular_step.hpp"
 #include "granular_wakes.hpp"
-#include "sandcore/worker_pool.hpp"
+#include "worker_pool.hpp"
 
 #include <algorithm>
 #include <span>

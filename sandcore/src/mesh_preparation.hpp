@@ -8,7 +8,7 @@
 
 #include "sandcore/large_pages.hpp"
 #include "sandcore/triangle_mesh.hpp"
-#include "sandcore/worker_pool.hpp"
+#include "worker_pool.hpp"
 
 #include <array>
 #include <cstdint>

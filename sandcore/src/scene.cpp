@@ -7,7 +7,7 @@
 #include "move_feed.hpp"
 #include "neck_flow.hpp"
 #include "sandcore/counter_random.hpp"
-#include "sandcore/worker_pool.hpp"
+#include "worker_pool.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -4,7 +4,7 @@
 // surface_moves.cpp: the moved grains' cells into the bits). Private to sandcore.
 
 #include "sandcore/surface_upkeep.hpp"
-#include "sandcore/worker_pool.hpp"
+#include "worker_pool.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -3,7 +3,7 @@
 
 #include "sandcore/inner_grains.hpp"
 #include "sandcore/normals.hpp"
-#include "sandcore/worker_pool.hpp"
+#include "worker_pool.hpp"
 
 #include "layer_neighbourhood.hpp"
 #include "surface_shares.hpp"
@@ -464,6 +464,13 @@ void SurfaceUpkeep::updateHeightsOf(const Scene& scene, GridShare& share, std::u
         listed = 1;
         share.changedColumns.push_back(ref);
     }
+}
+
+void SurfaceUpkeep::shareOut(WorkerPool* pool, std::size_t count, const std::function<void(std::size_t, std::size_t)>& part) {
+    const int pieces = pool != nullptr && count >= kPlacesPerPiece ? pool->threadCount() : 1;
+    auto piece = [&](int p) { part(count * std::size_t(p) / std::size_t(pieces), count * std::size_t(p + 1) / std::size_t(pieces)); };
+    if (pieces > 1) pool->parallelFor(pieces, piece);
+    else piece(0);
 }
 
 } // namespace sandcore

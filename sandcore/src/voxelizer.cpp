@@ -4,7 +4,7 @@
 #include "mesh_preparation.hpp"
 
 #include "sandcore/cell_grid.hpp"
-#include "sandcore/worker_pool.hpp"
+#include "worker_pool.hpp"
 
 #include <algorithm>
 #include <functional>

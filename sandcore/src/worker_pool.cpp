@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "sandcore/worker_pool.hpp"
+#include "worker_pool.hpp"
+
+#include "sandcore/scene.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -110,6 +112,14 @@ void WorkerPool::workerLoop() {
         if (now == seen) wakeups_.wait(seen, std::memory_order_acquire);
         seen = wakeups_.load(std::memory_order_acquire);
     }
+}
+
+void parallelFor(WorkerPool* pool, int count, const std::function<void(int)>& task) {
+    if (pool != nullptr) {
+        pool->parallelFor(count, task);
+        return;
+    }
+    for (int i = 0; i < count; ++i) task(i);
 }
 
 } // namespace sandcore

@@ -3,7 +3,7 @@
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"
 #include "sandcore/task_system.hpp"
-#include "sandcore/worker_pool.hpp"
+#include "worker_pool.hpp"
 
 #include <doctest/doctest.h>
 

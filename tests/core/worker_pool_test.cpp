@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "sandcore/worker_pool.hpp"
+#include "worker_pool.hpp"
 
 #include <doctest/doctest.h>
 

@@ -9,6 +9,7 @@
 #include "sandcore/task_system.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -202,5 +203,10 @@ private:
     std::size_t listedTransitions_ = 0;          // grains a transition passed that their sweep listed (scratch of step)
     std::size_t upperMovesBegin_ = 0;            // where the upper grid's moves start in movedGrains_ (scratch of step)
 };
+
+/// Runs task(0) .. task(count - 1) side by side on the threads of `pool` (Scene::workers(), the
+/// caller's thread among them), or one after another on this thread when pool is null. For work
+/// that follows a step, never during one.
+void parallelFor(WorkerPool* pool, int count, const std::function<void(int)>& task);
 
 } // namespace sandcore

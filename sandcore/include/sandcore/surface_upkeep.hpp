@@ -20,10 +20,10 @@
 #include "sandcore/cell_bits.hpp"
 #include "sandcore/scene.hpp"
 #include "sandcore/vec3.hpp"
-#include "sandcore/worker_pool.hpp"
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -121,15 +121,9 @@ public:
     /// for different grains (the last update lists each grain once), each grain's last place last.
     template <class F> void forEachMovedPlace(WorkerPool* pool, F&& f) const {
         for (const MovedPlace& place : retainedPlaces_) f(place);
-        const std::size_t count = latestMoves_.size();
-        const int pieces = pool != nullptr && count >= kPlacesPerPiece ? pool->threadCount() : 1;
-        auto piece = [&](int p) {
-            const std::size_t end = count * std::size_t(p + 1) / std::size_t(pieces);
-            for (std::size_t i = count * std::size_t(p) / std::size_t(pieces); i < end; ++i)
-                f(placeOf(latestMoves_[i], latestStep_));
-        };
-        if (pieces > 1) pool->parallelFor(pieces, piece);
-        else piece(0);
+        shareOut(pool, latestMoves_.size(), [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) f(placeOf(latestMoves_[i], latestStep_));
+        });
     }
     /// How many places forEachMovedPlace gives.
     std::size_t movedPlaceCount() const { return retainedPlaces_.size() + latestMoves_.size(); }
@@ -161,6 +155,9 @@ private:
     };
     // Fewer places than this are not worth waking another thread for.
     static constexpr std::size_t kPlacesPerPiece = 2048;
+    // Calls part(begin, end) over pieces of [0, count): side by side, one per thread of the pool,
+    // from kPlacesPerPiece items on; else once, on this thread.
+    static void shareOut(WorkerPool* pool, std::size_t count, const std::function<void(std::size_t, std::size_t)>& part);
     static std::size_t index(GridLevel level) { return level == GridLevel::Upper ? 1 : 0; }
     static MovedPlace placeOf(const GrainMove& move, std::uint32_t step) {
         return {move.grain, move.cell, move.level == GridLevel::Upper ? 1u : 0u, move.cameFrom, step};

@@ -243,7 +243,7 @@ std::int64_t GrainGpuStore::writeCellBitChanges(const sandcore::SurfaceUpkeep& s
             changedWords_.mark(hides);
         }
     };
-    if (mapped != nullptr && workers != nullptr && changed.size() >= kSharedCellChanges) workers->parallelFor(2, writeGrids);
+    if (mapped != nullptr && workers != nullptr && changed.size() >= kSharedCellChanges) sandcore::parallelFor(workers, 2, writeGrids);
     else writeGrids(-1);
     if (mapped != nullptr) return std::int64_t(changed.size()) * 8;
     return uploadRuns(GL_TEXTURE_BUFFER, cellBits_gpu_.buffer.get(), std::span<const std::uint32_t>(cellBitWords_),
