@@ -26,7 +26,7 @@ uniform sampler2D patternOffsets; // x: sub-grain (0..31), y: pattern; xyz in [-
 uniform sampler2D patternColors;  // same layout, RGBA8
 uniform int patternCount;
 
-out vec3 shadedColor;
+flat out vec3 shadedColor; // one colour a sub-grain: its first corner's (glProvokingVertex)
 out vec2 quadCorner;
 
 // A quad's 4 corners; its two triangles index them (0 1 2, 0 2 3), so a GPU shades each corner once.
@@ -43,7 +43,9 @@ void main() {
         vec3 own = vec3(float(grainColor & 255u), float((grainColor >> 8) & 255u), float((grainColor >> 16) & 255u)) / 255.0;
         base = own * (base / vec3(0.90, 0.90, 0.67)); // keep the pattern's small variation
     }
-    shadedColor = shadeGrain(base, grainNormal.xyz, int(grainOcclusion), centre);
+    // A quad's colour is its first corner's (flat, first-vertex convention): the others skip the light.
+    bool shades = !quads || gl_VertexID % 4 == 0;
+    shadedColor = shades ? shadeGrain(base, grainNormal.xyz, int(grainOcclusion), centre) : vec3(0.0);
 
     vec3 world = centre;
     quadCorner = vec2(0.0);

@@ -49,7 +49,7 @@ uniform sampler2D patternColors;  // same layout, RGBA8
 uniform int patternCount;
 
 out vec3 displayPosition; // the grain's R8 display point (read back by transform feedback in tests)
-out vec3 shadedColor;
+flat out vec3 shadedColor; // one colour a sub-grain: its first corner's (glProvokingVertex)
 out vec2 quadCorner;
 
 vec3 unpackNormal(uint word) {
@@ -140,18 +140,12 @@ void main() {
     }
     vec3 grainPosition = (vec3(worldCell) + 0.5 + grainJitter + ahead) * cellSize;
     displayPosition = grainPosition;
-    int key = 0; // unlit and without occlusion: not read
-    if (keySource == 2) key = surfaceKey(upper, local);
-    else if (keySource == 1) key = int(texelFetch(grainSurfaceKeys, id).r);
-    uint packedNormal = 0u;
-    if (lighting) {
-        if (normalFromKey) packedNormal = texelFetch(gradientNormalTable, key).r;
-        else packedNormal = texelFetch(columnNormals, ivec2(local.x, local.z + (upper ? size.z : 0)), 0).r;
-    }
-    vec3 normal = unpackNormal(packedNormal);
 
     bool quads = mode >= 2;
     int subGrain = quads ? gl_VertexID / 4 : gl_VertexID;
+    // A quad's colour is its first corner's (flat, first-vertex convention): the other three
+    // skip the neighbour reads and the light.
+    bool shades = !quads || gl_VertexID % 4 == 0;
     ivec2 texel = ivec2(subGrain, int(grainIdentity % uint(patternCount)));
     vec3 centre = grainPosition + texelFetch(patternOffsets, texel, 0).xyz * (0.5 * cellSize);
 
@@ -160,7 +154,18 @@ void main() {
         vec3 own = vec3(float(grainColor & 255u), float((grainColor >> 8) & 255u), float((grainColor >> 16) & 255u)) / 255.0;
         base = own * (base / vec3(0.90, 0.90, 0.67)); // keep the pattern's small variation
     }
-    shadedColor = shadeGrain(base, normal, key / 6859, centre);
+    shadedColor = vec3(0.0);
+    if (shades) {
+        int key = 0; // unlit and without occlusion: not read
+        if (keySource == 2) key = surfaceKey(upper, local);
+        else if (keySource == 1) key = int(texelFetch(grainSurfaceKeys, id).r);
+        uint packedNormal = 0u;
+        if (lighting) {
+            if (normalFromKey) packedNormal = texelFetch(gradientNormalTable, key).r;
+            else packedNormal = texelFetch(columnNormals, ivec2(local.x, local.z + (upper ? size.z : 0)), 0).r;
+        }
+        shadedColor = shadeGrain(base, unpackNormal(packedNormal), key / 6859, centre);
+    }
 
     vec3 world = centre;
     quadCorner = vec2(0.0);

@@ -16,7 +16,6 @@ uniform bool keyShadows;
 uniform sampler2DShadow shadowMap;
 uniform mat4 lightMatrix;       // world to the shadow map's [0, 1] cube
 uniform float shadowOffset;     // world units a receiver moves toward the light: one cell
-uniform float shadowTexel;      // one texel of the shadow map, in its [0, 1] coordinates
 
 vec3 toLinear(vec3 srgb) { return pow(srgb, vec3(2.2)); }
 
@@ -33,19 +32,14 @@ vec3 toDisplay(vec3 linear) {
 
 // The share of the key light that reaches p (normal n): 1 lit, 0 in shadow. The point moves one
 // cell toward the light and half a cell along its normal before the look-up, so a surface does
-// not shadow itself (acne) while a grain one cell under another is still shadowed; four
-// filtered taps soften the edge.
+// not shadow itself (acne) while a grain one cell under another is still shadowed. One filtered
+// look-up compares the 4 nearest texels and blends the answers: a soft edge a texel wide.
 float keyLightReaching(vec3 p, vec3 n) {
     if (!keyShadows) return 1.0;
     vec3 q = p + keyDirection * shadowOffset + n * (0.5 * shadowOffset);
     vec3 s = (lightMatrix * vec4(q, 1.0)).xyz;
     if (any(lessThan(s, vec3(0.0))) || any(greaterThan(s, vec3(1.0)))) return 1.0;
-    float lit = 0.0;
-    lit += texture(shadowMap, vec3(s.xy + vec2(-0.5, -0.5) * shadowTexel, s.z));
-    lit += texture(shadowMap, vec3(s.xy + vec2(0.5, -0.5) * shadowTexel, s.z));
-    lit += texture(shadowMap, vec3(s.xy + vec2(-0.5, 0.5) * shadowTexel, s.z));
-    lit += texture(shadowMap, vec3(s.xy + vec2(0.5, 0.5) * shadowTexel, s.z));
-    return 0.25 * lit;
+    return texture(shadowMap, s);
 }
 
 // Linear light leaving a diffuse surface of linear albedo: a sky-to-ground ambient and the fill,

@@ -26,7 +26,10 @@ void main() {
         vec3 halfway = normalize(keyDirection + view);
         float lit = keyLightReaching(worldPosition, n);
         float specular = pow(max(dot(n, halfway), 0.0), 24.0) * 0.08 * lit * float(dot(n, keyDirection) > 0.0);
-        fragColor = vec4(toDisplay(studioLight(toLinear(partColor), n, 1.0, lit) + keyColor * specular), 1.0);
+        // The part colours were picked under the thesis's light, which lit sRGB values; lit in
+        // linear values they come out more saturated, so a quarter of the saturation is taken back.
+        vec3 albedo = toLinear(mix(vec3(dot(partColor, vec3(0.299, 0.587, 0.114))), partColor, 0.75));
+        fragColor = vec4(toDisplay(studioLight(albedo, n, 1.0, lit) + keyColor * specular), 1.0);
         return;
     }
     vec3 toLight = normalize(lightPosition - worldPosition);

@@ -342,7 +342,10 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
     const bool quads = drawsQuads(settings.mode);
     if (quads) {
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, quadCorners_.get()); // kept by the bound vertex array
+        // Both triangles (0 1 2, 0 2 3) take their flat colour from corner 0, the one that shades.
+        glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
         glDrawElementsInstanced(GL_TRIANGLES, 6 * perCell, GL_UNSIGNED_SHORT, nullptr, GLsizei(instanceCount_));
+        glProvokingVertex(GL_LAST_VERTEX_CONVENTION);
     }
     else
         glDrawArraysInstanced(GL_POINTS, 0, perCell, GLsizei(instanceCount_));
@@ -350,7 +353,7 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
 }
 
 // The key light's view of the casters: the opaque model parts (offset back a little, as
-// triangles seen edge-on would shadow themselves) and one point per grain, about 1.6 cells wide,
+// triangles seen edge-on would shadow themselves) and one point per grain, 1.5 cells wide,
 // so neighbouring grains close the surface. Glass casts nothing.
 void SceneRenderer::drawShadowMap(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
                                   bool modelled) {
@@ -385,7 +388,7 @@ void SceneRenderer::drawShadowMap(const sandcore::Scene& scene, float stepFracti
         glUniformMatrix4fv(uniform(program, "viewProjection"), 1, GL_FALSE, glm::value_ptr(lightClip));
         glUniform1i(uniform(program, "mode"), 0);
         glUniform1f(uniform(program, "cellSize"), settings.cellSize);
-        glUniform1f(uniform(program, "pointSize"), std::max(1.0f, 1.6f * settings.cellSize * shadowMap_.texelsPerUnit()));
+        glUniform1f(uniform(program, "pointSize"), std::max(1.0f, 1.5f * settings.cellSize * shadowMap_.texelsPerUnit()));
         glUniform1i(uniform(program, "lighting"), 0);
         glUniform1i(uniform(program, "occlusion"), 0);
         glEnable(GL_PROGRAM_POINT_SIZE);

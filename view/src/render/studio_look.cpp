@@ -19,11 +19,11 @@ StudioLook studioLookFor(const RenderSettings& settings, float cellSize) {
     // 35 degrees up, so it reaches under a frame's top plate into the upper bulb; the fill comes
     // low from its right.
     look.keyDirection = glm::normalize(glm::vec3(-0.35f, 0.57f, 0.74f));
-    look.keyColor = glm::vec3(1.30f, 1.08f, 0.80f);  // warm, the sun
+    look.keyColor = glm::vec3(1.40f, 1.08f, 0.72f);  // warm, the sun
     look.fillDirection = glm::normalize(glm::vec3(0.90f, 0.33f, -0.24f));
-    look.fillColor = glm::vec3(0.12f, 0.16f, 0.24f); // cool, the sky's bounce
-    look.skyColor = glm::vec3(0.24f, 0.25f, 0.28f);
-    look.groundColor = glm::vec3(0.22f, 0.17f, 0.12f);
+    look.fillColor = glm::vec3(0.10f, 0.12f, 0.18f); // cool, the sky's bounce
+    look.skyColor = glm::vec3(0.22f, 0.23f, 0.27f);
+    look.groundColor = glm::vec3(0.26f, 0.18f, 0.11f); // warm light bounced off sand and wood
     look.shadowOffset = cellSize;
     return look;
 }
@@ -42,7 +42,6 @@ void setLookUniforms(GLuint program, const StudioLook& look) {
     glUniform3fv(at("groundColor"), 1, glm::value_ptr(look.groundColor));
     glUniformMatrix4fv(at("lightMatrix"), 1, GL_FALSE, glm::value_ptr(look.lightMatrix));
     glUniform1f(at("shadowOffset"), look.shadowOffset);
-    glUniform1f(at("shadowTexel"), look.shadowTexel);
     glUniform1i(at("shadowMap"), kShadowMapUnit);
 }
 
@@ -83,7 +82,6 @@ glm::mat4 ShadowMap::begin(const WorldBox& box, float cellSize, StudioLook& look
     // Clip [-1, 1] to texture [0, 1] in all three coordinates.
     const glm::mat4 toTexture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
     look.lightMatrix = toTexture * clip;
-    look.shadowTexel = 1.0f / float(size);
     texelsPerUnit_ = float(size) / (2.0f * radius);
     return clip;
 }

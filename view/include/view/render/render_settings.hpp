@@ -83,7 +83,7 @@ struct RenderSettings {
     bool hull = true;                     ///< V6: translucent vessel hull (beyond the thesis)
     bool voxelHull = false;               ///< S10: a model's vessel as the voxel hull, not as modelled
     float pointSize = 3.0f;               ///< points and sprites: diameter in pixels at content scale 1
-    float quadSize = 0.9f;                ///< billboards: quad edge in cells at 1 grain per cell (shrinks with k)
+    float quadSize = 1.15f;               ///< billboards: quad edge in cells at 1 grain per cell (shrinks with k); large enough that a pile shows no background
     float jitter = 0.5f;                  ///< R8 jitter 0..1 of a grain inside its cell
     float cellSize = 1.0f;                ///< world units per cell (the thesis's mSize)
     SandPalette palette = SandPalette::Desert; ///< S12: the sand's colours; default warm desert sand

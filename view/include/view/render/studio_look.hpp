@@ -26,7 +26,6 @@ struct StudioLook {
     glm::vec3 skyColor{0.0f}, groundColor{0.0f};
     glm::mat4 lightMatrix{1.0f}; ///< world to the shadow map's [0, 1] cube
     float shadowOffset = 1.0f;   ///< world units: one cell
-    float shadowTexel = 1.0f;    ///< one texel in the map's [0, 1] coordinates
 };
 
 /// The look for these settings, its lights fixed in the world (so shadows stay put while the
@@ -44,8 +43,8 @@ class ShadowMap {
 public:
     ShadowMap();
     /// Fits the light's projection around box, binds the map as the framebuffer (depth only) and
-    /// clears it; look's lightMatrix and shadowTexel are set. Returns the light's clip matrix,
-    /// to draw the casters with. Texels are about half a cell (512 to 2048 a side).
+    /// clears it; look's lightMatrix is set. Returns the light's clip matrix,
+    /// to draw the casters with. A cell spans 1.5 to 3 texels (256 to 2048 a side).
     glm::mat4 begin(const WorldBox& box, float cellSize, StudioLook& look);
     /// Back to the framebuffer and viewport bound before begin.
     void end();
