@@ -256,7 +256,6 @@ void drawDisplaySection(AppState& state) {
         ImGui::Checkbox("occlusion", &render.ambientOcclusion);
         ImGui::SameLine();
         ImGui::Checkbox("shadows", &render.shadows);
-        ImGui::SameLine();
         ImGui::Checkbox("tone mapping", &render.toneMapping);
         ImGui::SameLine();
         ImGui::Checkbox("sky in glass", &render.glassEnvironment);
