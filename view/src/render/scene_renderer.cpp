@@ -267,6 +267,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     const bool modelled = settings.hull && !settings.voxelHull && !model_.empty();
     look_ = studioLookFor(settings, settings.cellSize);
     if (look_.shadows) drawShadowMap(scene, stepFraction, settings, modelled);
+    look_.shadows = look_.shadows && shadowMap_.usable(); // a GL that cannot draw depth textures: no shadows
     shadowMap_.bind(look_.shadows);
     if (path_ == GrainPath::GpuInterpolated) {
         glUseProgram(grainGpuProgram_.get());

@@ -71,6 +71,7 @@ glm::mat4 ShadowMap::begin(const WorldBox& box, float cellSize, StudioLook& look
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.get(), 0);
         glDrawBuffer(GL_NONE);
         glReadBuffer(GL_NONE);
+        usable_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     }
     bind(false);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());

@@ -52,12 +52,16 @@ public:
     void bind(bool on) const;
     /// Texels per world unit of the last begin (casting grains are points this many per cell).
     float texelsPerUnit() const { return texelsPerUnit_; }
+    /// False when this GL cannot draw into the depth texture (the framebuffer is incomplete): the
+    /// frame is then drawn without shadows.
+    bool usable() const { return usable_; }
 
 private:
     GlFramebuffer framebuffer_;
     GlTexture depth_;
     int size_ = 0;
     float texelsPerUnit_ = 1.0f;
+    bool usable_ = true;
     GLint previousFramebuffer_ = 0;
     GLint previousViewport_[4] = {0, 0, 0, 0};
 };
