@@ -3,7 +3,7 @@
 // Points are flat; sprites and billboards are round grains with a soft shade toward the rim
 // (the thesis's shaded sprite texture, computed here instead of sampled).
 
-in vec3 shadedColor;
+flat in vec3 shadedColor;
 in vec2 quadCorner;
 uniform int mode;
 out vec4 fragColor;

@@ -9,6 +9,9 @@ layout(location = 0) in vec3 grainPosition;   // R8 display position, world unit
 layout(location = 1) in vec4 grainNormal;     // packed 10:10:10:2, unit normal
 layout(location = 2) in uint grainIdentity;   // picks the pattern
 layout(location = 3) in uint grainColor;      // RGBA8, 0 = the pattern's sand colour
+layout(location = 4) in uint grainOcclusion;  // occlusion level, (occupied neighbours + 2) / 4
+
+#include "grain_shading.glsl"
 
 uniform mat4 viewProjection;
 uniform int mode;                // 0 points, 1 sprites, 2 billboards, 3 pseudo-billboards
@@ -19,13 +22,11 @@ uniform vec3 cameraPosition;     // world units
 uniform vec3 cameraUp;           // unit, world space
 uniform vec3 pseudoRight;        // pseudo-billboards: the camera's rotation applied once per frame
 uniform vec3 pseudoUp;
-uniform bool lighting;
-uniform vec3 lightPosition;      // a white point light slightly below the camera (§3.8)
 uniform sampler2D patternOffsets; // x: sub-grain (0..31), y: pattern; xyz in [-1, 1]
 uniform sampler2D patternColors;  // same layout, RGBA8
 uniform int patternCount;
 
-out vec3 shadedColor;
+flat out vec3 shadedColor; // one colour a sub-grain: its first corner's (glProvokingVertex)
 out vec2 quadCorner;
 
 // A quad's 4 corners; its two triangles index them (0 1 2, 0 2 3), so a GPU shades each corner once.
@@ -42,13 +43,9 @@ void main() {
         vec3 own = vec3(float(grainColor & 255u), float((grainColor >> 8) & 255u), float((grainColor >> 16) & 255u)) / 255.0;
         base = own * (base / vec3(0.90, 0.90, 0.67)); // keep the pattern's small variation
     }
-    if (lighting) {
-        vec3 n = normalize(grainNormal.xyz);
-        vec3 toLight = normalize(lightPosition - centre);
-        float lambert = max(dot(n, toLight), 0.0);
-        base *= 0.45 + 0.65 * lambert; // ambient keeps the side away from the light readable
-    }
-    shadedColor = base;
+    // A quad's colour is its first corner's (flat, first-vertex convention): the others skip the light.
+    bool shades = !quads || gl_VertexID % 4 == 0;
+    shadedColor = shades ? shadeGrain(base, grainNormal.xyz, int(grainOcclusion), centre) : vec3(0.0);
 
     vec3 world = centre;
     quadCorner = vec2(0.0);

@@ -12,15 +12,17 @@
 
 layout(location = 0) in uint visibleGrain;  // inner grains hidden: the id of a visible grain
 
+#include "grain_shading.glsl"
+
 // Per grain id (grain_gpu_store.hpp):
 uniform usamplerBuffer grainPlaces;   // cell, level (0 lower, 1 upper), cameFrom, step of the last move
 uniform usamplerBuffer grainLooks;    // identity (picks the pattern), RGBA8 colour (0 = the pattern's)
 uniform samplerBuffer grainJitters;   // sandcore::jitterOffset, cells
-uniform usamplerBuffer grainNormals;  // occupancy-gradient normal, packed 10:10:10:2
+uniform usamplerBuffer grainSurfaceKeys; // sandcore's key: gradient sums + 6859 x occlusion level
 // Per cell, one bit (cell n: bit n % 32 of word n / 32): holds a grain; is not EMPTY (hides).
 uniform usamplerBuffer cellBits;
 uniform ivec4 cellBitsOffsets;   // first word of: lower grains, upper grains, lower hides, upper hides
-uniform usamplerBuffer gradientNormalTable; // packed normal of each gradient key (gx+9) + 19 (gy+9) + 361 (gz+9)
+uniform usamplerBuffer gradientNormalTable; // packed normal of each key (gx+9) + 19 (gy+9) + 361 (gz+9) + 6859 level
 uniform bool flagsFromBits;      // inner flags and gradient normals from the bits
 
 uniform ivec3 lowerSize;         // cells per axis of each grid
@@ -29,7 +31,8 @@ uniform ivec3 upperOrigin;       // world cell of the upper grid's (0, 0, 0)
 uniform uint currentStep;        // low 32 bits of the steps done
 uniform float stepRemaining;     // 1 - step fraction: share of a move still ahead (0: at rest)
 uniform bool showInner;          // every grain is an instance (id = gl_InstanceID); else the visible list
-uniform int normalSource;        // 0 column normals, 1 per-grain gradient normals, 2 gradient from the bits
+uniform int keySource;           // the grain's surface key: 0 none, 1 per grain (grainSurfaceKeys), 2 from the bits
+uniform bool normalFromKey;      // lit by the gradient normal of the key; else by its column's normal
 uniform usampler2D columnNormals; // per column, packed 10:10:10:2; row z + level * sizeZ
 
 uniform mat4 viewProjection;
@@ -41,14 +44,12 @@ uniform vec3 cameraPosition;     // world units
 uniform vec3 cameraUp;           // unit, world space
 uniform vec3 pseudoRight;        // pseudo-billboards: the camera's rotation applied once per frame
 uniform vec3 pseudoUp;
-uniform bool lighting;
-uniform vec3 lightPosition;      // a white point light slightly below the camera (§3.8)
 uniform sampler2D patternOffsets; // x: sub-grain (0..31), y: pattern; xyz in [-1, 1]
 uniform sampler2D patternColors;  // same layout, RGBA8
 uniform int patternCount;
 
 out vec3 displayPosition; // the grain's R8 display point (read back by transform feedback in tests)
-out vec3 shadedColor;
+flat out vec3 shadedColor; // one colour a sub-grain: its first corner's (glProvokingVertex)
 out vec2 quadCorner;
 
 vec3 unpackNormal(uint word) {
@@ -82,19 +83,25 @@ bool innerGrain(bool upperGrid, ivec3 c) {
 }
 
 // sandcore::occupancyGradientSums: the offsets of the grains among the 26 neighbours within the
-// grain's own grid (outside it nothing), as a key of the normal table.
-int gradientKey(bool upperGrid, ivec3 c) {
+// grain's own grid (outside it nothing), and, from the same reads, sandcore::occupiedNeighbours
+// as the occlusion level: the key SurfaceUpkeep keeps per grain.
+int surfaceKey(bool upperGrid, ivec3 c) {
     ivec3 size = upperGrid ? upperSize : lowerSize;
     int offset = upperGrid ? cellBitsOffsets.y : cellBitsOffsets.x;
     ivec3 g = ivec3(0);
+    int occupied = 0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz)
             for (int dx = -1; dx <= 1; ++dx) {
                 ivec3 p = c + ivec3(dx, dy, dz);
                 if (any(lessThan(p, ivec3(0))) || any(greaterThanEqual(p, size))) continue;
-                if (cellBit(offset, cellIndex(size, p))) g += ivec3(dx, dy, dz);
+                if (cellBit(offset, cellIndex(size, p))) {
+                    g += ivec3(dx, dy, dz);
+                    occupied += 1;
+                }
             }
-    return (g.x + 9) + 19 * (g.y + 9) + 361 * (g.z + 9);
+    occupied -= 1; // the grain's own cell
+    return (g.x + 9) + 19 * (g.y + 9) + 361 * (g.z + 9) + 6859 * ((occupied + 2) / 4);
 }
 
 const uint kNoMove = 0x80008080u; // sandcore::packMove(0, 0, 0)
@@ -133,16 +140,12 @@ void main() {
     }
     vec3 grainPosition = (vec3(worldCell) + 0.5 + grainJitter + ahead) * cellSize;
     displayPosition = grainPosition;
-    uint packedNormal = 0u; // unlit: not read
-    if (lighting) {
-        if (normalSource == 2) packedNormal = texelFetch(gradientNormalTable, gradientKey(upper, local)).r;
-        else if (normalSource == 1) packedNormal = texelFetch(grainNormals, id).r;
-        else packedNormal = texelFetch(columnNormals, ivec2(local.x, local.z + (upper ? size.z : 0)), 0).r;
-    }
-    vec3 normal = unpackNormal(packedNormal);
 
     bool quads = mode >= 2;
     int subGrain = quads ? gl_VertexID / 4 : gl_VertexID;
+    // A quad's colour is its first corner's (flat, first-vertex convention): the other three
+    // skip the neighbour reads and the light.
+    bool shades = !quads || gl_VertexID % 4 == 0;
     ivec2 texel = ivec2(subGrain, int(grainIdentity % uint(patternCount)));
     vec3 centre = grainPosition + texelFetch(patternOffsets, texel, 0).xyz * (0.5 * cellSize);
 
@@ -151,13 +154,18 @@ void main() {
         vec3 own = vec3(float(grainColor & 255u), float((grainColor >> 8) & 255u), float((grainColor >> 16) & 255u)) / 255.0;
         base = own * (base / vec3(0.90, 0.90, 0.67)); // keep the pattern's small variation
     }
-    if (lighting) {
-        vec3 n = normalize(normal);
-        vec3 toLight = normalize(lightPosition - centre);
-        float lambert = max(dot(n, toLight), 0.0);
-        base *= 0.45 + 0.65 * lambert; // ambient keeps the side away from the light readable
+    shadedColor = vec3(0.0);
+    if (shades) {
+        int key = 0; // unlit and without occlusion: not read
+        if (keySource == 2) key = surfaceKey(upper, local);
+        else if (keySource == 1) key = int(texelFetch(grainSurfaceKeys, id).r);
+        uint packedNormal = 0u;
+        if (lighting) {
+            if (normalFromKey) packedNormal = texelFetch(gradientNormalTable, key).r;
+            else packedNormal = texelFetch(columnNormals, ivec2(local.x, local.z + (upper ? size.z : 0)), 0).r;
+        }
+        shadedColor = shadeGrain(base, unpackNormal(packedNormal), key / 6859, centre);
     }
-    shadedColor = base;
 
     vec3 world = centre;
     quadCorner = vec2(0.0);

@@ -28,9 +28,11 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
     auto last = Clock::now();
     RenderSettings render = app.state().render;
     double cpuMilliseconds = 0.0, drawCallMilliseconds = 0.0, uploadBytes = 0.0, uploadMilliseconds = 0.0;
+    std::vector<double> frameMilliseconds; // wall time of each timed frame
     auto frame = [&] {
         glfwPollEvents();
         const auto now = Clock::now();
+        frameMilliseconds.push_back(std::chrono::duration<double, std::milli>(now - last).count());
         const double cpuStart = threadCpuMilliseconds();
         app.renderHostFrame(host, render, true, std::chrono::duration<double>(now - last).count());
         last = now;
@@ -56,10 +58,7 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
     } endProgress{app, progress};
     for (const BenchmarkCase& setup : cases) {
         if (progress.cancelRequested) break;
-        render.mode = setup.mode;
-        render.grainsPerCell = setup.grainsPerCell;
-        render.lighting = setup.lighting;
-        render.innerGrains = setup.innerGrains;
+        render = benchmarkRenderSettings(setup, render);
         // Every row starts from a full upper bulb, so each measures the same flowing sand
         // (a drained hourglass would upload nothing and flatter the later rows).
         host.reset();
@@ -70,6 +69,8 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
         cpuMilliseconds = drawCallMilliseconds = uploadBytes = uploadMilliseconds = 0.0;
         app.renderer().takeGpuTime(); // the warm-up frames' time is no part of the row
         const auto start = Clock::now();
+        last = start;
+        frameMilliseconds.clear();
         double elapsed = 0.0;
         while (!progress.cancelRequested &&
                (row.frames < timing.minFrames || (row.frames < timing.maxFrames && elapsed < timing.maxSeconds))) {
@@ -89,12 +90,16 @@ BenchmarkReport runFrameBenchmark(Application& app, const std::vector<BenchmarkC
             std::max(0.0, cpuMilliseconds - tally.stepMilliseconds - drawCallMilliseconds) / row.frames;
         row.upkeepMillisecondsPerStep = tally.steps > 0 ? (tally.upkeepMilliseconds + uploadMilliseconds) / steps : 0.0;
         row.gpuMillisecondsPerFrame = app.renderer().takeGpuTime().perFrame();
+        std::sort(frameMilliseconds.begin(), frameMilliseconds.end());
+        const std::size_t n = frameMilliseconds.size();
+        row.medianFrameMilliseconds = n == 0 ? 0.0 : 0.5 * (frameMilliseconds[(n - 1) / 2] + frameMilliseconds[n / 2]);
         report.rows.push_back(row);
-        std::printf("%-4s %2d grains/cell, light %-3s, inner %-3s: %8.1f fps, %10.0f B/frame, %7.2f CPU ms/frame, "
-                    "%7.2f GPU ms/frame\n",
+        std::printf("%-4s %2d grains/cell, light %-3s, inner %-3s%s%s: %8.1f fps, %10.0f B/frame, %7.2f CPU ms/frame, "
+                    "%7.2f GPU ms/frame, median frame %.1f ms\n",
                     renderModeShortName(setup.mode), setup.grainsPerCell, setup.lighting ? "on" : "off",
-                    setup.innerGrains ? "yes" : "no", row.framesPerSecond(), row.uploadBytesPerFrame,
-                    row.cpuMillisecondsPerFrame, row.gpuMillisecondsPerFrame);
+                    setup.innerGrains ? "yes" : "no", setup.look.empty() ? "" : ", look ", setup.look.c_str(),
+                    row.framesPerSecond(), row.uploadBytesPerFrame, row.cpuMillisecondsPerFrame,
+                    row.gpuMillisecondsPerFrame, row.medianFrameMilliseconds);
         std::fflush(stdout);
         ++progress.rowsDone;
     }

@@ -248,6 +248,18 @@ void drawDisplaySection(AppState& state) {
     ImGui::Checkbox("glass", &render.hull);
     ImGui::SameLine();
     ImGui::Checkbox("voxel hull", &render.voxelHull); // S10: the model's cells, not its triangles
+    // The studio look (docs/rendering.md): each element can be switched off to compare.
+    int rig = int(render.light);
+    const char* rigs[] = {"studio (warm key, cool fill)", "thesis (light at the camera)"};
+    if (ImGui::Combo("lights", &rig, rigs, 2)) render.light = LightRig(rig);
+    if (render.light == LightRig::Studio) {
+        ImGui::Checkbox("occlusion", &render.ambientOcclusion);
+        ImGui::SameLine();
+        ImGui::Checkbox("shadows", &render.shadows);
+        ImGui::Checkbox("tone mapping", &render.toneMapping);
+        ImGui::SameLine();
+        ImGui::Checkbox("sky in glass", &render.glassEnvironment);
+    }
     if (render.lighting) {
         int method = int(render.normals);
         const char* methods[] = {"column heights (thesis)", "occupancy gradient"};

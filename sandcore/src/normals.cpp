@@ -107,6 +107,19 @@ Int3 occupancyGradientSums(const CellGrid& grid, std::uint32_t cell) {
     return {gx, gy, gz};
 }
 
+int occupiedNeighbours(const CellGrid& grid, std::uint32_t cell) {
+    const Int3 c = grid.coordinate(cell);
+    const CellNeighbourhood around(grid, c.x, c.y, c.z);
+    int count = 0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        if (!around.hasLayer(dy)) continue;
+        around.forEachWithCentre([&](int dx, int dz) {
+            if ((dx != 0 || dy != 0 || dz != 0) && around.at(dx, dy, dz) >= 0) ++count;
+        });
+    }
+    return count;
+}
+
 Vec3 gradientNormal(const CellGrid& grid, std::uint32_t cell) {
     const Int3 g = occupancyGradientSums(grid, cell);
     return occupancyGradientNormal(g.x, g.y, g.z);

@@ -22,8 +22,13 @@ namespace {
 // occupancyGradientNormal of every sum a 3x3x3 neighbourhood can give (each in -9..9): the same
 // floats, without a square root and three divisions per grain.
 // A grain's gradient is kept as its sums (gx, gy, gz), each in -9..9, packed in 16 bits: 2 bytes
-// per grain instead of a 12-byte normal, and a table gives the normal.
+// per grain instead of a 12-byte normal, and a table gives the normal. The 3 bits the sums leave
+// free hold the grain's occlusion level, which changes exactly where its gradient may: with the
+// occupancy of one of its 26 neighbours.
 std::uint16_t gradientKey(int gx, int gy, int gz) { return std::uint16_t((gx + 9) + 19 * (gy + 9) + 361 * (gz + 9)); }
+std::uint16_t surfaceKey(int gx, int gy, int gz, int occupied) {
+    return std::uint16_t(gradientKey(gx, gy, gz) + SurfaceUpkeep::kGradientKeys * std::size_t(occlusionLevel(occupied)));
+}
 constexpr std::size_t kGradientKeys = SurfaceUpkeep::kGradientKeys;
 
 class GradientTable {
@@ -33,7 +38,7 @@ public:
             for (int gy = -9; gy <= 9; ++gy)
                 for (int gx = -9; gx <= 9; ++gx) normals_[gradientKey(gx, gy, gz)] = occupancyGradientNormal(gx, gy, gz);
     }
-    const Vec3& operator[](std::uint16_t key) const { return normals_[key]; }
+    const Vec3& operator[](std::uint16_t key) const { return normals_[key % kGradientKeys]; }
 
 private:
     Vec3 normals_[kGradientKeys];
@@ -47,7 +52,7 @@ const GradientTable& gradientTable() {
 // gradientNormal's sums, read from the grid: for cells at the grid's edge.
 std::uint16_t gradientKeyFromGrid(const CellGrid& grid, std::uint32_t cell) {
     const Int3 g = occupancyGradientSums(grid, cell);
-    return gradientKey(g.x, g.y, g.z);
+    return surfaceKey(g.x, g.y, g.z, occupiedNeighbours(grid, cell));
 }
 
 // For the 3 bits of a row (x-1, x, x+1): how many grains, and their summed x offsets.
@@ -60,6 +65,8 @@ bool sameVec(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && 
 } // namespace
 
 Vec3 SurfaceUpkeep::normalOfGradientKey(std::uint16_t key) { return gradientTable()[key]; }
+
+int SurfaceUpkeep::occlusionLevelOfKey(std::uint16_t key) { return int(key / kGradientKeys); }
 
 Vec3 SurfaceUpkeep::gradientNormal(std::uint32_t grain) const {
     if (!trackGradient_) return {0.0f, 1.0f, 0.0f};
@@ -238,7 +245,7 @@ std::uint16_t SurfaceUpkeep::gradientKeyAt(const Scene& scene, GridLevel level, 
     const GridShape& shape = shapes_[index(level)];
     if (!shape.interior(shape.coordinate(cell))) return gradientKeyFromGrid(scene.grid(level), cell);
     const CellBits& grains = grainBits_[index(level)];
-    int gx = 0, gy = 0, gz = 0;
+    int gx = 0, gy = 0, gz = 0, occupied = 0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz) {
             const auto centre = std::uint32_t(std::int64_t(cell) + dy * std::int64_t(shape.layer) + dz * std::int64_t(shape.row));
@@ -246,8 +253,10 @@ std::uint16_t SurfaceUpkeep::gradientKeyAt(const Scene& scene, GridLevel level, 
             gx += kXSumOfRow[row];
             gy += dy * kGrainsInRow[row];
             gz += dz * kGrainsInRow[row];
+            occupied += kGrainsInRow[row];
         }
-    return gradientKey(gx, gy, gz);
+    occupied -= int((grains.around(cell) >> 1) & 1u); // the cell itself is no neighbour
+    return surfaceKey(gx, gy, gz, occupied);
 }
 
 void SurfaceUpkeep::refreshFlag(const Scene& scene, GridLevel level, std::uint32_t cell, std::uint32_t grain) {

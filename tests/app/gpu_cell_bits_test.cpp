@@ -3,7 +3,9 @@
 // cells' occupancy bits draws exactly what the CPU path draws from sandcore's flags and normals:
 // on the hourglass after frames that upload only changes, and on a canvas whose grains lie on
 // every face of both grids and on the seam between them (where "outside the grid hides" makes
-// edge grains inner, visible from outside), lit and unlit, inner grains hidden and shown.
+// edge grains inner, visible from outside), unlit, lit by the thesis's light and in the studio
+// look (lit pseudo-billboards, occlusion from the same cell reads, shadows, tone mapping), inner
+// grains hidden and shown.
 #include "support/app_test_support.hpp"
 
 #include "app/application.hpp"
@@ -33,9 +35,14 @@ struct GrainFlagsSwitch {
     ~GrainFlagsSwitch() { unsetenv("SANDGLASS_GPU_CELL_BITS"); }
 };
 
-RenderSettings renderSettings(Path path, bool light, bool inner) {
-    RenderSettings render;
-    render.lighting = light; // by the occupancy gradient (the default method)
+// The thesis's points unlit and lit (by the occupancy gradient, the default method), and the default studio look.
+enum class Look { Unlit, ThesisLight, Studio };
+
+const char* lookName(Look look) { return look == Look::Unlit ? "unlit" : look == Look::ThesisLight ? "thesis light" : "studio"; }
+
+RenderSettings renderSettings(Path path, Look look, bool inner) {
+    RenderSettings render = look == Look::Studio ? RenderSettings{} : thesisLook();
+    render.lighting = look != Look::Unlit;
     render.innerGrains = inner;
     render.grainPath = path == Path::Cpu ? GrainPath::CpuFullUpload : GrainPath::GpuInterpolated;
     return render;
@@ -74,12 +81,12 @@ void fillEdgesAndSeam(sandcore::Scene& scene) {
 // Frames as opened, steeply from above and from below (where the grains under the seam and the
 // bottom corners show; the canvas keeps its own top view): first with everything uploaded, then after `steps` stepped frames, each of which
 // uploads only changes on the GPU path.
-std::vector<RgbImage> picturesOf(Path path, bool light, bool inner, bool canvas, int steps, std::int64_t* innerGrains) {
+std::vector<RgbImage> picturesOf(Path path, Look look, bool inner, bool canvas, int steps, std::int64_t* innerGrains) {
     const GrainFlagsSwitch perGrain(path == Path::GpuGrainFlags);
     // Canvas rows of 20 cells: the 32-bit words of the cell bits begin and end inside rows too.
     ApplicationOptions options = canvas ? testing::canvasOptions(200, 160, 20, "cell bits on the GPU")
                                         : testing::proceduralHourglassOptions(160, 160, 24, "cell bits on the GPU");
-    options.initial.render = renderSettings(path, light, inner);
+    options.initial.render = renderSettings(path, look, inner);
     options.initial.simulationRunning = false;
     options.stepsBeforeStart = canvas ? 0 : 40;
     std::optional<Application> app = testing::openApplication(std::move(options), "cell bits on the GPU");
@@ -112,18 +119,18 @@ std::vector<RgbImage> picturesOf(Path path, bool light, bool inner, bool canvas,
 TEST_CASE("V8: grains at the grid edges and the seam: the GPU's flags and normals from the cell bits draw the CPU's picture") {
     if (!testing::requireDisplay("cell bits on the GPU")) return;
     for (bool canvas : {true, false})
-        for (bool light : {true, false})
+        for (Look look : {Look::ThesisLight, Look::Unlit, Look::Studio})
             for (bool inner : {false, true}) {
                 CAPTURE(canvas);
-                CAPTURE(light);
+                CAPTURE(lookName(look));
                 CAPTURE(inner);
                 std::int64_t innerCpu = 0;
-                const std::vector<RgbImage> reference = picturesOf(Path::Cpu, light, inner, canvas, 6, &innerCpu);
+                const std::vector<RgbImage> reference = picturesOf(Path::Cpu, look, inner, canvas, 6, &innerCpu);
                 CHECK(innerCpu > 0); // there are inner grains to hide
                 for (Path path : {Path::GpuCellBits, Path::GpuGrainFlags}) {
                     CAPTURE(pathName(path));
                     std::int64_t innerGpu = 0;
-                    const std::vector<RgbImage> gpu = picturesOf(path, light, inner, canvas, 6, &innerGpu);
+                    const std::vector<RgbImage> gpu = picturesOf(path, look, inner, canvas, 6, &innerGpu);
                     CHECK(innerGpu == innerCpu);
                     REQUIRE(gpu.size() == reference.size());
                     for (std::size_t picture = 0; picture < gpu.size(); ++picture) {
@@ -137,8 +144,8 @@ TEST_CASE("V8: grains at the grid edges and the seam: the GPU's flags and normal
 TEST_CASE("V8: inner grains hidden and shown draw different pictures at the grid edges (the check above can fail)") {
     if (!testing::requireDisplay("cell bits on the GPU")) return;
     std::int64_t inner = 0;
-    const std::vector<RgbImage> hidden = picturesOf(Path::GpuCellBits, true, false, true, 0, &inner);
-    const std::vector<RgbImage> shown = picturesOf(Path::GpuCellBits, true, true, true, 0, &inner);
+    const std::vector<RgbImage> hidden = picturesOf(Path::GpuCellBits, Look::ThesisLight, false, true, 0, &inner);
+    const std::vector<RgbImage> shown = picturesOf(Path::GpuCellBits, Look::ThesisLight, true, true, 0, &inner);
     // A corner grain is inner (the grid's outside hides it) yet faces the camera: showing it shows.
     CHECK(testing::differentPixels(hidden[0], shown[0]) > 0);
     CHECK(testing::differentPixels(hidden[1], shown[1]) > 0);
@@ -155,7 +162,7 @@ TEST_CASE("V8: a software GL draws hidden inner grains from the per-grain flags,
     for (bool inner : {false, true}) {
         CAPTURE(inner);
         ApplicationOptions options = testing::proceduralHourglassOptions(160, 160, 24, "cell bits on the GPU");
-        options.initial.render = renderSettings(Path::GpuCellBits, true, inner);
+        options.initial.render = renderSettings(Path::GpuCellBits, Look::ThesisLight, inner);
         options.initial.simulationRunning = false;
         std::optional<Application> app = testing::openApplication(std::move(options), "cell bits on the GPU");
         REQUIRE(app);

@@ -67,7 +67,7 @@ TEST_CASE("V8: the GPU's display positions equal writeDisplayPositions after ste
     if (!app) return; // its context is current: the renderer below draws into it
     SceneHost host(hourglassSettings(24));
     SceneRenderer renderer(shaderDirectory());
-    RenderSettings settings;
+    RenderSettings settings = thesisLook(); // unlit: the surface below keeps no per-grain keys
     settings.cellSize = 0.37f; // not a power of two: every rounding step shows
     settings.jitter = 0.8f;
     renderer.setScene(host.scene(), settings.cellSize);
@@ -134,7 +134,7 @@ TEST_CASE("V8: every edit that bypasses the step uploads everything, and the GPU
     if (!app) return;
     SceneHost host(hourglassSettings(24));
     SceneRenderer renderer(shaderDirectory());
-    RenderSettings settings;
+    RenderSettings settings = thesisLook(); // unlit: the surface below keeps no per-grain keys
     renderer.setScene(host.scene(), settings.cellSize);
     host.runSteps(40);
     // The renderer is told nothing but the surface: as the application draws.

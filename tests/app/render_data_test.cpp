@@ -108,8 +108,8 @@ TEST_CASE("benchmark: the thesis's table form, every mode with and without light
     CHECK(text.str().find("Sim\tGui\tMode\tPpC\tfilled\tLight\tinner\tFPS\tB/frame\tmoves\tCPU ms\tapp ms\tupkeep\tGPU ms\n") !=
           std::string::npos);
     CHECK(text.str().find("on\ton\tPBB\t20\t3482\ton\tno\t20.0\t0\t0\t0.00\t0.00\t0.000\t1.25\n") != std::string::npos);
-    CHECK(csv.str().find(",fps,upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step,gpu_ms_per_frame\n") !=
-          std::string::npos);
+    CHECK(csv.str().find(",fps,upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step,"
+                         "gpu_ms_per_frame,median_frame_ms,look\n") != std::string::npos);
     CHECK(text.str().find("GPU (GL_RENDERER): test GPU") != std::string::npos);
     CHECK(text.str().find("Driver (GL_VERSION): 3.3 test") != std::string::npos);
     std::istringstream lines(csv.str());
@@ -117,4 +117,35 @@ TEST_CASE("benchmark: the thesis's table form, every mode with and without light
     int count = 0;
     while (std::getline(lines, line)) ++count;
     CHECK(count == 33);
+}
+
+TEST_CASE("benchmark: the look rows compare the default look with the thesis's and with each studio element off") {
+    const std::vector<BenchmarkCase> cases = lookBenchmarkCases();
+    REQUIRE(cases.size() == 8);
+    const RenderSettings standard;
+    const RenderSettings first = benchmarkRenderSettings(cases[0], thesisLook());
+    CHECK(cases[0].look == "default");
+    CHECK((first.mode == standard.mode && first.grainsPerCell == standard.grainsPerCell && first.lighting &&
+           first.light == LightRig::Studio && first.ambientOcclusion && first.shadows && first.toneMapping &&
+           first.glassEnvironment));
+    const RenderSettings thesis = benchmarkRenderSettings(cases[1], RenderSettings{});
+    CHECK((thesis.mode == RenderMode::Points && !thesis.lighting && thesis.light == LightRig::Thesis &&
+           !thesis.ambientOcclusion && !thesis.shadows && !thesis.toneMapping && !thesis.glassEnvironment));
+    CHECK(!benchmarkRenderSettings(cases[2], standard).ambientOcclusion);
+    CHECK(!benchmarkRenderSettings(cases[3], standard).shadows);
+    CHECK(!benchmarkRenderSettings(cases[4], standard).toneMapping);
+    CHECK(!benchmarkRenderSettings(cases[5], standard).glassEnvironment);
+    CHECK(!benchmarkRenderSettings(cases[6], standard).lighting);
+    CHECK(benchmarkRenderSettings(cases[7], standard).light == LightRig::Thesis);
+    BenchmarkReport report{"hourglass, resolution 38", "test GPU", "3.3 test", 640, 480, {}};
+    for (const BenchmarkCase& c : cases) {
+        BenchmarkRow row{c, true, true, 2123, 10, 0.5};
+        row.medianFrameMilliseconds = 48.5;
+        report.rows.push_back(row);
+    }
+    std::ostringstream text;
+    writeBenchmarkText(text, {report}, "sandglass bench --render --look");
+    CHECK(text.str().find("Look\tMode\tPpC\tfilled\tframe ms\tFPS\tCPU ms\tGPU ms\n") != std::string::npos);
+    CHECK(text.str().find("AO off\tPBB\t4\t2123\t48.5\t20.0\t") != std::string::npos);
+    CHECK(text.str().find("thesis default\tP\t4\t2123\t48.5\t") != std::string::npos);
 }

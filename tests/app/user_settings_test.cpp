@@ -120,9 +120,9 @@ TEST_CASE("settings: a value of the wrong kind keeps its default and the others 
     CHECK(problem.find('\n') == std::string::npos);
     CHECK(s.windowWidth == UserSettings{}.windowWidth);
     CHECK(s.uiScale == 1.25f);
-    CHECK(s.mode == RenderMode::Points);
+    CHECK(s.mode == RenderMode::PseudoBillboards); // the default
     CHECK(s.palette == SandPalette::Beach);
-    CHECK_FALSE(s.lighting);
+    CHECK(s.lighting); // the default
     CHECK(s.scene == sandcore::SceneKind::Canvas);
 }
 

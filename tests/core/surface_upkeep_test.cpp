@@ -80,6 +80,11 @@ void checkUpkeepMatchesFullRecompute(const Scene& scene, const SurfaceUpkeep& up
             const Vec3 kept = upkeep.gradientNormal(id);
             REQUIRE_MESSAGE((kept.x == normals[id].x && kept.y == normals[id].y && kept.z == normals[id].z),
                             "gradient normal of grain " << id);
+            // Ambient occlusion rides in the same key and must follow the same changes.
+            const GridLevel level = scene.grains().level[id];
+            const int occupied = occupiedNeighbours(scene.grid(level), scene.grains().place[id].cell);
+            REQUIRE_MESSAGE(SurfaceUpkeep::occlusionLevelOfKey(upkeep.gradientKeyOf(id)) == occlusionLevel(occupied),
+                            "occlusion level of grain " << id);
         }
     }
     for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {

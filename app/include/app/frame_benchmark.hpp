@@ -20,7 +20,19 @@ struct BenchmarkCase {
     int grainsPerCell = 1;                ///< sub-grains per cell (the thesis's PpZ)
     bool lighting = false;                ///< light on
     bool innerGrains = true;              ///< inner grains drawn
+    /// The lights and the studio's elements: the thesis's rows draw its look (thesisLook()).
+    LightRig light = LightRig::Thesis;
+    bool occlusion = false, shadows = false, toneMapping = false, environment = false;
+    std::string look; ///< the look rows' name ("default", "AO off", ...); empty in the thesis's rows
 };
+
+/// The display settings of a row: the case applied to base (which keeps size, palette, hull...).
+RenderSettings benchmarkRenderSettings(const BenchmarkCase& setup, RenderSettings base);
+
+/// The look rows (docs/rendering.md): the default look, the thesis's default (unlit points), the
+/// default with each studio element off in turn (occlusion, shadows, tone mapping, sky in the
+/// glass, the grains' lighting) and lit by the thesis's light.
+std::vector<BenchmarkCase> lookBenchmarkCases();
 
 /// The thesis's rows for one scene: inner grains drawn, then skipped; in each, every mode
 /// for (1 grain, no light), (20 grains, no light), (20 grains, light), then the remaining mixes.
@@ -42,6 +54,7 @@ struct BenchmarkRow {
     double appCpuMillisecondsPerFrame = 0.0; ///< of which outside the draw calls (the application's own work)
     double upkeepMillisecondsPerStep = 0.0; ///< surface upkeep and grain upload per step, ms
     double gpuMillisecondsPerFrame = 0.0;   ///< GPU time of the scene's drawing per frame (timer queries)
+    double medianFrameMilliseconds = 0.0;   ///< wall time of the median timed frame, the step included
     double framesPerSecond() const { return seconds > 0.0 ? double(frames) / seconds : 0.0; } ///< FPS
 };
 
@@ -63,10 +76,12 @@ struct BenchmarkTiming {
     int warmupFrames = 2;      ///< untimed frames after switching configuration
 };
 
-/// The thesis's table form, grouped by inner grains drawn / skipped.
+/// The thesis's table form, grouped by inner grains drawn / skipped; reports of look rows as one
+/// table of the looks with their median frame times.
 void writeBenchmarkText(std::ostream& out, const std::vector<BenchmarkReport>& reports, const std::string& command);
 /// One line per row: scene,gl_renderer,gl_version,width,height,sim,gui,mode,grains_per_cell,filled_cells,light,inner,frames,seconds,fps,
-/// upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step,gpu_ms_per_frame.
+/// upload_bytes_per_frame,moves_per_step,cpu_ms_per_frame,app_cpu_ms_per_frame,upkeep_ms_per_step,gpu_ms_per_frame,
+/// median_frame_ms,look.
 void writeBenchmarkCsv(std::ostream& out, const std::vector<BenchmarkReport>& reports);
 /// Writes folder/benchmark.txt and folder/benchmark.csv (creating the folder); throws std::runtime_error.
 void writeBenchmarkFiles(const std::filesystem::path& folder, const std::vector<BenchmarkReport>& reports,

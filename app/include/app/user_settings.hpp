@@ -25,9 +25,9 @@ struct UserSettings {
     bool windowPlaced = false;          ///< windowX and windowY were saved (the window manager places a first window)
     int windowX = 0, windowY = 0;       ///< the window's top-left corner on the desktop, screen coordinates
     float uiScale = 1.0f;               ///< text size on top of the monitor's content scale (View tab)
-    RenderMode mode = RenderMode::Points;           ///< render mode
+    RenderMode mode = RenderMode::PseudoBillboards; ///< render mode
     SandPalette palette = SandPalette::Desert;      ///< sand colours
-    bool lighting = false;              ///< lighting from estimated normals
+    bool lighting = true;               ///< lighting from estimated normals
     sandcore::SceneKind scene = sandcore::SceneKind::Hourglass; ///< the last scene
     std::string model;                  ///< the last model file; empty = the scene's bundled default
     std::string screenshotFolder;       ///< where P saves; empty = the pictures folder

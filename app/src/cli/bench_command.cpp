@@ -21,6 +21,7 @@ namespace {
 struct BenchOptions {
     bool render = false;
     bool quick = false;
+    bool looks = false; // with render: the look rows, not the thesis's
     std::string out = "bench-report";
     std::vector<int> resolutions{37, 248};
     std::string size = "1024x768";
@@ -42,8 +43,8 @@ int runRenderBenchmark(const BenchOptions& options, const std::string& commandLi
         Application application(std::move(settings));
         std::cout << "hourglass, resolution " << resolution << ": " << application.scene().grainCount()
                   << " filled cells" << std::endl;
-        std::vector<BenchmarkCase> cases = thesisBenchmarkCases();
-        if (options.quick) cases.resize(4); // inner drawn, 1 grain per cell, no light: one row per mode
+        std::vector<BenchmarkCase> cases = options.looks ? lookBenchmarkCases() : thesisBenchmarkCases();
+        if (options.quick && !options.looks) cases.resize(4); // inner drawn, 1 grain per cell, no light: one row per mode
         reports.push_back(runFrameBenchmark(application, cases, options.timing));
     }
     writeBenchmarkFiles(options.out, reports, commandLine);
@@ -79,6 +80,8 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
         "bench", "Benchmarks: the speed-against-error report, or with --render the frame rates of every render mode");
     cmd->add_flag("--render", options->render, "frame-rate benchmark: every mode, light, inner grains, 1 and 20 "
                                                "grains per cell; writes benchmark.txt and benchmark.csv");
+    cmd->add_flag("--look", options->looks,
+                  "with --render: the default look against the thesis's default and against each studio element off");
     cmd->add_flag("--quick", options->quick,
                   "small resolutions, under a minute; with --render: one row per mode only");
     cmd->add_option("--out", options->out, "folder for the result files")->capture_default_str();
@@ -110,7 +113,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
             return;
         }
         std::ostringstream line;
-        line << "sandglass bench --render" << (options->quick ? " --quick" : "");
+        line << "sandglass bench --render" << (options->looks ? " --look" : "") << (options->quick ? " --quick" : "");
         line << " --out " << options->out << " --size " << options->size << " --threads " << options->step.threads
              << " --res";
         for (int r : options->resolutions) line << ' ' << r;

@@ -59,9 +59,12 @@ void openAtStart(GuiOptions& options, const GivenOption& given) {
 
 // I4: what the last window was left with, where the command line leaves it open.
 void applyRemembered(const UserSettings& remembered, const GivenOption& given, GuiOptions& options) {
-    if (!given("--mode")) options.view.mode = renderModeName(remembered.mode);
+    if (!given("--mode") && !given("--thesis-look")) options.view.mode = renderModeName(remembered.mode);
     if (!given("--palette")) options.view.palette = sandPaletteName(remembered.palette);
-    if (!given("--light")) options.view.light = remembered.lighting;
+    if (!given("--light") && !given("--unlit") && !given("--thesis-look")) {
+        options.view.light = remembered.lighting;
+        options.view.unlit = !remembered.lighting;
+    }
     if (!given("--size"))
         options.view.size = std::to_string(remembered.windowWidth) + "x" + std::to_string(remembered.windowHeight);
     const bool sceneChosen = !options.file.empty() || !options.load.empty() || !options.draft.empty() ||

@@ -120,6 +120,11 @@ int runRender(const RenderOptions& options) {
         out["mode"] = renderModeName(render.mode);
         out["grains_per_cell"] = render.grainsPerCell;
         out["light"] = render.lighting;
+        out["lights"] = lightRigName(render.light);
+        out["ambient_occlusion"] = render.ambientOcclusion;
+        out["shadows"] = render.shadows;
+        out["tone_mapping"] = render.toneMapping;
+        out["glass_environment"] = render.glassEnvironment;
         out["normals"] = normalMethodName(render.normals);
         out["grains"] = application.scene().grainCount();
         out["steps"] = application.scene().counters().stepsDone;

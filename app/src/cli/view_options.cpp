@@ -10,12 +10,22 @@ namespace sandglass {
 
 void addViewOptions(CLI::App& command, ViewOptions& options) {
     addSceneOptions(command, options.scene);
-    command.add_option("--mode", options.mode, "points, sprites, billboards or pseudo")->capture_default_str();
+    command.add_option("--mode", options.mode, "points, sprites, billboards or pseudo (default pseudo; points with --thesis-look)");
     command.add_option("--palette", options.palette, "sand colours: desert, beach, white, volcanic or layers")
         ->capture_default_str();
     addNumberOption(command, "--grains-per-cell", options.grainsPerCell, 1, kMaxGrainsPerCell,
                     "grains drawn per cell (default 4)");
-    command.add_flag("--light", options.light, "lighting from estimated normals");
+    command.add_flag("--light", options.light, "grains lit from estimated normals (the default; with --thesis-look: its light)");
+    command.add_flag("--unlit", options.unlit, "grains in flat colours (the thesis's default)");
+    command.add_option("--lights", options.lights,
+                       "studio (warm key, cool fill, sky; default) or thesis (a white light near the camera, no elements)")
+        ->capture_default_str();
+    command.add_flag("--thesis-look", options.thesisLook,
+                     "the thesis's look: unlit points, its light when lit, no occlusion, shadows, tone mapping or sky");
+    command.add_flag("--no-ao", options.noOcclusion, "no ambient occlusion from the cells");
+    command.add_flag("--no-shadows", options.noShadows, "no shadows of the key light");
+    command.add_flag("--no-tone-map", options.noToneMapping, "light clamped, not tone mapped");
+    command.add_flag("--no-env", options.noEnvironment, "glass without the reflected sky");
     command.add_option("--normals", options.normals,
                        "how --light estimates normals: gradient (of the occupancy, default) or columns (the thesis's column heights)")
         ->capture_default_str();
@@ -37,15 +47,29 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
     // The window's default scenes are the bundled models, not the procedural shapes.
     if (request.modelPath.empty() && request.shape.empty()) request.modelPath = defaultModelFor(parseSceneKind(scene.scene));
     state.scene = sceneSettingsFrom(scene);
-    const std::optional<RenderMode> mode = parseRenderMode(options.mode);
-    if (!mode) throw std::invalid_argument("--mode: unknown mode '" + options.mode + "' (points, sprites, billboards or pseudo)");
-    state.render.mode = *mode;
+    state.render = options.thesisLook ? thesisLook() : RenderSettings{};
+    if (!options.mode.empty()) {
+        const std::optional<RenderMode> mode = parseRenderMode(options.mode);
+        if (!mode) throw std::invalid_argument("--mode: unknown mode '" + options.mode + "' (points, sprites, billboards or pseudo)");
+        state.render.mode = *mode;
+    }
+    if (options.light && options.unlit) throw std::invalid_argument("--light and --unlit contradict each other");
+    if (options.light) state.render.lighting = true;
+    if (options.unlit) state.render.lighting = false;
+    if (!options.thesisLook || options.lights != "studio") {
+        const std::optional<LightRig> rig = parseLightRig(options.lights);
+        if (!rig) throw std::invalid_argument("--lights: unknown lights '" + options.lights + "' (studio or thesis)");
+        state.render.light = *rig;
+    }
+    if (options.noOcclusion) state.render.ambientOcclusion = false;
+    if (options.noShadows) state.render.shadows = false;
+    if (options.noToneMapping) state.render.toneMapping = false;
+    if (options.noEnvironment) state.render.glassEnvironment = false;
     const std::optional<SandPalette> palette = parseSandPalette(options.palette);
     if (!palette)
         throw std::invalid_argument("--palette: unknown palette '" + options.palette + "' (desert, beach, white, volcanic or layers)");
     state.render.palette = *palette;
     state.render.grainsPerCell = options.grainsPerCell;
-    state.render.lighting = options.light;
     const std::optional<sandcore::NormalMethod> normals = parseNormalMethod(options.normals);
     if (!normals) throw std::invalid_argument("--normals: unknown method '" + options.normals + "' (gradient or columns)");
     state.render.normals = *normals;

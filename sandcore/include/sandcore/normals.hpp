@@ -34,6 +34,15 @@ Vec3 gradientNormal(const CellGrid& grid, std::uint32_t cell);
 /// -9..9; INVALID and outside count as empty): what gradientNormal reads.
 Int3 occupancyGradientSums(const CellGrid& grid, std::uint32_t cell);
 
+/// How many of a cell's 26 neighbours hold a grain (INVALID and outside count as empty): the
+/// occupancy ambient occlusion darkens by.
+int occupiedNeighbours(const CellGrid& grid, std::uint32_t cell);
+
+/// Ambient occlusion in kOcclusionLevels steps: (occupied neighbours + 2) / 4, so 0..7. Eight
+/// steps fit the 3 bits a gradient key leaves free in 16 (SurfaceUpkeep::kSurfaceKeys).
+inline constexpr int kOcclusionLevels = 8;
+constexpr int occlusionLevel(int occupiedNeighbours) { return (occupiedNeighbours + 2) / 4; }
+
 /// The normal gradientNormal gives for the sums (gx, gy, gz) of the offsets of the grains
 /// around a cell (each in -9..9): the unit vector of (-gx, -gy, -gz), or (0, 1, 0) for none.
 Vec3 occupancyGradientNormal(int gx, int gy, int gz);

@@ -18,6 +18,7 @@
 // the cells that changed and the inner count, with no work per moved grain beyond its place.
 
 #include "sandcore/cell_bits.hpp"
+#include "sandcore/normals.hpp"
 #include "sandcore/scene.hpp"
 #include "sandcore/vec3.hpp"
 
@@ -64,10 +65,15 @@ struct SurfaceTracking {
 
 class SurfaceUpkeep {
 public:
-    /// How many gradient keys there are (gradientKey(grain) is below this).
+    /// How many gradient sums there are: a key modulo this names the sums.
     static constexpr std::size_t kGradientKeys = 19 * 19 * 19;
-    /// The normal a gradient key stands for (gradientNormal's floats).
+    /// How many keys there are (gradientKeyOf(grain) is below this): the gradient sums and the
+    /// occlusion level (occlusionLevel of occupiedNeighbours), key = sums + kGradientKeys * level.
+    static constexpr std::size_t kSurfaceKeys = kGradientKeys * kOcclusionLevels;
+    /// The normal a key stands for (gradientNormal's floats).
     static Vec3 normalOfGradientKey(std::uint16_t key);
+    /// The occlusion level a key stands for (0..kOcclusionLevels-1).
+    static int occlusionLevelOfKey(std::uint16_t key);
     /// Also keep every grain's occupancy-gradient normal (R12's other method; costs a 3x3x3
     /// look at each moved grain and around each changed cell). Takes effect at the next rebuild.
     void setTrackGradientNormals(bool track) { tracking_.gradientNormals = track; }
@@ -99,7 +105,8 @@ public:
     const CellBits& hideBits(GridLevel level) const { return hideBits_[index(level)]; }
     /// A grain's gradientNormal, by grain id (when tracked; else (0, 1, 0)).
     Vec3 gradientNormal(std::uint32_t grain) const;
-    /// A grain's occupancy-gradient sums as one key (when tracked): normalOfGradientKey gives its normal.
+    /// A grain's occupancy-gradient sums and occlusion level as one key (when tracked):
+    /// normalOfGradientKey gives its normal, occlusionLevelOfKey its occlusion.
     std::uint16_t gradientKeyOf(std::uint32_t grain) const { return grains_[grain].gradient; }
 
     // What changed since the last clearChanges(), for a consumer that mirrors these (the
@@ -149,7 +156,7 @@ private:
     // All that is kept per grain, in one record: a moved grain costs one cache line, not four.
     struct GrainSurface {
         std::uint32_t seen = 0;     // (update number << 2) | which of flag (1), gradient (2) it looked at
-        std::uint16_t gradient = 0; // occupancy-gradient sums, packed (see gradientKey)
+        std::uint16_t gradient = 0; // occupancy-gradient sums and occlusion level, packed (see surfaceKey)
         std::uint8_t inner = 0;     // 1 for an inner grain
         std::uint8_t listed = 0;    // bits of the change lists naming it
     };

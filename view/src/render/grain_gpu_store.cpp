@@ -66,8 +66,10 @@ std::int64_t uploadRuns(GLenum target, GLuint buffer, std::span<const T> all, In
     return bytes;
 }
 
+// The surface key carries the gradient normal and the occlusion level.
 bool needsGradient(const RenderSettings& settings) {
-    return settings.lighting && settings.normals == sandcore::NormalMethod::OccupancyGradient;
+    return (settings.lighting && settings.normals == sandcore::NormalMethod::OccupancyGradient) ||
+           grainOcclusion(settings);
 }
 
 bool needsColumns(const RenderSettings& settings) {
@@ -110,7 +112,7 @@ GrainGpuStore::GrainGpuStore()
     }
     for (BufferTexture* texture : {&places_gpu_, &looks_gpu_, &jitters_gpu_, &normals_gpu_, &cellBits_gpu_})
         allocate(*texture, 16, nullptr); // never empty: a texture needs storage
-    packedByKey_.resize(sandcore::SurfaceUpkeep::kGradientKeys);
+    packedByKey_.resize(sandcore::SurfaceUpkeep::kSurfaceKeys);
     for (std::size_t key = 0; key < packedByKey_.size(); ++key)
         packedByKey_[key] = packNormal(sandcore::SurfaceUpkeep::normalOfGradientKey(std::uint16_t(key)));
     // The shader looks the normal of its gradient up here: the same packed word as the CPU's.
@@ -314,7 +316,7 @@ std::int64_t GrainGpuStore::uploadAll(const sandcore::Scene& scene, const sandco
     bitsMode_ = !surface.kept().grainFlags;
     gradientUploaded_ = !bitsMode_ && needsGradient(settings) && surface.tracksGradientNormals();
     packedNormals_.assign(gradientUploaded_ ? count : 0, 0u);
-    for (std::uint32_t id = 0; id < packedNormals_.size(); ++id) packedNormals_[id] = packedByKey_[surface.gradientKeyOf(id)];
+    for (std::uint32_t id = 0; id < packedNormals_.size(); ++id) packedNormals_[id] = surface.gradientKeyOf(id);
     allocate(normals_gpu_, packedNormals_.size() * 4, packedNormals_.data());
     bytes += std::int64_t(packedNormals_.size()) * 4;
     if (bitsMode_) {
@@ -427,7 +429,7 @@ std::int64_t GrainGpuStore::writeChanges(const sandcore::SurfaceUpkeep& surface,
     visibleBytes_ = 0;
     for (std::uint32_t id : flags) setVisible(id, !surface.isInner(id));
     auto* packed = static_cast<std::uint32_t*>(normals_gpu_.buffer.mapped());
-    for (std::uint32_t id : normals) packed[id] = packedByKey_[surface.gradientKeyOf(id)];
+    for (std::uint32_t id : normals) packed[id] = surface.gradientKeyOf(id);
     return std::int64_t(moved * sizeof(GrainPlace)) + visibleBytes_ + std::int64_t(normals.size()) * 4 +
            writeCellBitChanges(surface, workers);
 }
@@ -447,7 +449,7 @@ std::int64_t GrainGpuStore::sendChangesInRuns(const sandcore::SurfaceUpkeep& sur
                         runs_, [](std::uint32_t, std::uint32_t) {});
     if (gradientUploaded_) {
         for (std::uint32_t id : surface.changedGradientNormals()) {
-            packedNormals_[id] = packedByKey_[surface.gradientKeyOf(id)];
+            packedNormals_[id] = surface.gradientKeyOf(id);
             changedNormals_.mark(id);
         }
         bytes += uploadRuns(GL_TEXTURE_BUFFER, normals_gpu_.buffer.get(), std::span<const std::uint32_t>(packedNormals_),

@@ -3,6 +3,7 @@
 
 #include "sandcore/display_positions.hpp"
 #include "sandcore/inner_grains.hpp"
+#include "sandcore/normals.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,15 +49,25 @@ void GrainInstanceBuilder::refreshCache(const sandcore::Scene& scene, const Rend
         // Unlit frames never read normals: skip the estimate, which costs more than the upload.
         std::fill(packedNormals_.begin(), packedNormals_.end(), packNormal({0.0f, 1.0f, 0.0f}));
     }
+    // Ambient occlusion: each grain's occupied neighbours, as the upkeep and the GPU count them.
+    occlusion_.assign(count, 0);
+    if (grainOcclusion(settings)) {
+        const sandcore::GrainStore& grains = scene.grains();
+        for (std::uint32_t id = 0; id < count; ++id)
+            occlusion_[id] = std::uint8_t(sandcore::occlusionLevel(
+                sandcore::occupiedNeighbours(scene.grid(grains.level[id]), grains.place[id].cell)));
+    }
     cachedMethod_ = settings.normals;
     cachedWithNormals_ = settings.lighting;
+    cachedWithOcclusion_ = grainOcclusion(settings);
     cacheValid_ = true;
 }
 
 std::span<const GrainInstance> GrainInstanceBuilder::build(const sandcore::Scene& scene, float stepFraction,
                                                            const RenderSettings& settings) {
     const std::size_t count = scene.grains().size();
-    const bool normalsStale = settings.lighting && (!cachedWithNormals_ || cachedMethod_ != settings.normals);
+    const bool normalsStale = (settings.lighting && (!cachedWithNormals_ || cachedMethod_ != settings.normals)) ||
+                              grainOcclusion(settings) != cachedWithOcclusion_;
     if (!cacheValid_ || normalsStale || inner_.size() != count) refreshCache(scene, settings);
 
     positions_.resize(count);
@@ -73,6 +84,7 @@ std::span<const GrainInstance> GrainInstanceBuilder::build(const sandcore::Scene
         out.normal = packedNormals_[i];
         out.identity = grains.identity[i];
         out.color = drawnGrainColor(grains, std::uint32_t(i), settings.palette);
+        out.occlusion = occlusion_[i];
     }
     builtCount_ = written;
     return {instances_.data(), written};

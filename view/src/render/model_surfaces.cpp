@@ -61,6 +61,13 @@ void ModelSurfaces::set(const ModelDrawing* drawing, bool turnedOver, float cell
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(glass.size() * sizeof(GpuVertex)), glass.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     opaqueVertices_ = std::int64_t(opaque.size());
+    bounds_ = WorldBox{glm::vec3(1e30f), glm::vec3(-1e30f)};
+    for (const std::vector<GpuVertex>* vertices : {&opaque, &glass})
+        for (const GpuVertex& v : *vertices) {
+            bounds_.min = glm::min(bounds_.min, glm::vec3(v.x, v.y, v.z));
+            bounds_.max = glm::max(bounds_.max, glm::vec3(v.x, v.y, v.z));
+        }
+    if (opaque.empty() && glass.empty()) bounds_ = WorldBox{};
     sortedFor_ = glm::vec3(1e30f); // the next glass draw sorts
 }
 
@@ -90,6 +97,17 @@ void ModelSurfaces::useProgram(const ModelLight& frame, bool glass) const {
     glUniform3fv(uniform(program_, "cameraPosition"), 1, glm::value_ptr(frame.eye));
     glUniform3fv(uniform(program_, "lightPosition"), 1, glm::value_ptr(frame.light));
     glUniform1i(uniform(program_, "glass"), glass ? 1 : 0);
+    setLookUniforms(program_.get(), frame.look != nullptr ? *frame.look : StudioLook{});
+}
+
+void ModelSurfaces::drawShadowCasters(const float* lightClip) {
+    if (opaqueVertices_ == 0) return;
+    glUseProgram(program_.get());
+    glUniformMatrix4fv(uniform(program_, "viewProjection"), 1, GL_FALSE, lightClip);
+    setLookUniforms(program_.get(), StudioLook{}); // reads no shadow map while drawing one
+    glBindVertexArray(opaqueArray_.get());
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(opaqueVertices_));
+    glBindVertexArray(0);
 }
 
 void ModelSurfaces::drawOpaque(const ModelLight& frame) {

@@ -39,4 +39,24 @@ std::optional<sandcore::NormalMethod> parseNormalMethod(std::string_view name) {
     return std::nullopt;
 }
 
+const char* lightRigName(LightRig rig) { return rig == LightRig::Thesis ? "thesis" : "studio"; }
+
+std::optional<LightRig> parseLightRig(std::string_view name) {
+    for (LightRig rig : {LightRig::Studio, LightRig::Thesis})
+        if (name == lightRigName(rig)) return rig;
+    return std::nullopt;
+}
+
+RenderSettings thesisLook() {
+    RenderSettings settings;
+    settings.mode = RenderMode::Points;
+    settings.lighting = false;
+    settings.light = LightRig::Thesis;
+    settings.ambientOcclusion = false;
+    settings.shadows = false;
+    settings.toneMapping = false;
+    settings.glassEnvironment = false;
+    return settings;
+}
+
 } // namespace sandglass

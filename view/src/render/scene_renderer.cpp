@@ -39,7 +39,8 @@ constexpr int kGrainTexturesUnit = 3; // places, looks, jitters, gradient normal
 // Display settings whose change invalidates the uploaded grains even when nothing moved.
 bool sameGrainInputs(const RenderSettings& a, const RenderSettings& b) {
     return a.innerGrains == b.innerGrains && a.lighting == b.lighting && a.normals == b.normals &&
-           a.jitter == b.jitter && a.cellSize == b.cellSize && a.palette == b.palette;
+           a.jitter == b.jitter && a.cellSize == b.cellSize && a.palette == b.palette &&
+           grainOcclusion(a) == grainOcclusion(b);
 }
 
 } // namespace
@@ -64,7 +65,9 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
     glVertexAttribIPointer(2, 1, GL_UNSIGNED_INT, stride, reinterpret_cast<void*>(offsetof(GrainInstance, identity)));
     glEnableVertexAttribArray(3);
     glVertexAttribIPointer(3, 1, GL_UNSIGNED_INT, stride, reinterpret_cast<void*>(offsetof(GrainInstance, color)));
-    for (GLuint location = 0; location < 4; ++location) glVertexAttribDivisor(location, 1);
+    glEnableVertexAttribArray(4);
+    glVertexAttribIPointer(4, 1, GL_UNSIGNED_INT, stride, reinterpret_cast<void*>(offsetof(GrainInstance, occlusion)));
+    for (GLuint location = 0; location < 5; ++location) glVertexAttribDivisor(location, 1);
     hullAttributes(hullArray_.get(), hullBuffer_.get());
     hullAttributes(lineArray_.get(), lineBuffer_.get());
     glBindVertexArray(0);
@@ -100,7 +103,7 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
         glUniform1i(uniform(*program, "patternCount"), GLint(patterns.size()));
     }
     glUniform1i(uniform(grainGpuProgram_, "columnNormals"), kColumnNormalsUnit);
-    const char* grainTextures[] = {"grainPlaces", "grainLooks", "grainJitters", "grainNormals", "cellBits", "gradientNormalTable"};
+    const char* grainTextures[] = {"grainPlaces", "grainLooks", "grainJitters", "grainSurfaceKeys", "cellBits", "gradientNormalTable"};
     for (int i = 0; i < 6; ++i) glUniform1i(uniform(grainGpuProgram_, grainTextures[i]), kGrainTexturesUnit + i);
     glUseProgram(0);
 }
@@ -233,7 +236,10 @@ std::int64_t SceneRenderer::setGpuUniforms(const sandcore::Scene& scene, float s
     glUniform1i(uniform(program, "showInner"), settings.innerGrains ? 1 : 0);
     const bool fromBits = gpuStore_.flagsFromBits();
     const bool gradient = settings.normals == sandcore::NormalMethod::OccupancyGradient;
-    glUniform1i(uniform(program, "normalSource"), gradient ? (fromBits ? 2 : 1) : 0);
+    // The surface key holds the gradient normal and the occlusion level: read when either is used.
+    const bool keyUsed = (settings.lighting && gradient) || grainOcclusion(settings);
+    glUniform1i(uniform(program, "keySource"), keyUsed ? (fromBits ? 2 : 1) : 0);
+    glUniform1i(uniform(program, "normalFromKey"), gradient ? 1 : 0);
     glUniform1i(uniform(program, "flagsFromBits"), fromBits ? 1 : 0);
     const std::array<std::int32_t, 4>& offsets = gpuStore_.cellBitsOffsets();
     glUniform4i(uniform(program, "cellBitsOffsets"), offsets[0], offsets[1], offsets[2], offsets[3]);
@@ -258,6 +264,11 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     path_ = path;
     uploadGrains(scene, stepFraction, settings);
     const glm::mat4 viewProjection = camera.projection(float(width) / float(height)) * camera.view();
+    const bool modelled = settings.hull && !settings.voxelHull && !model_.empty();
+    look_ = studioLookFor(settings, settings.cellSize);
+    if (look_.shadows) drawShadowMap(scene, stepFraction, settings, modelled);
+    look_.shadows = look_.shadows && shadowMap_.usable(); // a GL that cannot draw depth textures: no shadows
+    shadowMap_.bind(look_.shadows);
     if (path_ == GrainPath::GpuInterpolated) {
         glUseProgram(grainGpuProgram_.get());
         instanceCount_ = setGpuUniforms(scene, stepFraction, settings);
@@ -271,9 +282,8 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     };
     timedDraw([&] { drawGrains(settings, camera, glm::value_ptr(viewProjection), pixelScale); });
     // S10: the model as modelled, its opaque parts with the sand, its glass over both.
-    const bool modelled = settings.hull && !settings.voxelHull && !model_.empty();
     const ModelLight frame{glm::value_ptr(viewProjection), camera.position(),
-                           camera.position() - camera.up() * (0.15f * camera.distance()), settings.blackBackground};
+                           camera.position() - camera.up() * (0.15f * camera.distance()), settings.blackBackground, &look_};
     if (modelled) model_.sortGlassFor(frame.eye); // the application's work, outside the timed calls
     timedDraw([&] {
         if (modelled) model_.drawOpaque(frame);
@@ -316,6 +326,8 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
     glUniform3fv(uniform(program, "pseudoRight"), 1, glm::value_ptr(right));
     glUniform3fv(uniform(program, "pseudoUp"), 1, glm::value_ptr(up));
     glUniform1i(uniform(program, "lighting"), settings.lighting ? 1 : 0);
+    glUniform1i(uniform(program, "occlusion"), grainOcclusion(settings) ? 1 : 0);
+    setLookUniforms(program.get(), look_);
     // Thesis §3.8: a white point light a little below the camera, so every view is lit.
     const glm::vec3 light = eye - up * (0.15f * camera.distance());
     glUniform3fv(uniform(program, "lightPosition"), 1, glm::value_ptr(light));
@@ -331,11 +343,69 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
     const bool quads = drawsQuads(settings.mode);
     if (quads) {
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, quadCorners_.get()); // kept by the bound vertex array
+        // Both triangles (0 1 2, 0 2 3) take their flat colour from corner 0, the one that shades.
+        glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
         glDrawElementsInstanced(GL_TRIANGLES, 6 * perCell, GL_UNSIGNED_SHORT, nullptr, GLsizei(instanceCount_));
+        glProvokingVertex(GL_LAST_VERTEX_CONVENTION);
     }
     else
         glDrawArraysInstanced(GL_POINTS, 0, perCell, GLsizei(instanceCount_));
     if (path_ == GrainPath::GpuInterpolated) gpuStore_.drawn();
+}
+
+// The key light's view of the casters: the opaque model parts (offset back a little, as
+// triangles seen edge-on would shadow themselves) and one point per grain, 1.5 cells wide,
+// so neighbouring grains close the surface. Glass casts nothing.
+void SceneRenderer::drawShadowMap(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
+                                  bool modelled) {
+    const sandcore::Int3 lower = scene.grid(sandcore::GridLevel::Lower).size();
+    const sandcore::Int3 upper = scene.grid(sandcore::GridLevel::Upper).size();
+    const sandcore::Int3 origin = scene.gridOrigin(sandcore::GridLevel::Upper);
+    WorldBox box{glm::vec3(0.0f), glm::max(glm::vec3(float(lower.x), float(lower.y), float(lower.z)),
+                                            glm::vec3(float(origin.x + upper.x), float(origin.y + upper.y),
+                                                      float(origin.z + upper.z))) * settings.cellSize};
+    if (modelled) {
+        box.min = glm::min(box.min, model_.bounds().min);
+        box.max = glm::max(box.max, model_.bounds().max);
+    }
+    const glm::mat4 lightClip = shadowMap_.begin(box, settings.cellSize, look_);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    if (modelled) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1.5f, 2.0f);
+        model_.drawShadowCasters(glm::value_ptr(lightClip));
+        glDisable(GL_POLYGON_OFFSET_FILL);
+    }
+    const bool gpu = path_ == GrainPath::GpuInterpolated;
+    const GlProgram& program = gpu ? grainGpuProgram_ : grainProgram_;
+    glUseProgram(program.get());
+    const std::int64_t instances = gpu ? setGpuUniforms(scene, stepFraction, settings) : instanceCount_;
+    if (instances > 0) {
+        if (gpu) glUniform1i(uniform(program, "keySource"), 0); // no light, no occlusion: no key
+        setLookUniforms(program.get(), StudioLook{});           // reads no shadow map while drawing one
+        glUniformMatrix4fv(uniform(program, "viewProjection"), 1, GL_FALSE, glm::value_ptr(lightClip));
+        glUniform1i(uniform(program, "mode"), 0);
+        glUniform1f(uniform(program, "cellSize"), settings.cellSize);
+        glUniform1f(uniform(program, "pointSize"), std::max(1.0f, 1.5f * settings.cellSize * shadowMap_.texelsPerUnit()));
+        glUniform1i(uniform(program, "lighting"), 0);
+        glUniform1i(uniform(program, "occlusion"), 0);
+        glEnable(GL_PROGRAM_POINT_SIZE);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, patternOffsets_.get());
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, patternColors_.get());
+        glActiveTexture(GL_TEXTURE0);
+        if (gpu)
+            gpuStore_.bind(kGrainTexturesUnit, kColumnNormalsUnit);
+        else
+            glBindVertexArray(grainArray_.get());
+        glDrawArraysInstanced(GL_POINTS, 0, 1, GLsizei(instances)); // one sub-grain per grain
+    }
+    glBindVertexArray(0);
+    shadowMap_.end();
 }
 
 void SceneRenderer::drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection) {
@@ -349,6 +419,7 @@ void SceneRenderer::drawHull(const RenderSettings& settings, const OrbitCamera& 
     glUniform3fv(uniform(hullProgram_, "cameraPosition"), 1, glm::value_ptr(eye));
     const glm::vec3 glass = settings.blackBackground ? glm::vec3(0.70f, 0.82f, 0.95f) : glm::vec3(0.35f, 0.50f, 0.65f);
     glUniform3fv(uniform(hullProgram_, "glassColor"), 1, glm::value_ptr(glass));
+    setLookUniforms(hullProgram_.get(), look_);
     if (hullVertices_ > 0) {
         glUniform1f(uniform(hullProgram_, "baseAlpha"), 0.025f);
         glUniform1f(uniform(hullProgram_, "rimAlpha"), 0.10f);

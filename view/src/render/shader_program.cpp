@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 namespace sandglass {
@@ -26,8 +27,26 @@ std::string firstLine(const std::string& log) {
     return end == std::string::npos ? log : log.substr(0, end);
 }
 
+// A line `#include "name"` is replaced by the text of that file beside the shader, its own
+// includes replaced too (the shaders share look.glsl so that every surface is lit alike). GLSL
+// has no includes of its own.
+std::string withIncludes(const std::filesystem::path& file) {
+    std::istringstream in(readText(file));
+    std::string source, line;
+    while (std::getline(in, line)) {
+        constexpr std::string_view directive = "#include \"";
+        if (line.rfind(directive, 0) == 0) {
+            const auto end = line.find('"', directive.size());
+            source += withIncludes(file.parent_path() / line.substr(directive.size(), end - directive.size()));
+        } else
+            source += line;
+        source += '\n';
+    }
+    return source;
+}
+
 GLuint compile(GLenum stage, const std::filesystem::path& file) {
-    const std::string source = readText(file);
+    const std::string source = withIncludes(file);
     const GLuint shader = glCreateShader(stage);
     const char* text = source.c_str();
     glShaderSource(shader, 1, &text, nullptr);

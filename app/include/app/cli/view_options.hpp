@@ -15,10 +15,17 @@ namespace sandglass {
 /// Scene and display choices as typed on the command line.
 struct ViewOptions {
     SceneOptions scene;               ///< scene, model or shape, resolution, seed, threads
-    std::string mode = "points";      ///< points, sprites, billboards or pseudo
+    std::string mode;                 ///< points, sprites, billboards or pseudo; empty: the look's (pseudo, or points with --thesis-look)
     std::string palette = "desert";   ///< S12: desert, beach, white, volcanic or layers
     int grainsPerCell = 4;            ///< 1..32
-    bool light = false;               ///< lighting from estimated normals
+    bool light = false;               ///< --light: grains lit from estimated normals (the default unless --thesis-look)
+    bool unlit = false;               ///< --unlit: flat colours (the thesis's default)
+    std::string lights = "studio";    ///< studio (warm key, cool fill, sky) or thesis (white light near the camera)
+    bool thesisLook = false;          ///< start from the thesis's look: unlit points, thesis light, no studio elements
+    bool noOcclusion = false;         ///< --no-ao
+    bool noShadows = false;           ///< --no-shadows
+    bool noToneMapping = false;       ///< --no-tone-map
+    bool noEnvironment = false;       ///< --no-env
     std::string normals = "gradient"; ///< R12: gradient (occupancy gradient) or columns (the thesis's column heights)
     bool hideInner = false;           ///< skip inner grains
     bool black = false;               ///< black background
@@ -29,8 +36,9 @@ struct ViewOptions {
     float zoom = 1.0f;                ///< camera distance as a share of the distance that frames the scene
 };
 
-/// Adds the scene options and --mode --grains-per-cell --light --normals --no-inner --black --no-hull
-/// --size --steps --zoom to a subcommand.
+/// Adds the scene options and --mode --grains-per-cell --light --unlit --lights --thesis-look --no-ao
+/// --no-shadows --no-tone-map --no-env --normals --no-inner --black --no-hull --size --steps --zoom
+/// to a subcommand.
 void addViewOptions(CLI::App& command, ViewOptions& options);
 
 /// Application options from the typed ones; throws std::invalid_argument with one line on a bad value.

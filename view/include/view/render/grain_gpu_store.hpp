@@ -2,8 +2,8 @@
 #pragma once
 // SPEC V8: the grains as the GPU keeps them between frames, in buffer textures indexed by grain
 // id: its cell, grid, last move (cameFrom) and the step of that move (16 bytes, "place"); its
-// identity and colour (8 bytes) and jitter (16 bytes), changed only by edits; its gradient normal
-// (4 bytes, when lit by that method); per column the thesis's column normal (a 2D texture); and
+// identity and colour (8 bytes) and jitter (16 bytes), changed only by edits; its surface key
+// (4 bytes: gradient normal and occlusion level, when lit by that method or occluded); per column the thesis's column normal (a 2D texture); and
 // the list of visible (not inner) grain ids, the instances drawn when inner grains are hidden.
 // After a step only what changed goes up: the moved grains' places (taken from the upkeep's list,
 // not gathered again from the grain store), the changed entries of the visible list, the changed
@@ -142,14 +142,14 @@ private:
     enum class CellBitsChoice { ByRenderer, WhereTheyFit, Never };
     CellBitsChoice cellBitsChoice_ = CellBitsChoice::ByRenderer; // SANDGLASS_GPU_CELL_BITS unset, 1, 0
     std::int64_t grainCount_ = 0;
-    std::vector<std::uint32_t> packedByKey_;    // packNormal of each gradient key
+    std::vector<std::uint32_t> packedByKey_;    // packNormal of each surface key (the shader's table)
     std::vector<std::uint32_t> packedColumns_;  // column normals as uploaded, texel order
     std::vector<std::uint32_t> visible_;        // ids of the visible grains, as uploaded
     std::vector<std::uint32_t> slotOf_;         // per grain: its index in visible_, or kNotListed
     std::int64_t visibleBytes_ = 0;             // visible-list bytes written since the last upload
     // Without persistent mapping: the buffers' contents as sent, and what to send.
     std::vector<GrainPlace> places_;
-    std::vector<std::uint32_t> packedNormals_;
+    std::vector<std::uint32_t> packedNormals_;  // per grain: its surface key (gradient and occlusion), a texel of the normal table
     IndexRuns changedIds_;                      // places to send: the moved grains
     IndexRuns changedSlots_;                    // entries of visible_ to send
     IndexRuns changedNormals_;                  // gradient normals to send

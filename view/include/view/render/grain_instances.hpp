@@ -21,8 +21,9 @@ struct GrainInstance {
     std::uint32_t normal = 0;      ///< unit normal packed as signed 10:10:10:2 (GL_INT_2_10_10_10_REV)
     std::uint32_t identity = 0;    ///< stable grain identity: picks the sand pattern
     std::uint32_t color = 0;       ///< RGBA8 (R low byte); 0 = the pattern's sand colours
+    std::uint32_t occlusion = 0;   ///< sandcore::occlusionLevel of its occupied neighbours (0 without occlusion)
 };
-static_assert(sizeof(GrainInstance) == 24);
+static_assert(sizeof(GrainInstance) == 28);
 
 /// The colour grain `id` is drawn in, on either grain path (RGBA8, 0 = its pattern's sand colours):
 /// its own colour where it has one (painted, loaded), else under the layers palette (S12) the band
@@ -62,6 +63,8 @@ private:
     bool cacheValid_ = false;
     sandcore::NormalMethod cachedMethod_ = sandcore::NormalMethod::ColumnHeights;
     bool cachedWithNormals_ = false;
+    bool cachedWithOcclusion_ = false;
+    std::vector<std::uint8_t> occlusion_; // per grain: its occlusion level (when occluded)
 };
 
 } // namespace sandglass

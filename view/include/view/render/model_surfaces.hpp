@@ -7,6 +7,7 @@
 
 #include "scene/model_drawing.hpp"
 #include "view/render/gl_objects.hpp"
+#include "view/render/studio_look.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -22,6 +23,7 @@ struct ModelLight {
     glm::vec3 eye{0.0f};                   ///< camera position, world units
     glm::vec3 light{0.0f};                 ///< point light position, world units
     bool blackBackground = false;          ///< the glass tint reads on either background
+    const StudioLook* look = nullptr;      ///< the studio look (null: the thesis's)
 };
 
 class ModelSurfaces {
@@ -36,6 +38,10 @@ public:
 
     /// Opaque parts, depth test and writes on.
     void drawOpaque(const ModelLight& frame);
+    /// Draws the opaque parts into the bound shadow map (depth only) with the light's clip matrix.
+    void drawShadowCasters(const float* lightClip);
+    /// The box around every uploaded vertex (world units); empty: nothing uploaded.
+    const WorldBox& bounds() const { return bounds_; }
     /// Glass parts, blended over what is drawn, depth test on and writes off.
     void drawGlass(const ModelLight& frame);
     /// Sorts the glass for this eye if it moved since the last sort (drawGlass does it too).
@@ -61,6 +67,7 @@ private:
     std::vector<glm::vec3> glassTriangles_; // centroids, world units
     std::vector<std::uint32_t> order_;      // vertex indices, farthest triangle first
     glm::vec3 sortedFor_{1e30f};
+    WorldBox bounds_;
 };
 
 } // namespace sandglass

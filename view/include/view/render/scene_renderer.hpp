@@ -12,6 +12,7 @@
 #include "view/render/grain_instances.hpp"
 #include "view/render/model_surfaces.hpp"
 #include "view/render/render_settings.hpp"
+#include "view/render/studio_look.hpp"
 
 #include "sandcore/scene.hpp"
 #include "sandcore/surface_upkeep.hpp"
@@ -95,6 +96,8 @@ private:
     void drawGrains(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection,
                     float pixelScale);
     void drawHull(const RenderSettings& settings, const OrbitCamera& camera, const float* viewProjection);
+    /// Renders the key light's shadow map (look_.lightMatrix is set for the frame's shaders).
+    void drawShadowMap(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings, bool modelled);
     void uploadPatternColors(SandPalette palette); // S12: the pattern colours of a palette
 
     GlProgram grainProgram_, grainGpuProgram_, hullProgram_;
@@ -118,6 +121,8 @@ private:
     RenderSettings uploadedWith_;
     RenderStats stats_;
     GpuFrameTimer gpuTimer_;
+    StudioLook look_;      // this frame's lights and switches
+    ShadowMap shadowMap_;  // the key light's depth
     bool timeGpu_ = false;
 };
 
