@@ -152,7 +152,7 @@ TEST_CASE("render: the layers palette draws its colour bands on both grain paths
     std::vector<RgbImage> images; // the CPU path's, the GPU path's, the GPU path's after a change of palette
     for (GrainPath path : {GrainPath::CpuFullUpload, GrainPath::GpuInterpolated}) {
         CAPTURE(path == GrainPath::GpuInterpolated);
-        RenderSettings render;
+        RenderSettings render = thesisLook(); // unlit points: every pixel in its band's own colour
         render.palette = SandPalette::Layers;
         render.grainPath = path;
         std::optional<Application> app = testing::openApplication(defaultHourglass(render, "sandglass layers test"), "layers palette");
@@ -172,7 +172,7 @@ TEST_CASE("render: the layers palette draws its colour bands on both grain paths
         CHECK(shown >= 2);
     }
     // Desert sand first, then layers: the grains already on the GPU take the new colours.
-    RenderSettings render;
+    RenderSettings render = thesisLook();
     render.grainPath = GrainPath::GpuInterpolated;
     std::optional<Application> app = testing::openApplication(defaultHourglass(render, "sandglass layers test"), "layers palette");
     if (!app) return;
