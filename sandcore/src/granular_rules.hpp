@@ -258,8 +258,10 @@ private:
 
     GranularOutcome fall(const GranularContext& on, const GrainCell& at, CellValue grain, bool mayBeMoving) const;
     GranularOutcome slide(const GranularContext& on, const GrainCell& at, CellValue grain, bool onVessel) const;
+    int deflected(const GranularContext& on, const GrainCell& landing) const;
 
     std::array<Offset, kOffsets> offsets_{};
+    std::uint64_t divesMask_ = 0; // the slides into the 8 columns next to the grain, bit k for offset k (slide's dives)
     // blockedBy_[r][taken]: the slides (bit k for offset k) whose path crosses one of the cells
     // `taken` (7 bits) of row r of the window, so a window's blocked slides are 7 look-ups.
     RowBlockTable blockedBy_{};

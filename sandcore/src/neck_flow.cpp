@@ -11,6 +11,8 @@ NeckFlow::NeckFlow(std::int64_t neckCells, double gravity) {
     diameter_ = 2.0 * std::sqrt(area_ / M_PI);
     rate_ = kBeverlooC * std::sqrt(gravity) * std::pow(std::max(diameter_ - kBeverlooK, 0.0), 2.5);
     rateQ32_ = std::uint64_t(std::llround(rate_ * 4294967296.0));
+    const double exitCellsPerStep = area_ > 0 ? std::max(1.0, kStreamCells * rate_ / area_) : 1.0;
+    exitSpeed_ = std::uint32_t(std::lround(exitCellsPerStep * double(kFlowSpeed)));
 }
 
 std::int64_t NeckFlow::allowance(std::uint64_t step) const {
