@@ -112,6 +112,8 @@ GranularStep::GranularStep(const SweepContext& context, const GranularSweepState
     recordMove(context_, log, {std::uint32_t(cells[toCell]), toCell, outcome.cameFrom, context_.level});
     if (to.y > 0 || bottomIsOutlet_) awake_.wakeAt(to.x, to.y, to.z); // it may move on next step
     wakeFallsAsleepAround(awake_, motion_, to.x, to.y, to.z);
+    // A dive or a glance ends under a grain: when that one sleeps in its fall, its EMPTY cell below is gone.
+    if (to.y + 1 < sizeY_) wakeFallAsleepAt(awake_, motion_, to.x, to.y + 1, to.z);
     // The cell it left is free: the layers above may use it in this step; its own layer in the
     // next (endGranularTurn).
     log.left.push_back({x, z});

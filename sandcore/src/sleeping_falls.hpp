@@ -24,6 +24,12 @@ struct MotionWord {
     std::uint64_t carriedEarly = 0;
 };
 
+/// Wakes the grain in (x, y, z) when it sleeps in its fall (in motion, its occupied bit clear).
+inline void wakeFallAsleepAt(AwakeCells& awake, const MotionWord* motion, int x, int y, int z) {
+    const std::size_t word = awake.wordOf(awake.rowOf(y, z), x);
+    if ((motion[word].inMotion & ~awake.words()[word].occupied) >> (x & 63) & 1) awake.wakeAt(x, y, z);
+}
+
 /// Wakes the grains asleep in their fall (in motion, their occupied bit clear) in the 8 cells
 /// around (x, y, z), which a grain just entered: from the next step it may dive under one of them
 /// (GranularRules::slide), which the visits a sleeping gatherer skips would have seen. A gatherer
@@ -33,8 +39,7 @@ inline void wakeFallsAsleepAround(AwakeCells& awake, const MotionWord* motion, i
     const Int3 size = awake.size();
     for (int zz = std::max(z - 1, 0); zz <= std::min(z + 1, size.z - 1); ++zz)
         for (int xx = std::max(x - 1, 0); xx <= std::min(x + 1, size.x - 1); ++xx) {
-            const std::size_t word = awake.wordOf(awake.rowOf(y, zz), xx);
-            if ((motion[word].inMotion & ~awake.words()[word].occupied) >> (xx & 63) & 1) awake.wakeAt(xx, y, zz);
+            wakeFallAsleepAt(awake, motion, xx, y, zz);
         }
 }
 
