@@ -9,6 +9,10 @@
 //   granular_probe cost-in-turns HEIGHT THREADS  the same, both drains stepped in turns
 //   granular_probe cost-kinds HEIGHT THREADS LEVEL...  drains in turns given one by one: c or g
 //                                             (the rules)
+//   granular_probe report DIR [quick]         the bench report's granular section alone (the full
+//                                             report takes long): its files written into DIR, and
+//                                             its section of DIR/README.md (from "## Granular
+//                                             physics" to the line "Checks: ...") replaced
 #include "bench/granular_report.hpp"
 #include "sandcore/pile_slopes.hpp"
 #include "sandcore/procedural_shapes.hpp"
@@ -18,7 +22,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -163,6 +171,34 @@ int costKinds(int height, int threads, int argc, char** argv) {
     return 0;
 }
 
+// The granular section of the bench report (sandbench::granularSection) into `dir`, as
+// `sandglass bench --out DIR` writes it, spliced into DIR/README.md when that holds the section.
+int report(const std::string& dir, bool quick) {
+    sandbench::ReportOptions options;
+    options.quick = quick;
+    options.outDir = dir;
+    std::filesystem::create_directories(options.outDir);
+    const auto start = std::chrono::steady_clock::now();
+    const sandbench::GranularSection section = sandbench::granularSection(options, std::cerr);
+    const std::filesystem::path readme = options.outDir / "README.md";
+    std::ifstream in(readme);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string markdown = text.str();
+    const std::size_t from = markdown.find("## Granular physics");
+    const std::size_t to = from == std::string::npos ? from : markdown.find("\nChecks: ", from);
+    if (from != std::string::npos && to != std::string::npos && from < to) {
+        markdown.replace(from, to + 1 - from, section.markdown);
+        std::ofstream(readme) << markdown;
+        std::printf("replaced the granular section of %s\n", readme.string().c_str());
+    } else {
+        std::ofstream(options.outDir / "granular.md") << section.markdown;
+        std::printf("no granular section in %s: wrote granular.md\n", readme.string().c_str());
+    }
+    std::printf("%s in %.1fs\n", section.passed ? "checks passed" : "some checks FAILED", seconds(start));
+    return section.passed ? 0 : 1;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -173,6 +209,7 @@ int main(int argc, char** argv) {
     if (what == "cost") return cost(int(arg(2, 248)), int(arg(3, 2)));
     if (what == "cost-kinds") return costKinds(int(arg(2, 248)), int(arg(3, 2)), argc, argv);
     if (what == "cost-in-turns") return costInTurns(int(arg(2, 248)), int(arg(3, 2)));
-    std::fprintf(stderr, "usage: granular_probe pour|drain|cost|cost-in-turns|cost-kinds ...\n");
+    if (what == "report" && argc > 2) return report(argv[2], argc > 3 && std::string(argv[3]) == "quick");
+    std::fprintf(stderr, "usage: granular_probe pour|drain|cost|cost-in-turns|cost-kinds|report ...\n");
     return 2;
 }

@@ -45,6 +45,36 @@ std::vector<double> windowedDischargeRates(const DischargeSeries& series, int wi
     return rates;
 }
 
+MiddleDischarge middleDischarge(const DischargeSeries& series, int parts, double fromShare, double toShare) {
+    MiddleDischarge middle;
+    if (series.grainsAtStart <= 0 || parts < 1) return middle;
+    // first: the step after the one that reached fromShare; end: the one that reaches toShare, included.
+    std::size_t first = series.grainsPerStep.size(), end = series.grainsPerStep.size();
+    std::int64_t drained = 0;
+    for (std::size_t i = 0; i < series.grainsPerStep.size(); ++i) {
+        drained += series.grainsPerStep[i];
+        const double share = double(drained) / double(series.grainsAtStart);
+        if (first == series.grainsPerStep.size() && share >= fromShare) first = i + 1;
+        if (share >= toShare) {
+            end = i + 1;
+            break;
+        }
+    }
+    if (first >= end || end - first < std::size_t(parts)) return middle;
+    middle.steps = std::int64_t(end - first);
+    std::int64_t grains = 0;
+    for (int part = 0; part < parts; ++part) {
+        const std::size_t from = first + (end - first) * std::size_t(part) / std::size_t(parts);
+        const std::size_t to = first + (end - first) * std::size_t(part + 1) / std::size_t(parts);
+        std::int64_t partGrains = 0;
+        for (std::size_t i = from; i < to; ++i) partGrains += series.grainsPerStep[i];
+        grains += partGrains;
+        middle.partRates.push_back(double(partGrains) / double(to - from));
+    }
+    middle.rate = double(grains) / double(middle.steps);
+    return middle;
+}
+
 double coefficientOfVariation(const std::vector<double>& values) {
     if (values.size() < 2) return 0.0;
     const double mean = std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());

@@ -16,6 +16,9 @@ namespace {
 // Fastest fall per step, cells: far below what a MoveCode holds, far above any grid's height.
 constexpr std::uint32_t kMaxFallSpeed = 4096u * kOneCell;
 
+// Sets the random draws of deflections apart from those of slides (same step, grid and cell).
+constexpr std::uint64_t kDeflectStream = 0x5bd1e995u;
+
 } // namespace
 
 // Measured: for each slope T and diagonal stiffening s (thresholds T (1 + s sin^2 2phi) |e| for a
@@ -113,6 +116,7 @@ GranularRules::GranularRules(const PhysicsSettings& physics) {
                 if (cx != 0 || cz != 0) o.pathMask |= std::uint64_t{1} << ((cz + kGranularReach) * kWindow + cx + kGranularReach);
             }
             maxDrop_ = std::max(maxDrop_, int((o.thresholdQ8 + 255) >> 8));
+            if (std::max(std::abs(dx), std::abs(dz)) == 1) divesMask_ |= std::uint64_t{1} << (n - 1);
         }
     wholeAtLeast_.assign(std::size_t(maxDrop_) + 2, 0);
     wholeExactly_.assign(std::size_t(maxDrop_) + 2, 0);
@@ -265,12 +269,44 @@ GranularOutcome GranularRules::fall(const GranularContext& on, const GrainCell& 
     } else { // contact: the speed of a grain it lands on (0 when resting), or 0 on a wall
         // A grain it lands on may be a gatherer that sleeps (grid_sweep.hpp): read up to date.
         const CellValue under = grid[from - std::uint32_t(fallen + 1) * layer];
-        after = {under >= 0 ? std::min(speed, caughtUp(falls[std::size_t(under)], on.step).speed) : 0, 0};
+        const std::uint32_t underSpeed = under >= 0 ? caughtUp(falls[std::size_t(under)], on.step).speed : 0;
+        // Catching up with a slower grain, it glances off it instead, when it can: the stream
+        // spreads rather than piling into a slow, dense column (deflected).
+        if (under >= 0 && underSpeed > 0 && underSpeed < speed && landedY >= 1)
+            if (const int to = deflected(on, {at.x, landedY, at.z, from - std::uint32_t(fallen) * layer}); to >= 0) {
+                falls[id] = {speed, 0};
+                const Int3 cell = grid.coordinate(std::uint32_t(to));
+                GranularOutcome outcome = moveGrain(grid, grain, from, std::uint32_t(to), {at.x - cell.x, at.y - cell.y, at.z - cell.z}, cell);
+                outcome.inMotion = true;
+                return outcome;
+            }
+        after = {under >= 0 ? std::min(speed, underSpeed) : 0, 0};
     }
     falls[id] = after;
     GranularOutcome outcome = moveGrain(grid, grain, from, from - std::uint32_t(fallen) * layer, {0, fallen, 0}, {at.x, landedY, at.z});
     outcome.inMotion = (after.speed | after.fraction) != 0;
     return outcome;
+}
+
+// The cells beside the grain a falling grain has caught up with, one layer under the cell where it
+// would stop (`landing`, its layer >= 1): an EMPTY one, passing beside that grain (the cell beside
+// the landing cell not the vessel), drawn by a counter hash; -1 when there is none. Read as the
+// cells are: they lie in the layers below the falling grain's, rows z - 1..z + 1 (R6).
+int GranularRules::deflected(const GranularContext& on, const GrainCell& landing) const {
+    const CellGrid& grid = on.grid;
+    const Int3 size = grid.size();
+    const std::uint32_t layer = grid.layerSize();
+    std::array<std::uint32_t, 8> free{};
+    std::uint32_t count = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int bx = landing.x + dx, bz = landing.z + dz;
+            if ((dx == 0 && dz == 0) || bx < 0 || bx >= size.x || bz < 0 || bz >= size.z) continue;
+            const std::uint32_t beside = grid.index(bx, landing.y, bz);
+            if (grid[beside] != kInvalid && grid[beside - layer] == kEmpty) free[count++] = beside - layer;
+        }
+    if (count == 0) return -1;
+    return int(free[pickBelow(counterRandomFromKey(on.stepKey, on.stream ^ kDeflectStream, landing.index), count)]);
 }
 
 std::uint64_t GranularRules::carriedSlides(const ThresholdDither& dither, int x, int z) const {
@@ -287,17 +323,24 @@ GranularOutcome GranularRules::slide(const GranularContext& on, const GrainCell&
     // The 7x7 windows of EMPTY cells in the grain's layer (paths) and the layers below (targets,
     // columns) as bit masks, bit (dz + 3) * 7 + (dx + 3); cells outside the grid count as taken.
     auto emptyWindow = [&](int dy) { return on.empty.window<kGranularReach>(x, y + dy, z); };
-    // Every path starts in one of the 8 cells around the grain: when all are taken (inside the
-    // bulk), nothing can slide and the layer below need not be read.
-    const std::uint64_t emptyHere = emptyWindow(0);
-    constexpr std::uint64_t kAround = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x14} << 21) | (std::uint64_t{0x1c} << 28);
-    if (!(emptyHere & kAround)) return {};
+    // Every slide ends over an EMPTY cell of the layer below: when none is there, nothing can move.
     const std::uint64_t emptyBelow = emptyWindow(-1);
-    // The slides open at the grain's level (no taken cell on the path, 7 look-ups) that end over an
-    // EMPTY cell, as bit k for offset k (the window's centre has none: bits above it shift down).
+    // Window bits to slide bits (bit k for offset k: the window's centre has none, bits above it shift down).
     constexpr std::uint64_t kBelowCentre = (std::uint64_t{1} << (kOffsets / 2)) - 1;
-    const std::uint64_t blocked = blockedIn(blockedBy_, emptyHere);
-    std::uint64_t open = ((emptyBelow & kBelowCentre) | ((emptyBelow >> 1) & ~kBelowCentre)) & ~blocked;
+    const std::uint64_t targets = (emptyBelow & kBelowCentre) | ((emptyBelow >> 1) & ~kBelowCentre);
+    if (!targets) return {};
+    // The slides open at the grain's level: no taken cell on the path (7 look-ups), except that a
+    // slide into one of the 8 columns next to the grain (a *dive*) passes under a grain in its
+    // path cell: that grain lies over the EMPTY target, so it carries nothing and is falling or
+    // about to; only the vessel blocks a dive. So a grain beside a falling column or a void takes
+    // its place, and sand flows sideways into a draining column, not only from its top.
+    const std::uint64_t emptyHere = emptyWindow(0);
+    std::uint64_t blocked = blockedIn(blockedBy_, emptyHere);
+    for (std::uint64_t dives = blocked & targets & divesMask_; dives; dives &= dives - 1) {
+        const Offset& o = offsets_[std::size_t(std::countr_zero(dives))];
+        if (grid[std::uint32_t(std::int64_t(from) + o.dz * row + o.dx)] != kInvalid) blocked &= ~(dives & (~dives + 1));
+    }
+    std::uint64_t open = targets & ~blocked;
     // On the glass (smoother than the sand) one free cell down is enough; on sand the column under
     // the path's end must be `need` deep, need = max(1, floor((T|e| + dither) / 256)) with a fixed
     // dither per column and offset (8 bits each, 8 offsets to a word). The slides that need d cells

@@ -5,10 +5,14 @@
 // 1. fall: if the cell below is EMPTY the grain falls with a 16.16 fixed-point speed that grows
 //    by g each step, as far as its speed carries it this step, checking every cell of the path
 //    (a one-cell obstacle stops it at any speed, as The Powder Toy does). On contact it takes the
-//    speed of a moving grain it lands on, or stops. A grain resting on a moving grain moves with
+//    speed of a moving grain it lands on, or stops; reaching a slower grain in motion, it glances
+//    off it instead when it can, into an EMPTY cell beside it a layer lower, keeping its speed
+//    (deflected), so a stream spreads instead of jamming. A grain resting on a moving grain moves with
 //    it: it takes its speed and gathers up to a cell of progress, so a column flows as one.
 // 2. slide: a grain resting on something at rest may move to the cell one layer down in any
 //    column up to 3 cells away (48 offsets e) when the sideways path at its own level is clear
+//    (for one of the 8 columns next to it, a dive, only the vessel blocks the path: a grain there
+//    lies over the EMPTY target and carries nothing)
 //    and the column there is at least `need` cells deep, need = floor(T|e| + u): T a calibrated
 //    slope and u in [0, 1) fixed per column and offset (ThresholdDither: blue noise, picked by
 //    the seed) that never changes with the step, so a grain that wakes up meets the same
@@ -24,7 +28,8 @@
 // What a grain reads, so the sweep can keep threads apart and wake exactly the grains whose
 // options a change can widen (R5, R6): its own column downwards and the speed of the grain
 // below it; cells of its own layer within 3 columns (the paths); and the 7x7 columns of the
-// layers up to maxDrop() below it.
+// layers up to maxDrop() below it. A falling grain that reaches a slower one also reads the 8
+// cells beside the cell it would stop in and those under them, in the step it moves.
 //
 // The paths read the grain's layer as it was when the layer's turn in the sweep began: a cell
 // that a grain of the same layer leaves in this step opens paths from the next step on (the
@@ -258,8 +263,10 @@ private:
 
     GranularOutcome fall(const GranularContext& on, const GrainCell& at, CellValue grain, bool mayBeMoving) const;
     GranularOutcome slide(const GranularContext& on, const GrainCell& at, CellValue grain, bool onVessel) const;
+    int deflected(const GranularContext& on, const GrainCell& landing) const;
 
     std::array<Offset, kOffsets> offsets_{};
+    std::uint64_t divesMask_ = 0; // the slides into the 8 columns next to the grain, bit k for offset k (slide's dives)
     // blockedBy_[r][taken]: the slides (bit k for offset k) whose path crosses one of the cells
     // `taken` (7 bits) of row r of the window, so a window's blocked slides are 7 look-ups.
     RowBlockTable blockedBy_{};

@@ -113,6 +113,9 @@ GranularStep::GranularStep(const SweepContext& context, const GranularSweepState
     empty_.setEmpty(to.x, to.y, to.z, false); // the cell it entered; the one it left: at the turn's end
     recordMove(context_, log, {std::uint32_t(cells[toCell]), toCell, outcome.cameFrom, context_.level});
     if (to.y > 0 || bottomIsOutlet_) awake_.wakeAt(to.x, to.y, to.z); // it may move on next step
+    wakeFallsAsleepAround(awake_, motion_, to.x, to.y, to.z);
+    // A dive or a glance ends under a grain: when that one sleeps in its fall, its EMPTY cell below is gone.
+    if (to.y + 1 < sizeY_) wakeFallAsleepAt(awake_, motion_, to.x, to.y + 1, to.z);
     // The cell it left is free: the layers above may use it in this step; its own layer in the
     // next (endGranularTurn).
     log.left.push_back({x, z});
@@ -130,6 +133,12 @@ GranularStep::GranularStep(const SweepContext& context, const GranularSweepState
 inline std::uint64_t GranularStep::fallAsleepGathering(StripLog& log, const VisitedCell& cell, std::uint32_t from) const {
     if (!context_.sleeping) return 0;
     if (cells_[from - on_.grid.layerSize()] != kEmpty) return 0; // rides a moving grain
+    if (bottomIsOutlet_ && y_ <= 1) return 0; // over the outlet row: the transition may set its speed
+    // A grain next to it could dive under it (GranularRules::slide) while it sleeps: it stays
+    // awake then. A grain that comes next to it later wakes it (wakeFallsAsleepAround).
+    for (int z = std::max(cell.z - 1, 0); z <= std::min(cell.z + 1, sizeZ_ - 1); ++z)
+        for (int x = std::max(cell.x - 1, 0); x <= std::min(cell.x + 1, sizeX_ - 1); ++x)
+            if ((x != cell.x || z != cell.z) && cells_[on_.grid.index(x, y_, z)] >= 0) return 0;
     FallState& own = on_.falls[std::size_t(cells_[from])];
     const int gathering = rules_.stepsOnlyGathering(own, FallTimers::kLongestSleep);
     if (gathering == 0) return 0; // it moves in the next step

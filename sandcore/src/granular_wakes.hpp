@@ -51,6 +51,13 @@ struct GranularWakes {
 private:
     static constexpr int kReach = kGranularReach, kWindow = 2 * kGranularReach + 1;
     static constexpr std::uint64_t kRowMask = (std::uint64_t{1} << kWindow) - 1;
+    /// The 8 cells around a window's centre, window bits.
+    static constexpr std::uint64_t kNextTo = (std::uint64_t{0x1c} << 14) | (std::uint64_t{0x14} << 21) | (std::uint64_t{0x1c} << 28);
+
+    /// Wakes the grains next to (x, y, z), whose dives under its grain may have opened.
+    void divesUnder(int x, int y, int z) const {
+        if (const std::uint64_t sleeping = kNextTo & sleepingGrainsAround(x, y, z)) wakeWindow(x, y, z, sleeping);
+    }
 
     void wakeSleepingGrainsAround(int x, int y, int z, int layersAbove, std::uint64_t sleeping) const;
     std::uint64_t deepEnoughForSlidesInto(std::uint64_t woken, int x, int y, int z, int layersAbove) const;
@@ -86,6 +93,9 @@ inline void GranularWakes::layersAbove(int x, int y, int z) const {
             // in its fall, whose woken grain wakes the one above it itself), never set on the
             // vessel but where an edit left it stale (a cell woken so is visited and left).
             if (layer == y + 1) awake.wakeIfOccupied(x, layer, z);
+            // A grain there lies over EMPTY cells down to (x, y, z): the grains next to it may
+            // dive under it (GranularRules::slide), the deeper the column the more of them.
+            if (layout.open(grid.index(x, layer, z))) divesUnder(x, layer, z);
             break;
         }
         grainsAround(x, layer, z, layer - y);

@@ -50,6 +50,7 @@ void GridSweep::grainEntered(int x, int y, int z) {
         // EMPTY cell below.
         if (y - 1 >= 1) wakeIfInMotion(x, y - 1, z);
         if (y + 1 < size_.y) wakeIfInMotion(x, y + 1, z);
+        wakeFallsAsleepAround(awake_, motion_.data(), x, y, z); // it may dive under one of them
     }
     if (y > 0 || bottomIsOutlet_) wakeAt(x, y, z);
 }

@@ -13,6 +13,8 @@ NeckFlow::NeckFlow(std::int64_t neckCells, double gravity) {
     const double narrowestArea = M_PI * kNarrowestLawDiameter * kNarrowestLawDiameter / 4.0;
     rate_ = diameter_ >= kNarrowestLawDiameter ? law(diameter_) : area_ * law(kNarrowestLawDiameter) / narrowestArea;
     rateQ32_ = std::uint64_t(std::llround(rate_ * 4294967296.0));
+    const double exitCellsPerStep = area_ > 0 ? std::max(1.0, kStreamCells * rate_ / area_) : 1.0;
+    exitSpeed_ = std::uint32_t(std::lround(exitCellsPerStep * double(kFlowSpeed)));
 }
 
 std::int64_t NeckFlow::allowance(std::uint64_t step) const {

@@ -9,6 +9,12 @@
 // & van de Velde 1961; Mankoc et al. 2007 fit C = 0.58, k = 1.5 grain diameters), a cell being one
 // grain (d = 1, rho = 1 grain per cell). The count is floor(n Q) - floor((n - 1) Q) at step n, so
 // the rate is exact and deterministic; grains that are not let through wait in the neck row.
+//
+// The cells must carry that flow on both sides of the neck (docs/engine.md, Discharge): above
+// it, the grain over an emptied neck cell follows at the flow's speed (Scene::drawIntoNeck) and
+// the grains beside a draining column dive into it (GranularRules::slide); below it, the grains
+// leave at exitSpeed(), fast enough that the stream under the neck is sparse, and a grain that
+// catches up with a slower one glances off it (GranularRules::fall), so the stream spreads.
 
 #include "sandcore/cell_grid.hpp"
 
@@ -37,11 +43,18 @@ public:
     double area() const { return area_; }         ///< open cells of the neck row
     double diameter() const { return diameter_; } ///< 2 sqrt(area / pi), cells
     double rate() const { return rate_; }         ///< grains per step: C sqrt(g) (D - k)^2.5, see kNarrowestLawDiameter
+    /// Speed of the grains let through, 16.16 cells per step: at least a cell a step, and enough
+    /// that the stream under the neck carries rate() with at most one cell in kStreamCells holding
+    /// a grain (rate() = A v / kStreamCells for the neck's area A). In a denser stream the grains
+    /// meet, take each other's speed and jam into a slow column that stands on the heap below.
+    std::uint32_t exitSpeed() const { return exitSpeed_; }
+    static constexpr double kStreamCells = 4.0;
     /// Grains allowed through at step `step` (>= 1).
     std::int64_t allowance(std::uint64_t step) const;
 
 private:
     double area_ = 0, diameter_ = 0, rate_ = 0;
+    std::uint32_t exitSpeed_ = kFlowSpeed;
     std::uint64_t rateQ32_ = 0; // rate in 32.32 fixed point: the allowance uses integers only
 };
 

@@ -329,11 +329,13 @@ void Scene::transitionGranular() {
         upper_[cell] = kEmpty;
         grains_.level[grain] = GridLevel::Lower;
         grains_.place[grain].cell = below;
+        if (neckFlow_) fall.speed = std::max(fall.speed, neckFlow_->exitSpeed()); // it leaves the neck at the stream's speed
         grains_.fall[kLowerGrid][grain] = fall; // its state goes with it into the lower grid's array
         if (fall.speed | fall.fraction) lowerSweep_->markInMotion(c.x, lowerTop, c.z);
         listTransition(std::uint32_t(grain), below);
         lowerSweep_->grainEntered(c.x, lowerTop, c.z);
         upperSweep_->wakeAroundEmptied(upper_, c.x, 0, c.z);
+        if (neckFlow_) drawIntoNeck(c.x, c.z);
     }
     moveListedIntoLowerGrid();
     const auto moved = std::int64_t(passing);
@@ -343,6 +345,21 @@ void Scene::transitionGranular() {
     counters_.visitedLastStep += visited;
     // The grains held back, riding or stopped above a full cell changed their fall without a move.
     counters_.speedChangesLastStep += std::int64_t(ready.size() - passing) + riding + stopped;
+}
+
+// The grain right above a neck cell the transition emptied follows into it in the next step, at
+// the flow's speed at least, as if it had ridden the grain that passed: the neck, not gravity
+// from rest (a cell in sqrt(2/g) steps), sets how fast the sand above it moves. It never sleeps
+// in its fall (GranularStep::fallAsleepGathering, GranularRules::ride), so its state is its own.
+void Scene::drawIntoNeck(int x, int z) {
+    if (upper_.size().y < 2) return;
+    const CellValue above = upper_.at(x, 1, z);
+    if (above < 0) return;
+    FallState& fall = grains_.fall[kUpperGrid][std::size_t(above)];
+    fall.speed = std::max(fall.speed, NeckFlow::kFlowSpeed);
+    fall.fraction = std::uint16_t(kOneCell - 1);
+    upperSweep_->markInMotion(x, 1, z);
+    upperSweep_->wakeAt(x, 1, z);
 }
 
 // A grain the transition passed into the lower grid's top row (its record says so already).

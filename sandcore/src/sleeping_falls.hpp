@@ -6,6 +6,7 @@
 #include "awake_cells.hpp"
 #include "sweep_context.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -22,6 +23,25 @@ struct MotionWord {
     std::uint64_t inMotion = 0;
     std::uint64_t carriedEarly = 0;
 };
+
+/// Wakes the grain in (x, y, z) when it sleeps in its fall (in motion, its occupied bit clear).
+inline void wakeFallAsleepAt(AwakeCells& awake, const MotionWord* motion, int x, int y, int z) {
+    const std::size_t word = awake.wordOf(awake.rowOf(y, z), x);
+    if ((motion[word].inMotion & ~awake.words()[word].occupied) >> (x & 63) & 1) awake.wakeAt(x, y, z);
+}
+
+/// Wakes the grains asleep in their fall (in motion, their occupied bit clear) in the 8 cells
+/// around (x, y, z), which a grain just entered: from the next step it may dive under one of them
+/// (GranularRules::slide), which the visits a sleeping gatherer skips would have seen. A gatherer
+/// falls asleep only with none of those cells holding a grain (GranularStep), so this is every way
+/// a diver can come next to one.
+inline void wakeFallsAsleepAround(AwakeCells& awake, const MotionWord* motion, int x, int y, int z) {
+    const Int3 size = awake.size();
+    for (int zz = std::max(z - 1, 0); zz <= std::min(z + 1, size.z - 1); ++zz)
+        for (int xx = std::max(x - 1, 0); xx <= std::min(x + 1, size.x - 1); ++xx) {
+            wakeFallAsleepAt(awake, motion, xx, y, zz);
+        }
+}
 
 /// The timers of the gatherers and riders asleep in their fall: the cells to wake at step s lie
 /// in slot s % kSlots, woken as the sweep of step s begins, before any visit.

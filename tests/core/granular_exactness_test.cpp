@@ -122,8 +122,9 @@ TEST_CASE("granular: the upper bulb empties to the last grain, since grains on t
     // in the upper grid. (Some seeds pile this small lower bulb up into the neck either way, as
     // classic does: 5 grains stay with its rules. Since the granular sweep turns its order with
     // the step, seeds 1, 2, 5 and 7 did so: their lower pile reached the neck row. Since the
-    // thresholds' dither is blue noise, seeds 3 and 12 of 1-12 do.)
-    for (std::uint64_t seed : {4u, 6u, 7u}) {
+    // thresholds' dither is blue noise, seeds 3 and 12 of 1-12 did; since grains dive beside
+    // falling ones and falling grains glance off slower ones, seed 7 of 1-12 does.)
+    for (std::uint64_t seed : {4u, 6u, 8u}) {
         Scene scene = granularHourglass(seed, 32, 2.5f, 0.02f);
         const std::int64_t grains = scene.grainCount();
         REQUIRE(grains > 1000);
@@ -197,11 +198,11 @@ TEST_CASE("granular: recorded state hashes (classic's stay in determinism_test.c
     // say why in the commit. Classic's recorded hashes live in test_determinism.cpp.
     Scene hourglass = granularHourglass(7);
     for (int i = 0; i < 300; ++i) hourglass.step();
-    CHECK(hourglass.stateHash() == 0x60573abf74c0cc85ull);
+    CHECK(hourglass.stateHash() == 0x7e7c107b113238efull);
     Scene sculpture = granularSculpture(7);
     sculpture.setThreads(2);
     for (int i = 0; i < 100; ++i) sculpture.step();
-    CHECK(sculpture.stateHash() == 0xff33c3eb371c1916ull);
+    CHECK(sculpture.stateHash() == 0xd8727426b2864f32ull);
 }
 
 TEST_CASE("granular: a slab wider than a word of bits collapses alike on 1 and 3 threads and in a full sweep, "
@@ -224,10 +225,11 @@ TEST_CASE("granular: a slab wider than a word of bits collapses alike on 1 and 3
     // was first the one the rules reached when they read the cells themselves (the build before
     // the bits); since a layer's paths read it as its turn began (granular_rules.hpp), it is the
     // one recorded then, and since the thresholds were calibrated for a round cone at every angle,
-    // and again since their dither is blue noise, the one recorded then (every read of the bits
-    // is compared with the cells in empty_cell_bits_test.cpp), and since a grain over the seam
-    // rides the falling grain under it, the one recorded then.
-    CHECK(one.stateHash() == 0x6e69a572c1cc9529ull);
+    // and again since their dither is blue noise, and again since grains dive beside falling ones,
+    // falling grains glance off slower ones and a grain over the seam rides the falling grain
+    // under it, the one recorded then (every read of the bits is compared with the cells in
+    // empty_cell_bits_test.cpp).
+    CHECK(one.stateHash() == 0xf0f43b796ecc2cd2ull);
 }
 
 TEST_CASE("granular and classic differ, and switching the level mid-run takes effect") {

@@ -25,6 +25,16 @@ DischargeSeries recordDischarge(sandcore::Scene& scene, std::int64_t maxSteps);
 std::vector<double> windowedDischargeRates(const DischargeSeries& series, int window, double fromShare,
                                            double toShare);
 
+/// The discharge over the middle of a drain: the steps from the first at whose end a share
+/// fromShare of the upper grid's sand has passed to the first at whose end toShare has, cut into
+/// `parts` runs of steps as equal as whole steps allow, each run's grains per step.
+struct MiddleDischarge {
+    double rate = 0;                ///< grains per step over all those steps
+    std::vector<double> partRates;  ///< grains per step of each part
+    std::int64_t steps = 0;         ///< steps in the middle
+};
+MiddleDischarge middleDischarge(const DischargeSeries& series, int parts, double fromShare, double toShare);
+
 /// Coefficient of variation (standard deviation / mean) of a series; 0 for fewer than 2 values.
 double coefficientOfVariation(const std::vector<double>& values);
 

@@ -178,6 +178,7 @@ private:
     void markEverythingAwake();
     void configurePhysics();
     void transitionGranular();
+    void drawIntoNeck(int x, int z); // the grain above an emptied neck cell follows at the flow speed
     void listTransition(std::uint32_t grain, std::uint32_t lowerCell);
     void moveListedIntoLowerGrid();
     std::int64_t markGrainsInMotion(); // returns how many grains are in motion
