@@ -212,17 +212,20 @@ bool Scene::pushOut(std::uint32_t cell, Int3 ahead) {
     PushSearch& search = *pushSearch_;
     const std::array<Int3, 6> order = searchOrder(ahead);
     const std::uint32_t stamp = search.nextStamp();
+    // Each direction as a step of the cell index, so a visit costs no division.
+    std::array<std::int64_t, 6> indexStep{};
+    for (std::size_t d = 0; d < order.size(); ++d)
+        indexStep[d] = order[d].x + std::int64_t(order[d].z) * lower_.size().x + std::int64_t(order[d].y) * lower_.layerSize();
     search.queue.clear();
-    search.queue.push_back(cell);
+    search.queue.push_back({cell, lower_.coordinate(cell)});
     search.stamp[cell] = stamp;
     std::int64_t found = -1;
     for (std::size_t head = 0; head < search.queue.size() && found < 0; ++head) {
-        const std::uint32_t n = search.queue[head];
-        const Int3 c = lower_.coordinate(n);
+        const auto [n, c] = search.queue[head];
         for (std::size_t d = 0; d < order.size(); ++d) {
             const Int3 m = plus(c, order[d]);
             if (!lower_.contains(m.x, m.y, m.z)) continue;
-            const std::uint32_t neighbour = lower_.index(m);
+            const std::uint32_t neighbour = std::uint32_t(std::int64_t(n) + indexStep[d]);
             const CellValue value = lower_[neighbour];
             if (search.stamp[neighbour] == stamp || value == kInvalid) continue;
             // The body's way is no place to push to; its grains may be pushed along, later out.
@@ -235,7 +238,7 @@ bool Scene::pushOut(std::uint32_t cell, Int3 ahead) {
                 break;
             }
             if (search.queue.size() >= std::size_t(kPushSearchCells)) continue;
-            search.queue.push_back(neighbour);
+            search.queue.push_back({neighbour, m});
         }
     }
     if (found < 0) return false;

@@ -3,6 +3,8 @@
 // Scratch of the pushes of moving bodies (Scene::moveBody): a breadth-first search through the
 // grains of the lower grid for the EMPTY cell nearest to a grain a body covers. Private to sandcore.
 
+#include "sandcore/vec3.hpp"
+
 #include <cstdint>
 #include <vector>
 
@@ -14,7 +16,11 @@ struct PushSearch {
     std::vector<std::uint32_t> stamp;
     std::vector<std::uint8_t> cameBy;   // the direction (index into the search's order) it was reached by
     std::vector<std::uint8_t> entering; // 1 for a cell the body is entering in this unit move
-    std::vector<std::uint32_t> queue;
+    struct Reached {
+        std::uint32_t cell; // its index
+        Int3 at;            // its coordinate
+    };
+    std::vector<Reached> queue;
     std::uint32_t lastStamp = 0;
 
     explicit PushSearch(std::uint32_t cellCount) : stamp(cellCount, 0), cameBy(cellCount, 0), entering(cellCount, 0) {}

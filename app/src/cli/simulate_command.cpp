@@ -126,7 +126,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     const std::int64_t steps = options.steps >= 0 ? options.steps : 1000;
     const std::int64_t stepLimit = options.untilSettled ? options.maxSteps : steps;
     const std::uint32_t pourAt = sandcore::pourCell(scene);
-    StreamingMedian stepMilliseconds;
+    StreamingMedian stepMilliseconds, digMilliseconds;
     std::int64_t moves = 0, visited = 0, done = 0, poured = 0;
     std::string trace = options.trace.empty() ? std::string() : "step,grains_upper,grains_lower,moves\n";
     const auto start = Clock::now();
@@ -140,6 +140,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         // The body's moves count in the step's time: they are what digging costs a step.
         if (dig && !dig->done()) {
             dig->beforeStep(scene);
+            digMilliseconds.add(std::chrono::duration<double, std::milli>(Clock::now() - before).count());
             ++digSteps;
             if (dig->done()) scene.removeBody(dig->body()); // lifted out at the end of its path
         }
@@ -204,6 +205,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
             out["dig_done"] = dig->done();
             out["grains_pushed"] = dig->grainsPushed();
             out["grains_pushed_per_step"] = digSteps > 0 ? double(dig->grainsPushed()) / double(digSteps) : 0.0;
+            out["median_ms_dig_moves"] = digMilliseconds.median(); // the moves alone, part of median_ms_per_step
             out["trench_depth"] = trenchDepth(heightsBeforeDig, lowerColumnHeights(scene), digPath,
                                               scene.grid(sandcore::GridLevel::Lower).size());
         }
