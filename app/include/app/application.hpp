@@ -30,6 +30,9 @@ struct ApplicationOptions {
     bool offscreen = false;          ///< draw into an offscreen framebuffer of the window's size (hidden runs)
     AppState initial;                ///< scene, display settings and simulation on/off at start
     int stepsBeforeStart = 0;        ///< simulation steps run before the first frame
+    std::string digPath;             ///< a path "X,Y,Z ..." a body digs along from the first step (SceneHost::startDig)
+    std::string digBody = "blade";   ///< blade, box, ball or a model file
+    int digSpeed = 1;                ///< cells the digging body moves per step
     int frameLimit = 0;              ///< close after this many frames; 0 = run until closed
     std::filesystem::path screenshotFile; ///< with frameLimit: the last frame is saved here
     std::filesystem::path benchmarkFolder = "."; ///< where the B key writes benchmark.txt and .csv
