@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The digger's driver (scene/digger.hpp) and the host that runs it before each step.
+#include "scene/compressed_snapshot.hpp"
 #include "scene/digger.hpp"
 #include "scene/scene_host.hpp"
+#include "scene/state_file.hpp"
+#include "support/temporary_folder.hpp"
 
 #include "sandcore/scenes.hpp"
 
@@ -51,4 +54,30 @@ TEST_CASE("digger: the host moves the body before each step and lifts it out at 
     CHECK(host.scene().bodies().empty());
     CHECK(host.scene().grainCount() == grains);
     CHECK_THROWS_AS(host.startDig(sandcore::makeBoxShape({2, 2, 2}), {{40, 0, 0}}, 1), std::invalid_argument);
+}
+
+TEST_CASE("digger: an undo snapshot keeps the body and its cells; a state file keeps the sand without it") {
+    sandcore::Scene scene = sandcore::makeSandboxScene({{16, 2, 16}, {16, 12, 16}}, 4);
+    REQUIRE(scene.addBody({sandcore::makeBladeShape(6, 6, 1), {8, 1, 3}, 0}) == 0);
+    scene.moveBody(0, {8, 1, 9}, 100);
+    const CompressedSnapshot undo(scene);
+    const std::uint64_t hash = scene.stateHash();
+    scene.moveBody(0, {8, 1, 13}, 100);
+    scene.step();
+    scene.restore(undo.expand(scene));
+    CHECK(scene.stateHash() == hash);
+    REQUIRE(scene.bodies().size() == 1);
+    CHECK(scene.bodies()[0].position == Int3{8, 1, 9});
+    for (std::uint32_t n : scene.bodyCells(0)) CHECK(scene.grid(sandcore::GridLevel::Lower)[n] == sandcore::kInvalid);
+    CHECK(scene.sweepsMatchCells());
+
+    TemporaryFolder folder;
+    SceneRequest request;
+    request.kind = sandcore::SceneKind::Canvas;
+    request.resolution = 16;
+    saveState(folder.path() / "dug.sand", scene, request);
+    LoadedState loaded = loadState(folder.path() / "dug.sand");
+    CHECK(loaded.scene.bodies().empty());
+    CHECK(loaded.scene.grainCount() == scene.grainCount());
+    CHECK(loaded.scene.grid(sandcore::GridLevel::Lower).at(8, 1, 9) == sandcore::kEmpty); // no wall left behind
 }
