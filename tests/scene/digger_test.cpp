@@ -56,7 +56,7 @@ TEST_CASE("digger: the host moves the body before each step and lifts it out at 
     CHECK_THROWS_AS(host.startDig(sandcore::makeBoxShape({2, 2, 2}), {{40, 0, 0}}, 1), std::invalid_argument);
 }
 
-TEST_CASE("digger: an undo snapshot keeps the body and its cells; a state file keeps the sand without it") {
+TEST_CASE("digger: an undo snapshot keeps the body and its cells, a state file keeps the sand without it") {
     sandcore::Scene scene = sandcore::makeSandboxScene({{16, 2, 16}, {16, 12, 16}}, 4);
     REQUIRE(scene.addBody({sandcore::makeBladeShape(6, 6, 1), {8, 1, 3}, 0}) == 0);
     scene.moveBody(0, {8, 1, 9}, 100);
