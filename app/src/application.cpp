@@ -11,11 +11,13 @@
 #include "view/render/shader_program.hpp"
 
 #include "scene/data_paths.hpp"
+#include "scene/digger.hpp"
 #include "scene/draft_image.hpp"
 #include "scene/file_io.hpp"
 #include "scene/state_file.hpp"
 
 #include "sandcore/display_positions.hpp"
+#include "sandcore/scenes.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -88,6 +90,11 @@ Application::Application(ApplicationOptions options)
     }
     frameCamera();
     camera_.zoom(options_.cameraZoom);
+    if (!options_.digPath.empty()) {
+        const int width = scene().grid(sandcore::GridLevel::Lower).size().x;
+        const int bed = sandcore::defaultSandboxBedDepth(sandcore::canvasSettingsForWidth(width));
+        host_.startDig(makeDigBodyShape(options_.digBody, width, bed), parseDigPath(options_.digPath), options_.digSpeed);
+    }
     host_.runSteps(options_.stepsBeforeStart);
     glfwGetCursorPos(handle, &lastCursorX_, &lastCursorY_);
 }

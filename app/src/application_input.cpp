@@ -25,6 +25,7 @@ struct ApplicationCallbacks {
         ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
         if (action == GLFW_RELEASE) return;
         const KeyCommand command = keyCommand(capture(), key, mods);
+        if (of(window).driveDiggerByKey(command)) return; // the arrows drive the digger while it is on
         const bool cameraKey = applyCameraCommand(command, of(window).camera_);
         if (!cameraKey && action == GLFW_PRESS) of(window).handleKey(command);
     }
@@ -95,8 +96,11 @@ void Application::handleMouse() {
             applyMouseDrag(capture, button, alt, leftPaints, dx, dy, float(height), camera_);
     if (scene().kind() != sandcore::SceneKind::Canvas) return;
     const bool leftDown = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    // While an obstacle is being placed, the left button drags its box instead of pouring sand.
-    if (state_.obstacleDrag.armed || state_.obstacleDrag.dragging)
+    // While an obstacle is being placed, the left button drags its box instead of pouring sand;
+    // while the digger is on, its body.
+    if (state_.digger.active || state_.digger.dragging)
+        handleDiggerDrag(x, y, leftDown && !alt, capture);
+    else if (state_.obstacleDrag.armed || state_.obstacleDrag.dragging)
         handleObstacleDrag(x, y, leftDown && !alt, capture);
     else
         handleCanvasPointer({x, y, leftDown, alt, capture.mouse});

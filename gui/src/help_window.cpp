@@ -19,7 +19,7 @@ const std::vector<ControlHelp>& controlHelp() {
         {"Right drag", "zoom"},
         {"Mouse wheel", "zoom"},
         {"Alt + drag", "on the canvas: move the view instead of painting"},
-        {"Arrow keys", "rotate the view"},
+        {"Arrow keys", "rotate the view (with the digger on: move it a cell)"},
         {"+ / -", "zoom in / out"},
         {"1 / 2 / 3", "perspective / front / top view"},
         {"T", "turn the hourglass over"},

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "gui/panels.hpp"
 
+#include "sandcore/scene_geometry.hpp"
+
 #include "gui/model_shape_panel.hpp"
 
 #include <imgui.h>
@@ -478,6 +480,20 @@ void drawPaintingSection(AppState& state) {
         if (ImGui::Button("Add obstacle")) state.commands.push(Command::AddObstacle);
         ImGui::SameLine();
         if (ImGui::Button("Clear obstacles")) state.commands.push(Command::ClearObstacles);
+        ImGui::TreePop();
+    }
+
+    // The digger: a body dragged through the sand; it pushes the grains out of its way.
+    if (ImGui::TreeNodeEx("digger", openWhereRoomy())) {
+        DiggerSettings& digger = state.digger;
+        ImGui::Checkbox("Dig with the mouse", &digger.active);
+        hint("drag on the floor; the arrow keys move it a cell");
+        const char* bodies[] = {"blade", "box", "ball"};
+        ImGui::Combo("body", &digger.body, bodies, 3);
+        hint("a new body is placed at the next drag; Undo takes a whole drag back");
+        const int boxHeight = sandcore::canvasBoxHeight(state.loaded.request.resolution);
+        ImGui::SliderInt("depth", &digger.depth, 0, std::max(0, boxHeight - 1));
+        ImGui::SliderInt("heading", &digger.heading, 0, 3, "%d quarter turns");
         ImGui::TreePop();
     }
 }

@@ -6,6 +6,7 @@
 #include "layout_bits.hpp"
 #include "move_feed.hpp"
 #include "neck_flow.hpp"
+#include "push_search.hpp"
 #include "sandcore/counter_random.hpp"
 #include "worker_pool.hpp"
 
@@ -114,6 +115,9 @@ void Scene::rebuildCells(GridLevel level) {
     (level == GridLevel::Upper ? *upperLayout_ : *lowerLayout_).writeInto(grid);
     for (const CellBox& box : obstacles(level))
         forEachCellIn(grid, box, [&](std::uint32_t n) { grid[n] = kInvalid; });
+    if (level == GridLevel::Lower)
+        for (std::size_t b = 0; b < bodies_.size(); ++b)
+            for (std::uint32_t n : bodyCells(b)) grid[n] = kInvalid;
 }
 
 void Scene::reset() {
@@ -445,7 +449,7 @@ void Scene::markEverythingAwake() {
 bool Scene::sweepsMatchCells() const { return upperSweep_->emptyCellsMatch(upper_) && lowerSweep_->emptyCellsMatch(lower_); }
 
 SceneSnapshot Scene::snapshot() const {
-    SceneSnapshot saved{upper_, lower_, grains_, nextIdentity_, counters_, upperObstacles_, lowerObstacles_, flipped_};
+    SceneSnapshot saved{upper_, lower_, grains_, nextIdentity_, counters_, upperObstacles_, lowerObstacles_, flipped_, bodies_};
     // Every state as after the last step, so a file or an undo holds no sweep's bookkeeping.
     if (granular_)
         for (std::uint32_t id = 0; id < saved.grains.size(); ++id) saved.grains.fallOf(id) = fallOf(id);
@@ -481,6 +485,7 @@ void Scene::restore(const SceneSnapshot& saved) {
     counters_ = saved.counters;
     upperObstacles_ = saved.upperObstacles;
     lowerObstacles_ = saved.lowerObstacles;
+    bodies_ = saved.bodies; // their cells are INVALID in the saved lower grid
     // Waking every grain is a superset of the awake set at the time: the sweep's result is the same (R5).
     upperSweep_->clear();
     lowerSweep_->clear();
@@ -554,6 +559,7 @@ void Scene::clearObstacles(GridLevel level) {
     for (const CellBox& box : removed)
         forEachCellIn(grid, box, [&](std::uint32_t n) {
             if (grid[n] != kInvalid || !layout.open(n)) return;
+            if (level == GridLevel::Lower && coveredByBody(n)) return; // a body stands there
             grid[n] = kEmpty;
             const Int3 c = grid.coordinate(n);
             sweepOf(level).wakeAroundEmptied(grid, c.x, c.y, c.z);

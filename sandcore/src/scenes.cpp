@@ -9,6 +9,7 @@
 #include <climits>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace sandcore {
 
@@ -137,6 +138,19 @@ std::int64_t heapCapacity(const InsideMask& lower, PhysicsLevel rules) {
 
 Scene makeCanvasScene(const CanvasSettings& canvas, const StepSettings& step) {
     return Scene(SceneKind::Canvas, CellGrid(canvas.upperSize), CellGrid(canvas.lowerSize), {}, step);
+}
+
+int defaultSandboxBedDepth(const CanvasSettings& canvas) { return std::max(1, canvas.lowerSize.y / 3); }
+
+Scene makeSandboxScene(const CanvasSettings& canvas, int bedDepth, const StepSettings& step) {
+    Scene scene = makeCanvasScene(canvas, step);
+    const CellGrid& box = scene.grid(GridLevel::Lower);
+    if (bedDepth < 1 || bedDepth > box.size().y)
+        throw std::invalid_argument("the sand bed must be 1.." + std::to_string(box.size().y) + " layers deep, got " +
+                                    std::to_string(bedDepth));
+    // Full layers lie still under every rule set: the bed is at rest from the first step.
+    for (std::uint32_t n = 0; n < box.layerSize() * std::uint32_t(bedDepth); ++n) scene.addGrain(GridLevel::Lower, n);
+    return scene;
 }
 
 Scene makeHourglassScene(const InsideMask& untrimmed, const HourglassSettings& hourglass, const StepSettings& step) {

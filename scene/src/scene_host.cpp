@@ -63,6 +63,7 @@ sandcore::Scene& SceneHost::editLayout() {
 
 void SceneHost::adopt(BuiltScene built, const SceneSettings& settings) {
     scene_ = std::make_unique<sandcore::Scene>(std::move(built.scene));
+    dig_.reset(); // its body stood in the scene that went
     drawing_ = std::move(built.drawing);
     modelToWorld_ = built.modelToWorld;
     modelNote_ = built.note;
@@ -226,6 +227,10 @@ void SceneHost::stepOnce() {
         upkeep_.retainMoves();
         tally_.upkeepMilliseconds += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     }
+    if (dig_ && !dig_->done()) {
+        dig_->beforeStep(editScene()); // pushed grains moved outside the step: the upkeep rebuilds
+        if (dig_->done()) scene_->removeBody(dig_->body());
+    }
     const auto stepStart = Clock::now();
     scene_->step();
     tally_.stepMilliseconds += std::chrono::duration<double, std::milli>(Clock::now() - stepStart).count();
@@ -258,6 +263,11 @@ SceneHost::StepTally SceneHost::takeStepTally() {
 
 float SceneHost::displayStepFraction() const {
     return lastStepOutsideClock_ ? 1.0f : float(clock_.stepFraction());
+}
+
+void SceneHost::startDig(sandcore::InsideMask shape, std::vector<sandcore::Int3> path, int speed) {
+    dig_.reset();
+    dig_ = std::make_unique<DigDrive>(editScene(), std::move(shape), std::move(path), speed);
 }
 
 } // namespace sandglass

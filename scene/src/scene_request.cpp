@@ -21,8 +21,17 @@ using sandcore::SceneKind;
 SceneKind parseSceneKind(std::string_view name) {
     if (name == "hourglass") return SceneKind::Hourglass;
     if (name == "sculpture") return SceneKind::Sculpture;
-    if (name == "canvas") return SceneKind::Canvas;
-    throw std::invalid_argument("unknown scene '" + std::string(name) + "' (hourglass, sculpture or canvas)");
+    if (name == "canvas" || name == "sandbox") return SceneKind::Canvas;
+    throw std::invalid_argument("unknown scene '" + std::string(name) + "' (hourglass, sculpture, canvas or sandbox)");
+}
+
+void applySceneName(SceneRequest& request, std::string_view name) {
+    request.kind = parseSceneKind(name);
+    request.sandbox = name == "sandbox";
+}
+
+const char* sceneNameOf(const SceneRequest& request) {
+    return request.kind == SceneKind::Canvas && request.sandbox ? "sandbox" : sceneKindName(request.kind);
 }
 
 const char* sceneKindName(SceneKind kind) {
@@ -145,6 +154,8 @@ static BuiltScene buildSceneUntilDone(const SceneSettings& requested, BuildProgr
         requireMemory("the canvas is", resolution, sandcore::estimateSceneBytes(SceneKind::Canvas, width),
                       request.memoryLimit);
         const sandcore::CanvasSettings canvas = sandcore::canvasSettingsForWidth(resolution);
+        if (request.sandbox)
+            return BuiltScene(sandcore::makeSandboxScene(canvas, sandcore::defaultSandboxBedDepth(canvas), step));
         return BuiltScene(sandcore::makeCanvasScene(canvas, step));
     }
     const bool hourglass = request.kind == SceneKind::Hourglass;

@@ -76,7 +76,15 @@ void writeSnapshot(ByteWriter& out, const sandcore::Scene& scene) {
     out.reserve(out.bytes().size() + encodedSnapshotBytes(scene));
     for (const GridLevel level : {GridLevel::Upper, GridLevel::Lower}) {
         writeSize(out, scene.grid(level).size());
-        out.putArray(scene.grid(level).cells());
+        if (level == GridLevel::Lower && !scene.bodies().empty()) {
+            // A file keeps no moving bodies: their cells are saved as the EMPTY cells they cover.
+            sandcore::CellGrid lower = scene.grid(level);
+            for (std::size_t b = 0; b < scene.bodies().size(); ++b)
+                for (std::uint32_t n : scene.bodyCells(b)) lower[n] = sandcore::kEmpty;
+            out.putArray(std::span<const sandcore::CellValue>(lower.cells()));
+        } else {
+            out.putArray(scene.grid(level).cells());
+        }
     }
     writeGrains(out, scene);
     const sandcore::SceneCounters& c = scene.counters();
@@ -134,7 +142,7 @@ sandcore::SceneSnapshot readSnapshot(ByteReader& in) {
     CellGrid upper = readGrid(in, "upper grid size", "upper grid cells");
     CellGrid lower = readGrid(in, "lower grid size", "lower grid cells");
     sandcore::GrainStore g = readGrains(in);
-    sandcore::SceneSnapshot s{std::move(upper), std::move(lower), std::move(g), 0, {}, {}, {}};
+    sandcore::SceneSnapshot s{std::move(upper), std::move(lower), std::move(g), 0, {}, {}, {}, false, {}};
     s.nextIdentity = in.get<std::uint32_t>("next identity");
     s.counters.grainsUpper = in.get<std::int64_t>("counters");
     s.counters.grainsLower = in.get<std::int64_t>("counters");

@@ -30,6 +30,9 @@ struct ApplicationOptions {
     bool offscreen = false;          ///< draw into an offscreen framebuffer of the window's size (hidden runs)
     AppState initial;                ///< scene, display settings and simulation on/off at start
     int stepsBeforeStart = 0;        ///< simulation steps run before the first frame
+    std::string digPath;             ///< a path "X,Y,Z ..." a body digs along from the first step (SceneHost::startDig)
+    std::string digBody = "blade";   ///< blade, box, ball or a model file
+    int digSpeed = 1;                ///< cells the digging body moves per step
     int frameLimit = 0;              ///< close after this many frames; 0 = run until closed
     std::filesystem::path screenshotFile; ///< with frameLimit: the last frame is saved here
     std::filesystem::path benchmarkFolder = "."; ///< where the B key writes benchmark.txt and .csv
@@ -78,6 +81,13 @@ public:
     /// the release queues AddObstacle with the box (and the typed form's heights). The window's
     /// mouse handling calls it while armed; tests call it with scripted samples.
     void handleObstacleDrag(double x, double y, bool leftDown, const InputCapture& capture);
+    /// The digger tool (AppState::digger): a left press on the canvas floor places its body there
+    /// (or starts from where it stands), moves drag it through the sand a few cells a frame at the
+    /// panel's depth, and the whole drag is one undo step. The window's mouse handling calls it
+    /// while the tool is on; tests call it with scripted samples.
+    void handleDiggerDrag(double x, double y, bool leftDown, const InputCapture& capture);
+    /// The arrow keys while the digger tool is on: one cell along x or z; false for other keys.
+    bool driveDiggerByKey(KeyCommand command);
     /// The canvas column under a cursor position (window coordinates) on the surface the
     /// painting settings pick (source or target); the same lookup a stroke makes.
     std::optional<CanvasColumn> columnUnderCursor(double cursorX, double cursorY);
@@ -158,6 +168,8 @@ private:
     void drawBrushOutline();
     void drawBenchmarkProgress();
     void drawObstacleBox();
+    void drawDigger();
+    void keepDiggerAsSet(); // the panel's depth and heading, applied to the standing body
 
     ApplicationOptions options_;
     AppState state_;

@@ -12,7 +12,7 @@ namespace sandglass {
 void addSceneOptions(CLI::App& command, SceneOptions& options) {
     SceneRequest& request = options.settings.request;
     sandcore::StepSettings& step = options.settings.step;
-    command.add_option("--scene", options.scene, "hourglass, sculpture or canvas")->capture_default_str();
+    command.add_option("--scene", options.scene, "hourglass, sculpture, canvas or sandbox (a canvas with a bed of sand to dig in)")->capture_default_str();
     command.add_option("--model", request.modelPath, "model file (OBJ, STL, PLY, glTF, ...) as vessel or sculpture");
     command.add_option("--shape", request.shape, "procedural shape instead of a model: hourglass, sphere or cube");
     addNumberOption(command, "--res", request.resolution, kResolutionRange.min, kResolutionRange.max,
@@ -44,7 +44,7 @@ void addSceneOptions(CLI::App& command, SceneOptions& options) {
 
 SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     SceneSettings settings = options.settings;
-    settings.request.kind = parseSceneKind(options.scene);
+    applySceneName(settings.request, options.scene);
     for (const std::string& part : options.parts) settings.request.partRoles.push_back(parsePartRoleChoice(part));
     const auto physics = sandcore::parsePhysicsLevel(options.physics);
     if (!physics) throw std::invalid_argument("--physics must be classic or granular, got '" + options.physics + "'");

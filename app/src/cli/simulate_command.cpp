@@ -6,6 +6,7 @@
 #include "app/cli/model_shape_json.hpp"
 #include "app/cli/terminal_progress.hpp"
 #include "app/cli/scene_options.hpp"
+#include "scene/digger.hpp"
 #include "scene/file_io.hpp"
 #include "scene/hex.hpp"
 #include "scene/hourglass_timer.hpp"
@@ -47,6 +48,9 @@ struct SimulateOptions {
     std::string save;       ///< E1: where to save the state after the run
     std::string exportFile; ///< E2: where to export the sand after the run (.ply .vox .obj .stl .glb)
     std::string trace; // CSV file: one row per step (SPEC PH7)
+    std::string dig;            ///< a path "X,Y,Z X,Y,Z ..." a body is driven along (the digger)
+    std::string digBody = "blade"; ///< blade, box, ball or a model file
+    int digSpeed = 1;           ///< unit moves per step
 };
 
 // The scene to run: a loaded state (the file's seed and settings, unless given here) or a new build.
@@ -78,6 +82,20 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     if (options.pour > 0 && !canvas)
         throw std::invalid_argument("--pour releases sand on the canvas; use it with --scene canvas");
 
+    // The digger: checked and placed before the run, so a bad path fails at once.
+    std::unique_ptr<DigDrive> dig;
+    std::vector<int> heightsBeforeDig;
+    std::vector<sandcore::Int3> digPath;
+    if (!options.dig.empty()) {
+        if (!canvas) throw std::invalid_argument("--dig drives a body through a canvas; use it with --scene sandbox or canvas");
+        digPath = parseDigPath(options.dig);
+        const int width = scene.grid(sandcore::GridLevel::Lower).size().x;
+        const int bed = sandcore::defaultSandboxBedDepth(sandcore::canvasSettingsForWidth(width));
+        heightsBeforeDig = lowerColumnHeights(scene);
+        dig = std::make_unique<DigDrive>(scene, makeDigBodyShape(options.digBody, width, bed), digPath, options.digSpeed);
+    }
+    std::int64_t digSteps = 0;
+
     const std::int64_t grainsInitial = scene.grainCount();
     if (options.pour > 0) {
         std::int64_t room = 0;
@@ -108,7 +126,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     const std::int64_t steps = options.steps >= 0 ? options.steps : 1000;
     const std::int64_t stepLimit = options.untilSettled ? options.maxSteps : steps;
     const std::uint32_t pourAt = sandcore::pourCell(scene);
-    StreamingMedian stepMilliseconds;
+    StreamingMedian stepMilliseconds, digMilliseconds;
     std::int64_t moves = 0, visited = 0, done = 0, poured = 0;
     std::string trace = options.trace.empty() ? std::string() : "step,grains_upper,grains_lower,moves\n";
     const auto start = Clock::now();
@@ -119,6 +137,13 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         // A pour waits while its cell is still taken, so every grain asked for is released.
         if (poured < options.pour && scene.addGrain(sandcore::GridLevel::Upper, pourAt) >= 0) ++poured;
         const auto before = Clock::now();
+        // The body's moves count in the step's time: they are what digging costs a step.
+        if (dig && !dig->done()) {
+            dig->beforeStep(scene);
+            digMilliseconds.add(std::chrono::duration<double, std::milli>(Clock::now() - before).count());
+            ++digSteps;
+            if (dig->done()) scene.removeBody(dig->body()); // lifted out at the end of its path
+        }
         scene.step();
         stepMilliseconds.add(std::chrono::duration<double, std::milli>(Clock::now() - before).count());
         moves += scene.counters().movesLastStep;
@@ -137,7 +162,7 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
     if (!options.trace.empty()) writeFileAtomically(options.trace, trace);
     const double stepsPerSecond = seconds > 0 ? double(done) / seconds : 0.0;
     const std::string hash = toHex16(scene.stateHash());
-    const std::string sceneName = sceneKindName(settings.request.kind);
+    const std::string sceneName = sceneNameOf(settings.request);
     const int threads = scene.settings().threads;
     if (!options.save.empty()) saveState(options.save, scene, settings.request);
     if (!options.exportFile.empty())
@@ -171,6 +196,19 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
         if (!options.load.empty()) out["loaded"] = options.load;
         if (!options.save.empty()) out["saved"] = options.save;
         if (!options.exportFile.empty()) out["exported"] = options.exportFile;
+        if (dig) {
+            out["dig_body"] = options.digBody;
+            out["dig_speed"] = options.digSpeed;
+            out["dig_steps"] = digSteps;
+            out["dig_cells_moved"] = dig->cellsMoved();
+            out["dig_legs_stopped"] = dig->legsStopped();
+            out["dig_done"] = dig->done();
+            out["grains_pushed"] = dig->grainsPushed();
+            out["grains_pushed_per_step"] = digSteps > 0 ? double(dig->grainsPushed()) / double(digSteps) : 0.0;
+            out["median_ms_dig_moves"] = digMilliseconds.median(); // the moves alone, part of median_ms_per_step
+            out["trench_depth"] = trenchDepth(heightsBeforeDig, lowerColumnHeights(scene), digPath,
+                                              scene.grid(sandcore::GridLevel::Lower).size());
+        }
         addModelShapeJson(out, built);
         std::cout << out.dump() << "\n";
         return 0;
@@ -191,6 +229,12 @@ int runSimulate(const SimulateOptions& options, const CLI::App& command) {
                     options.duration, (long long)drainSteps, stepsPerSecondSet, (long long)done,
                     double(done) / stepsPerSecondSet);
     std::printf("state hash %s\n", hash.c_str());
+    if (dig)
+        std::printf("dig: %s moved %lld cells in %lld steps (%s), pushed %lld grains, left a trench %.2f cells deep\n",
+                    options.digBody.c_str(), (long long)dig->cellsMoved(), (long long)digSteps,
+                    dig->done() ? "path done" : "path not done", (long long)dig->grainsPushed(),
+                    trenchDepth(heightsBeforeDig, lowerColumnHeights(scene), digPath,
+                                scene.grid(sandcore::GridLevel::Lower).size()));
     if (!options.load.empty()) std::printf("went on from %s\n", options.load.c_str());
     if (!options.save.empty()) std::printf("saved the state to %s\n", options.save.c_str());
     if (!options.exportFile.empty()) std::printf("exported the sand to %s\n", options.exportFile.c_str());
@@ -224,6 +268,12 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--save", options->save, "after the run, save the whole state to this .sand file");
     cmd->add_option("--export", options->exportFile, "after the run, export the sand: .ply points, .vox voxels, .obj/.stl/.glb surface");
     cmd->add_option("--trace", options->trace, "write FILE.csv with one row per step: step,grains_upper,grains_lower,moves");
+    auto* dig = cmd->add_option("--dig", options->dig,
+                                "sandbox: drive a body along this path of cells, \"X,Y,Z X,Y,Z ...\" (its bottom middle cell)");
+    cmd->add_option("--dig-body", options->digBody, "with --dig: blade (default), box, ball or a model file")->needs(dig);
+    addNumberOption(*cmd, "--dig-speed", options->digSpeed, 1, kMaxDigSpeed,
+                    "with --dig: cells the body moves per step (default 1)")
+        ->needs(dig);
     cmd->callback([options, cmd, &exitCode] { exitCode = runSimulate(*options, *cmd); });
 }
 

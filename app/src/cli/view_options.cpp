@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "app/cli/view_options.hpp"
 
+#include "scene/digger.hpp"
+
 #include "app/cli/checked_options.hpp"
 
 #include <cstdio>
@@ -35,6 +37,11 @@ void addViewOptions(CLI::App& command, ViewOptions& options) {
     command.add_flag("--voxel-hull", options.voxelHull, "draw a model's vessel as its voxel cells, not as modelled");
     command.add_option("--size", options.size, "window or image size in pixels, WxH");
     addNumberOption(command, "--steps", options.steps, 0, 100'000'000, "simulation steps before the first frame");
+    auto* dig = command.add_option("--dig", options.dig,
+                                   "sandbox: a body digs along this path of cells, \"X,Y,Z X,Y,Z ...\", during the steps");
+    command.add_option("--dig-body", options.digBody, "with --dig: blade (default), box, ball or a model file")->needs(dig);
+    addNumberOption(command, "--dig-speed", options.digSpeed, 1, kMaxDigSpeed, "with --dig: cells the body moves per step (default 1)")
+        ->needs(dig);
     addNumberOption(command, "--zoom", options.zoom, 0.05f, 20.0f,
                     "camera distance as a share of the framing distance (0.5 = twice as close)");
 }
@@ -90,6 +97,14 @@ ApplicationOptions applicationOptionsFrom(const ViewOptions& options, int defaul
         result.window.height = height;
     }
     result.stepsBeforeStart = options.steps;
+    if (!options.dig.empty()) {
+        if (state.scene.request.kind != sandcore::SceneKind::Canvas)
+            throw std::invalid_argument("--dig drives a body through a canvas; use it with --scene sandbox or canvas");
+        parseDigPath(options.dig); // a bad path is refused before the window opens
+        result.digPath = options.dig;
+        result.digBody = options.digBody;
+        result.digSpeed = options.digSpeed;
+    }
     return result;
 }
 

@@ -7,6 +7,7 @@
 #include "sandcore/display_positions.hpp"  // writeDisplayPositions: where each grain is drawn between two steps
 #include "sandcore/hourglass_space.hpp"    // findHourglassSpace, makeHourglassFromMesh: a model's sand space and up axis
 #include "sandcore/mesh_shapes.hpp"        // boxes, spheres, tori, lathes as triangle meshes
+#include "sandcore/moving_body.hpp"        // MovingBody: blades, boxes, balls that push the sand (Scene::moveBody)
 #include "sandcore/physics_settings.hpp"   // classic or granular rules, repose angle, gravity
 #include "sandcore/procedural_shapes.hpp"  // procedural hourglass and sculpture masks
 #include "sandcore/scene.hpp"              // Scene: step, counters, edits, state hash

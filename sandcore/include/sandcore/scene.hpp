@@ -5,6 +5,7 @@
 
 #include "sandcore/cell_grid.hpp"
 #include "sandcore/grain_store.hpp"
+#include "sandcore/moving_body.hpp"
 #include "sandcore/physics_settings.hpp"
 #include "sandcore/task_system.hpp"
 
@@ -21,6 +22,7 @@ class GridSweep;
 class LayoutBits;
 class GranularRules;
 class NeckFlow;
+struct PushSearch;
 
 /// The three scenes of R10.
 enum class SceneKind : std::uint8_t {
@@ -69,6 +71,7 @@ struct SceneSnapshot {
     std::vector<CellBox> upperObstacles;   ///< obstacles of the upper grid
     std::vector<CellBox> lowerObstacles;   ///< obstacles of the lower grid
     bool flipped = false;                  ///< the hourglass was turned over an odd number of times
+    std::vector<MovingBody> bodies;        ///< moving bodies standing in the lower grid
 };
 
 /// Two grids of sand and the step that moves it: the library's main object. Movable, not copyable.
@@ -160,6 +163,32 @@ public:
     /// The obstacles placed in a grid, in the order they were added.
     const std::vector<CellBox>& obstacles(GridLevel level) const;
 
+    /// Moving bodies (moving_body.hpp), all in the lower grid of a canvas or sculpture. Each
+    /// call is an edit between steps, on the calling thread: the result does not depend on the
+    /// threads or on sleeping. Grains in the cells a body enters are pushed out of it (never
+    /// destroyed or duplicated; they keep their ids), and every cell it enters or leaves and every
+    /// grain pushed wakes its neighbours as the other edits do (R5).
+    /// Places a body; its cells must lie in the grid and hold no wall (INVALID), and the grains
+    /// in them are pushed out. Returns its index, or -1 (nothing placed) when it does not fit.
+    /// Throws std::invalid_argument for an hourglass (its grids turn over) or an empty shape.
+    std::int64_t addBody(MovingBody body);
+    /// Moves body `index` toward `target` (its anchor's cell) in at most maxCells unit moves
+    /// along the straight line, each a move by one cell along one axis (so it never tunnels).
+    /// A unit move into a wall, past the grid's edge, or into a grain that finds no EMPTY cell
+    /// near enough (kPushSearchCells) stops the body where it is.
+    BodyMove moveBody(std::size_t index, Int3 target, int maxCells);
+    /// Turns body `index` to a heading (quarter turns 0..3) in place, pushing as a move does.
+    BodyMove turnBody(std::size_t index, int quarterTurns);
+    /// Removes body `index` (later bodies take the index before theirs); its cells become EMPTY.
+    void removeBody(std::size_t index);
+    const std::vector<MovingBody>& bodies() const { return bodies_; } ///< the bodies standing, by index
+    /// The lower-grid cells body `index` covers, in ascending order.
+    std::vector<std::uint32_t> bodyCells(std::size_t index) const;
+    /// Grains bodies pushed since the scene was built (not part of a snapshot).
+    std::int64_t grainsPushedTotal() const { return grainsPushedTotal_; }
+    /// Most cells a push looks through for an EMPTY cell before the body stops instead.
+    static constexpr int kPushSearchCells = 1 << 16;
+
     /// A grid's layout (EMPTY and INVALID cells only, no obstacles, no grains), turned over as the
     /// scene is (flipped()): with fillCells(), kind() and settings() what the constructor needs
     /// to build this scene again, after mirroring both layouts back when it is turned over.
@@ -184,6 +213,12 @@ private:
     std::int64_t markGrainsInMotion(); // returns how many grains are in motion
     void flipLayouts();
     void makeSweeps();
+    bool bodyCellsAt(const MovingBody& body, std::vector<std::uint32_t>& cells) const;
+    bool shiftBody(MovingBody& body, const MovingBody& next, Int3 ahead, std::int64_t& pushed);
+    bool pushOut(std::uint32_t cell, Int3 ahead);
+    void dropPushedFromMoveList();
+    void moveGrainAside(std::uint32_t from, std::uint32_t to);
+    bool coveredByBody(std::uint32_t lowerCell) const;
 
     SceneKind kind_;
     StepSettings settings_;
@@ -199,6 +234,9 @@ private:
     std::unique_ptr<WorkerPool> pool_;
     std::unique_ptr<GranularRules> granular_; // null: classic
     std::unique_ptr<NeckFlow> neckFlow_;      // granular hourglass only
+    std::vector<MovingBody> bodies_;             // bodies(); their cells are INVALID in lower_
+    std::unique_ptr<PushSearch> pushSearch_;     // scratch of the pushes, made at the first
+    std::int64_t grainsPushedTotal_ = 0;
     std::vector<std::uint32_t> transitionReady_; // scratch of transitionGranular
     std::vector<GrainMove> movedGrains_;         // movedGrains(); a flip moves every grain
     std::size_t listedTransitions_ = 0;          // grains a transition passed that their sweep listed (scratch of step)

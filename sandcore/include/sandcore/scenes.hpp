@@ -22,6 +22,14 @@ struct HourglassSettings {
 /// An empty canvas (MODE_PAINT). Throws std::invalid_argument for invalid sizes or unequal x/z.
 Scene makeCanvasScene(const CanvasSettings& canvas = {}, const StepSettings& step = {});
 
+/// The sandbox: a canvas whose painting box starts with a bed of sand `bedDepth` layers deep over
+/// its whole floor, for moving bodies to dig in. The bed is added as grains, not as a fill:
+/// reset() empties the box as it empties a canvas. Throws std::invalid_argument for sizes the
+/// canvas refuses or a depth outside 1..the box's height.
+Scene makeSandboxScene(const CanvasSettings& canvas, int bedDepth, const StepSettings& step = {});
+/// The bed depth the sandbox gets by default: a third of the painting box's height, at least 1.
+int defaultSandboxBedDepth(const CanvasSettings& canvas);
+
 /// An hourglass from a vessel's inside mask (MODE_SHAPE + SHAPE_FIX): split at its neck (S4),
 /// every outside cell INVALID, the upper bulb filled. A mask without a neck becomes an upper
 /// vessel over an open lower box of the same height. Throws std::invalid_argument for an empty mask.

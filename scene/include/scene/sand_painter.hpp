@@ -67,6 +67,11 @@ public:
     void endStroke();
     bool stroking() const { return last_.has_value(); } ///< true between begin and end
 
+    /// Saves the scene for undo as a stroke does, for an edit other than painting (a digger's drag).
+    void rememberForUndo(const sandcore::Scene& scene) {
+        pushHistory(scene);
+        redo_.clear();
+    }
     /// P7: puts the scene back to where it was before the last stroke; false when nothing is left to undo.
     bool undo(sandcore::Scene& scene);
     /// E3: takes back the last undo (the scene as it was when undone); false when there is none.

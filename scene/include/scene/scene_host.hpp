@@ -5,6 +5,7 @@
 // and the clock that turns wall time into steps. Whoever draws or edits the scene watches its
 // revisions instead of being told about every change.
 
+#include "scene/digger.hpp"
 #include "scene/scene_request.hpp"
 
 #include "sandcore/scene.hpp"
@@ -116,6 +117,12 @@ public:
     void reset();
     /// Turns the hourglass over (T1); false for a sculpture or a canvas.
     bool flip();
+    /// The digger (digger.hpp) on the running scene: the body is placed now and moves along the
+    /// path before each later step, then is lifted out. Throws std::invalid_argument as DigDrive
+    /// does. A new scene drops it.
+    void startDig(sandcore::InsideMask shape, std::vector<sandcore::Int3> path, int speed);
+    /// The digger started last, or null (none, or a new scene since).
+    const DigDrive* dig() const { return dig_.get(); }
     /// Steps the clock may run in one frame to keep its rate when frames are slow.
     static constexpr int kMaxStepsPerFrame = 64;
     /// True when the last frame had more steps due than kMaxStepsPerFrame: the rate was not kept.
@@ -173,6 +180,7 @@ private:
     StepRateMeter rate_;
     std::uint64_t contentRevision_ = 1, layoutRevision_ = 1;
     sandcore::SurfaceUpkeep upkeep_;
+    std::unique_ptr<DigDrive> dig_;      // startDig; null when none
     bool upkeepStale_ = true;            // a change other than a step: rebuild before use
     StepTally tally_;                    // since takeStepTally
 };

@@ -53,6 +53,7 @@ struct SceneRequest {
     std::uint64_t memoryLimit = 0; ///< model: bytes a scene may use; 0 = the memory available now
     std::vector<PartRoleChoice> partRoles; ///< model: S7 roles the user set (--part NAME=ROLE); others automatic
     std::string upAxis;         ///< model: S9 "+x" ... "-z" (--up); empty = found (hourglass) or +y (sculpture)
+    bool sandbox = false;       ///< canvas: the sandbox, a bed of sand over the floor to dig in (--scene sandbox)
 };
 
 /// Everything that decides a scene and its steps: the request and the library's step settings
@@ -93,8 +94,13 @@ struct BuiltScene {
     std::optional<ModelToWorld> modelToWorld;
 };
 
-/// "hourglass", "sculpture" or "canvas" to a scene kind; throws std::invalid_argument otherwise.
+/// "hourglass", "sculpture", "canvas" or "sandbox" (a canvas) to a scene kind; throws
+/// std::invalid_argument otherwise.
 sandcore::SceneKind parseSceneKind(std::string_view name);
+/// Sets the request's kind and sandbox flag from a scene's name (as parseSceneKind).
+void applySceneName(SceneRequest& request, std::string_view name);
+/// The name of the scene a request asks for: sceneKindName, or "sandbox".
+const char* sceneNameOf(const SceneRequest& request);
 /// The name parseSceneKind accepts for a kind.
 const char* sceneKindName(sandcore::SceneKind kind);
 

@@ -51,6 +51,15 @@ struct ObstacleDrag {
     int startX = 0, startZ = 0, endX = 0, endZ = 0; ///< the columns at the drag's start and end
 };
 
+/// The digger tool: a moving body (sandcore/moving_body.hpp) dragged through the canvas's sand.
+struct DiggerSettings {
+    bool active = false;   ///< left drags and the arrow keys drive the digger instead of painting and turning the camera
+    int body = 0;          ///< 0 blade, 1 box, 2 ball
+    int depth = 0;         ///< lower-grid layer of the body's bottom
+    int heading = 0;       ///< quarter turns about the vertical, 0..3
+    bool dragging = false; ///< the button is down and the body follows the cursor
+};
+
 /// SPEC E1, E2: where the File section saves, opens and exports.
 struct FileSettings {
     std::string statePath = "sandglass.sand"; ///< the .sand file Save writes and Open reads
@@ -162,6 +171,7 @@ struct AppState {
     bool showHelpHint = true;       ///< the one-line hint on where help is, until help is opened
     float uiScale = 1.0f;           ///< text and control size chosen in the panel (on top of the monitor's)
     ObstacleDrag obstacleDrag;      ///< a box being dragged out on the canvas floor
+    DiggerSettings digger;          ///< the digger tool on the canvas
     float panelCoverage = 0.0f;     ///< share of the window's width the panel covers from the left edge
     WindowPlacement panelPlacement; ///< where the user put the panel (shown clamped to the window)
     WindowPlacement panelSize;      ///< the panel's size in the last frame (x width, y height)

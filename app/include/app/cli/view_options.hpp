@@ -34,6 +34,9 @@ struct ViewOptions {
     std::string size;                 ///< "WxH" in pixels; empty = the command's default
     int steps = 0;                    ///< simulation steps before the first frame
     float zoom = 1.0f;                ///< camera distance as a share of the distance that frames the scene
+    std::string dig;                  ///< sandbox: a path "X,Y,Z ..." a body digs along during the steps
+    std::string digBody = "blade";    ///< blade, box, ball or a model file
+    int digSpeed = 1;                 ///< cells the body moves per step
 };
 
 /// Adds the scene options and --mode --grains-per-cell --light --unlit --lights --thesis-look --no-ao

@@ -34,6 +34,11 @@ public:
     const DraftImage& loadDraft(const std::string& path);
     const DraftImage* draft() const { return input_.draft(); } ///< none until one loads
 
+    /// Saves the canvas for undo before an edit that is not a stroke (a digger's drag), so Undo
+    /// takes the whole edit back as one step.
+    void rememberForUndo(const SceneHost& host) {
+        if (host.scene().kind() == sandcore::SceneKind::Canvas) input_.rememberForUndo(host.scene());
+    }
     /// Takes back the last stroke; false when there is none.
     bool undo(SceneHost& host);
     /// E3: brings back the last undone stroke; false when there is none or no canvas runs.

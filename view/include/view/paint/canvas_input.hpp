@@ -71,6 +71,8 @@ public:
 
     const ColumnPicker& picker() const { return picker_; } ///< the id picker (redraw count for tests)
     const SandPainter& painter() const { return painter_; } ///< stroke state and undo depth
+    /// Saves the scene for undo, as a stroke's start does (a digger's drag).
+    void rememberForUndo(const sandcore::Scene& scene) { painter_.rememberForUndo(scene); }
 
 private:
     ColumnPicker picker_;
