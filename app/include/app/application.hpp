@@ -168,7 +168,6 @@ private:
     void drawBrushOutline();
     void drawBenchmarkProgress();
     void drawObstacleBox();
-    void drawDigger();
     void keepDiggerAsSet(); // the panel's depth and heading, applied to the standing body
 
     ApplicationOptions options_;
