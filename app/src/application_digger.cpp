@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The digger tool: a blade, box or ball dragged through the canvas's sand with the mouse or
+// The digger tool: a blade, box, ball or voxelized model dragged through the canvas's sand with the mouse or
 // driven with the arrow keys (sandcore's moving bodies push the sand out of its way).
 #include "app/application.hpp"
 
@@ -9,6 +9,9 @@
 #include "sandcore/scenes.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <string>
+#include <utility>
 
 namespace sandglass {
 
@@ -18,8 +21,43 @@ namespace {
 constexpr int kDiggerCellsPerFrame = 4;
 
 const char* const kDiggerBodies[] = {"blade", "box", "ball"};
+constexpr int kModelBody = 3; // DiggerSettings::body for the model file
+
+bool sameCells(const sandcore::InsideMask& a, const sandcore::InsideMask& b) {
+    return a.size.x == b.size.x && a.size.y == b.size.y && a.size.z == b.size.z && a.inside == b.inside;
+}
 
 } // namespace
+
+bool Application::loadDiggerBody(const std::string& path) {
+    DiggerSettings& digger = state_.digger;
+    try {
+        const int width = scene().grid(sandcore::GridLevel::Lower).size().x;
+        sandcore::InsideMask shape = digBodyFromModel(path, width);
+        state_.statusLine = "digger body " + path + ": " + std::to_string(shape.size.x) + " x " +
+                            std::to_string(shape.size.y) + " x " + std::to_string(shape.size.z) +
+                            " cells, placed at the next drag";
+        diggerModel_ = std::move(shape);
+        digger.loadedModel = path;
+        digger.modelPath = path;
+        digger.body = kModelBody;
+        return true;
+    } catch (const std::exception& error) {
+        state_.statusLine = std::string("digger body: ") + error.what(); // the body chosen before stays
+        return false;
+    }
+}
+
+std::optional<sandcore::InsideMask> Application::chosenDiggerShape() {
+    const DiggerSettings& digger = state_.digger;
+    if (digger.body == kModelBody) {
+        if (!diggerModel_) state_.statusLine = "choose a model file for the digger's body first";
+        return diggerModel_;
+    }
+    const int width = scene().grid(sandcore::GridLevel::Lower).size().x;
+    const int bed = sandcore::defaultSandboxBedDepth(sandcore::canvasSettingsForWidth(width));
+    return makeDigBodyShape(kDiggerBodies[std::clamp(digger.body, 0, 2)], width, bed);
+}
 
 void Application::keepDiggerAsSet() {
     DiggerSettings& digger = state_.digger;
@@ -41,13 +79,13 @@ void Application::handleDiggerDrag(double x, double y, bool leftDown, const Inpu
         digger.dragging = true;
         canvas_.rememberForUndo(host_); // the whole drag is one undo step
         ++state_.files.unsavedEdits;
-        if (scene().bodies().empty()) {
-            const int width = scene().grid(sandcore::GridLevel::Lower).size().x;
-            const int bed = sandcore::defaultSandboxBedDepth(sandcore::canvasSettingsForWidth(width));
-            const sandcore::InsideMask shape = makeDigBodyShape(kDiggerBodies[std::clamp(digger.body, 0, 2)], width, bed);
-            if (host_.editLayout().addBody({shape, {column->x, digger.depth, column->z}, digger.heading & 3}) < 0)
-                state_.statusLine = "the digger does not fit there";
-        }
+        // A body of another shape than the panel's gives way to the panel's, placed here.
+        std::optional<sandcore::InsideMask> shape = chosenDiggerShape();
+        const bool otherShape = shape && !scene().bodies().empty() && !sameCells(scene().bodies().front().shape, *shape);
+        if (otherShape) host_.editLayout().removeBody(0);
+        if (shape && scene().bodies().empty() &&
+            host_.editLayout().addBody({std::move(*shape), {column->x, digger.depth, column->z}, digger.heading & 3}) < 0)
+            state_.statusLine = "the digger does not fit there";
         canvas_.publishUndoState(state_.painting);
         return;
     }

@@ -21,7 +21,7 @@ namespace {
 GLint uniform(const GlProgram& program, const char* name) { return glGetUniformLocation(program.get(), name); }
 
 // Painted steel: apart from every sand palette, so the body reads against the heap it pushes.
-constexpr std::array<float, 3> kBodyColour{0.46f, 0.52f, 0.60f};
+constexpr std::array<float, 3> kBodyColour{0.34f, 0.44f, 0.58f};
 
 struct CellOrder {
     bool operator()(const Int3& a, const Int3& b) const {
