@@ -116,6 +116,7 @@ void Application::serve(Command command) {
         }
         break;
     case Command::LoadDraft: loadDraft(state_.painting.draftPath); break;
+    case Command::LoadDiggerBody: loadDiggerBody(state_.digger.modelPath); break;
     case Command::OpenFile: openFile(state_.files.openPath); break;
     case Command::AddObstacle: {
         const std::uint64_t layout = host_.layoutRevision();

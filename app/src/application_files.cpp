@@ -28,6 +28,7 @@ std::string startPathFor(const AppState& state, FileChoice choice) {
     case FileChoice::Export: return state.files.exportPath;
     case FileChoice::Model: return state.scene.request.modelPath;
     case FileChoice::Draft: return state.painting.draftPath;
+    case FileChoice::DiggerBody: return state.digger.modelPath;
     case FileChoice::ScreenshotFolder: return state.files.screenshotFolder + "/";
     }
     return {};
@@ -135,6 +136,7 @@ void Application::serveChosenFile(const ChosenFile& chosen) {
         serve(Command::Rebuild);
         break;
     case FileChoice::Draft: loadDraft(chosen.path); break;
+    case FileChoice::DiggerBody: loadDiggerBody(chosen.path); break;
     case FileChoice::ScreenshotFolder:
         state_.files.screenshotFolder = chosen.path;
         state_.statusLine = "screenshots go to " + chosen.path;

@@ -488,9 +488,32 @@ void drawPaintingSection(AppState& state) {
         DiggerSettings& digger = state.digger;
         ImGui::Checkbox("Dig with the mouse", &digger.active);
         hint("drag on the floor; the arrow keys move it a cell");
-        const char* bodies[] = {"blade", "box", "ball"};
-        ImGui::Combo("body", &digger.body, bodies, 3);
+        // "model file..." opens the file dialog until a model is loaded, then names that file.
+        const std::string model = digger.loadedModel.empty()
+                                      ? std::string("model file...")
+                                      : std::filesystem::path(digger.loadedModel).filename().string();
+        const char* bodies[] = {"blade", "box", "ball", model.c_str()};
+        int body = digger.body;
+        if (ImGui::Combo("body", &body, bodies, 4)) {
+            if (body == 3 && digger.loadedModel.empty()) {
+                state.files.choosing = FileChoice::DiggerBody; // the body becomes the model once it loads
+                state.commands.push(Command::ChooseFile);
+            } else {
+                digger.body = body;
+            }
+        }
         hint("a new body is placed at the next drag; Undo takes a whole drag back");
+        char path[512] = {};
+        digger.modelPath.copy(path, sizeof path - 1);
+        if (ImGui::InputText("body model", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue)) {
+            digger.modelPath = path;
+            state.commands.push(Command::LoadDiggerBody);
+        }
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Open...##diggerbody")) {
+            state.files.choosing = FileChoice::DiggerBody;
+            state.commands.push(Command::ChooseFile);
+        }
         const int boxHeight = sandcore::canvasBoxHeight(state.loaded.request.resolution);
         ImGui::SliderInt("depth", &digger.depth, 0, std::max(0, boxHeight - 1));
         ImGui::SliderInt("heading", &digger.heading, 0, 3, "%d quarter turns");

@@ -80,16 +80,20 @@ std::vector<Int3> parseDigPath(std::string_view text) {
     return path;
 }
 
+sandcore::InsideMask digBodyFromModel(const std::string& file, int width) {
+    sandcore::VoxelizeSettings settings;
+    settings.resolution = std::max(2, width / 6);
+    return trimmed(voxelizeModelFile(file, settings, ModelUse::MaskOnly).voxels.mask);
+}
+
 sandcore::InsideMask makeDigBodyShape(const std::string& body, int width, int bedDepth) {
     const int eighth = std::max(2, width / 8);
     if (body == "blade") return sandcore::makeBladeShape(std::max(3, width / 4), bedDepth + eighth, 2);
     if (body == "box") return sandcore::makeBoxShape({eighth, eighth, eighth});
     if (body == "ball") return sandcore::makeBallShape(eighth);
     if (body.empty()) throw std::invalid_argument("--dig-body wants blade, box, ball or a model file");
-    sandcore::VoxelizeSettings settings;
-    settings.resolution = std::max(2, width / 6);
     try {
-        return trimmed(voxelizeModelFile(body, settings, ModelUse::MaskOnly).voxels.mask);
+        return digBodyFromModel(body, width);
     } catch (const ModelError& error) {
         throw std::invalid_argument(std::string("--dig-body: ") + error.what() + " (blade, box, ball or a model file)");
     }

@@ -20,6 +20,7 @@ const char* titleOf(FileChoice choice) {
     case FileChoice::Export: return "Export the sand as";
     case FileChoice::Model: return "Open a model";
     case FileChoice::Draft: return "Open a draft image";
+    case FileChoice::DiggerBody: return "Open a model for the digger";
     case FileChoice::ScreenshotFolder: return "Folder for screenshots";
     }
     return "Choose a file";
@@ -31,7 +32,8 @@ std::pair<std::string, std::string> filterOf(FileChoice choice) {
     case FileChoice::OpenState:
     case FileChoice::SaveState: return {"sandglass state", "*.sand"};
     case FileChoice::Export: return {"point cloud, voxels or mesh", "*.ply *.vox *.obj *.stl *.glb"};
-    case FileChoice::Model: return {"3D model", "*.obj *.stl *.ply *.gltf *.glb *.off *.fbx *.dae *.3ds"};
+    case FileChoice::Model:
+    case FileChoice::DiggerBody: return {"3D model", "*.obj *.stl *.ply *.gltf *.glb *.off *.fbx *.dae *.3ds"};
     case FileChoice::Draft: return {"image", "*.png *.jpg *.jpeg"};
     case FileChoice::ScreenshotFolder: return {};
     }

@@ -96,6 +96,9 @@ public:
     /// Loads a PNG or JPEG as the draft and shows it; on a bad file the status line gets the
     /// one-line reason and the previous draft stays. Returns true when it loaded.
     bool loadDraft(const std::string& path);
+    /// Voxelizes a model file as the digger's body (placed at the next drag); false and the
+    /// one-line reason in the status line for a file that is no model, the body kept as it was.
+    bool loadDiggerBody(const std::string& path);
     /// E1: replaces the scene by a saved state; false (and the one-line error in the status line)
     /// when the file cannot be loaded, the running scene then unchanged.
     bool loadStateFile(const std::string& path);
@@ -168,8 +171,8 @@ private:
     void drawBrushOutline();
     void drawBenchmarkProgress();
     void drawObstacleBox();
-    void drawDigger();
     void keepDiggerAsSet(); // the panel's depth and heading, applied to the standing body
+    std::optional<sandcore::InsideMask> chosenDiggerShape(); // the panel's body; none: no model loaded yet
 
     ApplicationOptions options_;
     AppState state_;
@@ -193,6 +196,7 @@ private:
     std::optional<RgbImage> sceneOnlyFrame_; // this frame before the panels, for a screenshot without them
     bool quitRequested_ = false;             // the loop ends after this frame
     FileChooser fileChooser_;
+    std::optional<sandcore::InsideMask> diggerModel_; // the model file's body (DiggerSettings::loadedModel)
     std::string draftAfterBuild_;            // an image opened on another scene: shown once the canvas is built
 };
 

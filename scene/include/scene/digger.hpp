@@ -27,6 +27,10 @@ std::vector<sandcore::Int3> parseDigPath(std::string_view text);
 /// for a file) with one line.
 sandcore::InsideMask makeDigBodyShape(const std::string& body, int width, int bedDepth);
 
+/// A model file voxelized as a sculpture is, width/6 cells along its largest extent and trimmed
+/// to its cells: the digger's body for a canvas `width` cells wide. Throws ModelError with one line.
+sandcore::InsideMask digBodyFromModel(const std::string& file, int width);
+
 /// Quarter turns that put a blade (wide along x at heading 0) across a move from `from` to `to`.
 int headingAcross(sandcore::Int3 from, sandcore::Int3 to);
 

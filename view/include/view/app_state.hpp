@@ -54,7 +54,9 @@ struct ObstacleDrag {
 /// The digger tool: a moving body (sandcore/moving_body.hpp) dragged through the canvas's sand.
 struct DiggerSettings {
     bool active = false;   ///< left drags and the arrow keys drive the digger instead of painting and turning the camera
-    int body = 0;          ///< 0 blade, 1 box, 2 ball
+    int body = 0;          ///< 0 blade, 1 box, 2 ball, 3 the model file loadedModel
+    std::string modelPath; ///< the model file typed or chosen for the body (Command::LoadDiggerBody)
+    std::string loadedModel; ///< the model file the body was voxelized from; empty: none yet
     int depth = 0;         ///< lower-grid layer of the body's bottom
     int heading = 0;       ///< quarter turns about the vertical, 0..3
     bool dragging = false; ///< the button is down and the body follows the cursor
@@ -100,6 +102,7 @@ enum class Command {
     StopTimer,         ///< stop the timer
     OpenFile,          ///< open FileSettings::openPath as its kind says: a .sand state, a draft image or a model
     CancelBuild,       ///< stop the scene being built and keep the running one (I5)
+    LoadDiggerBody,    ///< voxelize DiggerSettings::modelPath as the digger's body
 };
 
 /// Commands in the order they were raised.

@@ -20,6 +20,7 @@ enum class FileChoice {
     Export,           ///< where to export the sand (.ply, .vox, .obj, .stl, .glb)
     Model,            ///< a model file for the hourglass or sculpture
     Draft,            ///< a PNG or JPEG for the canvas's draft
+    DiggerBody,       ///< a model file for the digger's body
     ScreenshotFolder, ///< the folder screenshots go to
 };
 

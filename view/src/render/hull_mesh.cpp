@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace sandglass {
 
@@ -17,7 +18,15 @@ class WorldCells {
 public:
     WorldCells(const sandcore::Scene& scene, bool outsideIsWall)
         : scene_(scene), upperOrigin_(scene.gridOrigin(GridLevel::Upper)),
-          lowerSize_(scene.grid(GridLevel::Lower).size()), outsideIsWall_(outsideIsWall) {}
+          lowerSize_(scene.grid(GridLevel::Lower).size()), outsideIsWall_(outsideIsWall) {
+        // A moving body's cells are INVALID while it stands there, but it is no part of the
+        // vessel: it is drawn as a solid of its own and moves on.
+        for (std::size_t body = 0; body < scene.bodies().size(); ++body)
+            for (std::uint32_t cell : scene.bodyCells(body)) {
+                if (bodyCells_.empty()) bodyCells_.assign(scene.grid(GridLevel::Lower).cellCount(), false);
+                bodyCells_[cell] = true;
+            }
+    }
 
     Int3 size() const {
         const Int3 upper = scene_.grid(GridLevel::Upper).size();
@@ -35,13 +44,16 @@ public:
             grid = &scene_.grid(GridLevel::Lower);
         }
         if (!grid->contains(local.x, local.y, local.z)) return !outsideIsWall_;
-        return grid->at(local.x, local.y, local.z) != sandcore::kInvalid;
+        if (grid->at(local.x, local.y, local.z) != sandcore::kInvalid) return true;
+        return grid == &scene_.grid(GridLevel::Lower) && !bodyCells_.empty() &&
+               bodyCells_[grid->index(local.x, local.y, local.z)];
     }
 
 private:
     const sandcore::Scene& scene_;
     Int3 upperOrigin_, lowerSize_;
     bool outsideIsWall_;
+    std::vector<bool> bodyCells_; // lower-grid cells a body covers; empty: none
 };
 
 void addFace(HullMesh& mesh, const WorldCells& cells, Int3 c, int axis, int side, float cellSize) {

@@ -51,7 +51,7 @@ SceneRenderer::SceneRenderer(const std::filesystem::path& shaderFolder)
       hullProgram_(loadShaderProgram(shaderFolder / "hull.vert", shaderFolder / "hull.frag")),
       grainArray_(newVertexArray()), hullArray_(newVertexArray()), lineArray_(newVertexArray()),
       grainBuffer_(newBuffer()), hullBuffer_(newBuffer()), lineBuffer_(newBuffer()), quadCorners_(newBuffer()),
-      model_(shaderFolder), patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
+      model_(shaderFolder), bodies_(shaderFolder), patternOffsets_(newTexture()), patternColors_(newTexture()), draft_(shaderFolder) {
     // Per-instance attributes; the vertex shader needs no per-vertex data (it uses gl_VertexID).
     glBindVertexArray(grainArray_.get());
     glBindBuffer(GL_ARRAY_BUFFER, grainBuffer_.get());
@@ -266,6 +266,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     const glm::mat4 viewProjection = camera.projection(float(width) / float(height)) * camera.view();
     const bool modelled = settings.hull && !settings.voxelHull && !model_.empty();
     look_ = studioLookFor(settings, settings.cellSize);
+    bodies_.update(scene, settings.cellSize);
     if (look_.shadows) drawShadowMap(scene, stepFraction, settings, modelled);
     look_.shadows = look_.shadows && shadowMap_.usable(); // a GL that cannot draw depth textures: no shadows
     shadowMap_.bind(look_.shadows);
@@ -287,6 +288,7 @@ void SceneRenderer::draw(const sandcore::Scene& scene, float stepFraction, const
     if (modelled) model_.sortGlassFor(frame.eye); // the application's work, outside the timed calls
     timedDraw([&] {
         if (modelled) model_.drawOpaque(frame);
+        bodies_.draw(frame);
         draft_.draw(draftPlacement_, glm::value_ptr(viewProjection));
         if (modelled) model_.drawGlass(frame);
         else if (settings.hull) drawHull(settings, camera, glm::value_ptr(viewProjection));
@@ -353,7 +355,7 @@ void SceneRenderer::drawGrains(const RenderSettings& settings, const OrbitCamera
     if (path_ == GrainPath::GpuInterpolated) gpuStore_.drawn();
 }
 
-// The key light's view of the casters: the opaque model parts (offset back a little, as
+// The key light's view of the casters: the opaque model parts and the moving bodies (offset back a little, as
 // triangles seen edge-on would shadow themselves) and one point per grain, 1.5 cells wide,
 // so neighbouring grains close the surface. Glass casts nothing.
 void SceneRenderer::drawShadowMap(const sandcore::Scene& scene, float stepFraction, const RenderSettings& settings,
@@ -379,6 +381,10 @@ void SceneRenderer::drawShadowMap(const sandcore::Scene& scene, float stepFracti
         model_.drawShadowCasters(glm::value_ptr(lightClip));
         glDisable(GL_POLYGON_OFFSET_FILL);
     }
+    glEnable(GL_POLYGON_OFFSET_FILL); // as the model's: a body's side seen edge-on casts on no one
+    glPolygonOffset(1.5f, 2.0f);
+    bodies_.drawShadowCasters(glm::value_ptr(lightClip));
+    glDisable(GL_POLYGON_OFFSET_FILL);
     const bool gpu = path_ == GrainPath::GpuInterpolated;
     const GlProgram& program = gpu ? grainGpuProgram_ : grainProgram_;
     glUseProgram(program.get());

@@ -5,6 +5,7 @@
 // are drawn with one instanced call, k sub-grains per instance.
 
 #include "view/camera.hpp"
+#include "view/render/body_surfaces.hpp"
 #include "view/render/draft_overlay.hpp"
 #include "view/render/gl_objects.hpp"
 #include "view/render/gpu_frame_timer.hpp"
@@ -76,6 +77,8 @@ public:
               const OrbitCamera& camera, int width, int height, float pixelScale);
 
     const RenderStats& stats() const { return stats_; } ///< what the last draw did
+    /// Triangles of the moving bodies' meshes as the last draw drew them.
+    std::int64_t bodyTriangles() const { return bodies_.triangles(); }
     /// Times every later draw() on the GPU (timer queries), until switched off; the benchmarks do.
     void timeGpu(bool on) { timeGpu_ = on; }
     /// The GPU time of the draws timed since the last call (waits for those still running).
@@ -105,6 +108,7 @@ private:
     GlBuffer grainBuffer_, hullBuffer_, lineBuffer_;
     GlBuffer quadCorners_; // indices of the quads' triangles: 0 1 2, 0 2 3 per sub-grain
     ModelSurfaces model_; // S10: the model as modelled
+    BodySurfaces bodies_; // the moving bodies as solids
     GlTexture patternOffsets_, patternColors_;
     GrainInstanceBuilder builder_;
     GrainGpuStore gpuStore_;
