@@ -22,15 +22,11 @@ namespace {
 constexpr int kSize = 320;
 constexpr int kResolution = 40; // the sandbox's bed is 8 deep
 
-struct ScreenPoint {
-    int x, y;
-};
+using testing::ScreenPoint;
 
 // Where a point inside a cell of the lower grid lands on the frame.
 ScreenPoint project(Application& app, glm::vec3 cell) {
-    const glm::mat4 viewProjection = app.camera().projection(1.0f) * app.camera().view();
-    const glm::vec4 clip = viewProjection * glm::vec4(cell * app.state().render.cellSize, 1.0f);
-    return {int((clip.x / clip.w * 0.5f + 0.5f) * float(kSize)), int((0.5f - clip.y / clip.w * 0.5f) * float(kSize))};
+    return testing::projectToFrame(app, cell * app.state().render.cellSize, kSize);
 }
 
 // The body's painted steel against the warm sand and the white background.

@@ -36,15 +36,9 @@ ApplicationOptions framedHourglass(bool black, bool voxelHull) {
     return options;
 }
 
-struct ScreenPoint {
-    int x, y;
-};
+using testing::ScreenPoint;
 
-ScreenPoint project(Application& app, glm::vec3 world) {
-    const glm::mat4 viewProjection = app.camera().projection(1.0f) * app.camera().view();
-    const glm::vec4 clip = viewProjection * glm::vec4(world, 1.0f);
-    return {int((clip.x / clip.w * 0.5f + 0.5f) * float(kSize)), int((0.5f - clip.y / clip.w * 0.5f) * float(kSize))};
-}
+ScreenPoint project(Application& app, glm::vec3 world) { return testing::projectToFrame(app, world, kSize); }
 
 // The centre of a drawn part, world units.
 glm::vec3 centreOf(const ModelDrawing& drawing, const std::string& name, float cellSize) {

@@ -22,15 +22,9 @@ namespace {
 constexpr int kSize = 240;
 constexpr std::uint32_t kGrainColor = 0xff70b0e0u; // one painted sand colour for every grain
 
-struct ScreenPoint {
-    int x, y;
-};
+using testing::ScreenPoint;
 
-ScreenPoint project(Application& app, glm::vec3 world) {
-    const glm::mat4 viewProjection = app.camera().projection(1.0f) * app.camera().view();
-    const glm::vec4 clip = viewProjection * glm::vec4(world, 1.0f);
-    return {int((clip.x / clip.w * 0.5f + 0.5f) * float(kSize)), int((0.5f - clip.y / clip.w * 0.5f) * float(kSize))};
-}
+ScreenPoint project(Application& app, glm::vec3 world) { return testing::projectToFrame(app, world, kSize); }
 
 int brightness(const RgbImage& image, ScreenPoint p) {
     const testing::Pixel pixel = testing::pixelAt(image, p.x, p.y);

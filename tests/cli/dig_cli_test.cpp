@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 using cli::lineCount;
+using cli::requireOneLineRefusals;
 using cli::runSandglass;
 
 TEST_CASE("simulate --dig drives a blade through the sandbox, keeps every grain and reports the trench") {
@@ -33,7 +34,7 @@ TEST_CASE("simulate --dig drives a blade through the sandbox, keeps every grain 
 }
 
 TEST_CASE("simulate --dig: bad paths, bodies and speeds give a one-line error") {
-    const char* bad[] = {
+    requireOneLineRefusals({
         "simulate --scene sandbox --dig '1,2'",                     // not X,Y,Z
         "simulate --scene sandbox --dig 'a,b,c'",                   // not numbers
         "simulate --scene sandbox --dig ' '",                       // no point
@@ -45,13 +46,5 @@ TEST_CASE("simulate --dig: bad paths, bodies and speeds give a one-line error") 
         "simulate --scene sandbox --dig-speed 3",                   // no path
         "simulate --scene sandbox --dig-body box",                  // no path
         "simulate --scene sandbox --dig '30,8,6' --dig-body spoon", // no such body or file
-    };
-    for (const char* args : bad) {
-        CAPTURE(args);
-        const auto r = runSandglass(args);
-        CHECK(r.exitCode != 0);
-        CHECK(lineCount(r.err) == 1);
-        CHECK(r.err.rfind("sandglass: ", 0) == 0);
-        CHECK(r.out.empty());
-    }
+    });
 }

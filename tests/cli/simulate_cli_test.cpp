@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 using cli::lineCount;
+using cli::requireOneLineRefusals;
 using cli::runSandglass;
 
 TEST_CASE("simulate --json prints one object with every C1 key") {
@@ -69,7 +70,7 @@ TEST_CASE("every procedural shape drains as a vessel and collapses as a sculptur
 }
 
 TEST_CASE("bad arguments give a one-line error and a non-zero exit") {
-    const char* bad[] = {
+    requireOneLineRefusals({
         "simulate --scene volcano",            // unknown scene
         "simulate --shape pyramid",            // unknown shape
         "simulate --res 5000",                 // grid too large
@@ -85,15 +86,7 @@ TEST_CASE("bad arguments give a one-line error and a non-zero exit") {
         "simulate --frobnicate",               // unknown flag
         "simulate --pour 10",                  // pour needs the canvas
         "teleport",                            // unknown subcommand
-    };
-    for (const char* args : bad) {
-        CAPTURE(args);
-        const auto r = runSandglass(args);
-        CHECK(r.exitCode != 0);
-        CHECK(lineCount(r.err) == 1);
-        CHECK(r.err.rfind("sandglass: ", 0) == 0);
-        CHECK(r.out.empty());
-    }
+    });
 }
 
 TEST_CASE("simulate --help describes the options and succeeds") {

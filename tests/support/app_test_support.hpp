@@ -7,6 +7,8 @@
 
 #include "app/application.hpp"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
 #include <cstddef>
 #include <optional>
@@ -14,6 +16,18 @@
 #include <string_view>
 
 namespace sandglass::testing {
+
+/// A pixel of a square frame, x to the right, y down.
+struct ScreenPoint {
+    int x, y;
+};
+
+/// Where the world point lands on the application's square frame of `size` pixels.
+inline ScreenPoint projectToFrame(Application& app, glm::vec3 world, int size) {
+    const glm::mat4 viewProjection = app.camera().projection(1.0f) * app.camera().view();
+    const glm::vec4 clip = viewProjection * glm::vec4(world, 1.0f);
+    return {int((clip.x / clip.w * 0.5f + 0.5f) * float(size)), int((0.5f - clip.y / clip.w * 0.5f) * float(size))};
+}
 
 /// An Application with these options, or nothing when no OpenGL 3.3 context can be made
 /// (reported through cannotDraw: a failure in CI); `what` names what then goes unchecked.

@@ -7,8 +7,11 @@
 
 #include "process/child_process.hpp"
 
+#include <doctest/doctest.h>
+
 #include <chrono>
 #include <csignal>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -80,6 +83,19 @@ inline int lineCount(const std::string& text) {
     int lines = 0;
     for (char c : text) lines += c == '\n';
     return lines + (!text.empty() && text.back() != '\n');
+}
+
+/// Each command line is refused: a non-zero exit, one line on stderr that starts with
+/// "sandglass: ", nothing on stdout.
+inline void requireOneLineRefusals(std::initializer_list<const char*> commandLines) {
+    for (const char* args : commandLines) {
+        CAPTURE(args);
+        const ProcessResult r = runSandglass(args);
+        CHECK(r.exitCode != 0);
+        CHECK(lineCount(r.err) == 1);
+        CHECK(r.err.rfind("sandglass: ", 0) == 0);
+        CHECK(r.out.empty());
+    }
 }
 
 } // namespace cli
