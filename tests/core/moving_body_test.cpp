@@ -293,8 +293,8 @@ TEST_CASE("a blade's dig through the sandbox has recorded hashes (granular and c
         hashes.push_back(scene.stateHash());
         pushed.push_back(scene.grainsPushedTotal());
     }
-    CHECK(hashes[0] == 18285242836518611530ull);
-    CHECK(pushed[0] == 2021);
-    CHECK(hashes[1] == 4919118135596393635ull);
-    CHECK(pushed[1] == 2031);
+    CHECK(hashes[0] == 9186277622045610897ull);
+    CHECK(pushed[0] == 2024);
+    CHECK(hashes[1] == 17715852765768350900ull);
+    CHECK(pushed[1] == 2042);
 }
