@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -174,6 +175,45 @@ TEST_CASE("a body pushes the grains in its way, each once, into EMPTY cells outs
     scene.removeBody(0);
     CHECK(scene.bodies().empty());
     CHECK(scene.grid(GridLevel::Lower).at(8, 0, 12) == kEmpty); // the cells it left are open again
+    requireConsistent(scene);
+}
+
+TEST_CASE("a blade's pushes stay near it: the sand rises ahead and beside it, or flows under it") {
+    const int width = 48, bed = 8, bladeWidth = 12, thickness = 2;
+    Scene scene = makeSandboxScene(canvasSettingsForWidth(width), bed);
+    REQUIRE(scene.addBody({makeBladeShape(bladeWidth, bed + 4, thickness), {width / 2, bed - 5, 10}, 0}) == 0);
+    for (int i = 0; i < 6; ++i) scene.step();
+    std::vector<int> before;
+    for (int z = 0; z < width; ++z)
+        for (int x = 0; x < width; ++x) before.push_back(columnHeight(scene, x, z));
+    const BodyMove move = scene.moveBody(0, {width / 2, bed - 5, 11}, 1);
+    REQUIRE(move.cellsMoved == 1);
+    CHECK(move.grainsPushed >= bladeWidth * 5);
+    requireConsistent(scene);
+    // The blade now covers z 10..11 (its anchor's z and the cell before it).
+    int changed = 0;
+    for (int z = 0; z < width; ++z)
+        for (int x = 0; x < width; ++x) {
+            if (columnHeight(scene, x, z) == before[std::size_t(x + width * z)]) continue;
+            ++changed;
+            CAPTURE(x);
+            CAPTURE(z);
+            CHECK(std::abs(x - width / 2) <= bladeWidth / 2 + Scene::kPushReach);
+            CHECK(z >= 10 - Scene::kPushReach);
+            CHECK(z <= 11 + Scene::kPushReach);
+        }
+    CHECK(changed > 0);
+}
+
+TEST_CASE("a body pressed down into sand, wider than a straight way reaches, still pushes every grain out") {
+    Scene scene = makeSandboxScene(canvasSettingsForWidth(48), 6);
+    const std::int64_t grains = scene.grainCount();
+    const int side = 2 * Scene::kPushReach + 4; // its middle lies further than a walk from its edges
+    REQUIRE(scene.addBody({makeBoxShape({side, 2, side}), {24, 8, 24}, 0}) == 0);
+    const BodyMove move = scene.moveBody(0, {24, 3, 24}, 100);
+    CHECK(same(move.reached, {24, 3, 24}));
+    CHECK(move.grainsPushed >= std::int64_t(side) * side * 3);
+    CHECK(scene.grainCount() == grains);
     requireConsistent(scene);
 }
 
