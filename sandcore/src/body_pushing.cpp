@@ -7,13 +7,14 @@
 // A move is split into unit moves of one cell along one axis. For each, the cells the body is
 // entering are checked first: a wall (INVALID, which includes other bodies) or the grid's edge
 // stops it before anything changes. Then each grain in an entering cell, from the top layer
-// down, is pushed: a breadth-first search from its cell through the grains around it (never
-// through a wall, the body or another entering cell) finds the nearest EMPTY cell, trying the
-// direction of motion first, then the sides, then up, then down and back; the grains along the
-// path found each shift one cell toward that EMPTY cell, so the grain leaves the body's way and
-// the sand ahead bulges out where it has room. No grain is created, destroyed or left in the
-// body, and ids stay with grains. A search that finds no EMPTY cell within kPushSearchCells
-// cells stops the body (the grains pushed so far stay where they went).
+// down, is pushed: the shortest straight way out of its cell (StraightWayFinder: up, along its
+// layer and up, or under a wall or the body and up, through grains only) to an EMPTY cell
+// outside the body's way, or where there is none, a breadth-first search through the grains
+// around it for the nearest EMPTY cell. The grains along the way found each shift one cell
+// toward its EMPTY end, so the grain leaves the body's way and the sand ahead bulges out where
+// it has room. No grain is created, destroyed or left in the body, and ids stay with grains. A
+// search that finds no EMPTY cell within kPushSearchCells cells stops the body (the grains
+// pushed so far stay where they went).
 
 #include "grid_sweep.hpp"
 #include "push_search.hpp"
@@ -21,8 +22,10 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cstdlib>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 
 namespace sandcore {
@@ -56,12 +59,137 @@ std::array<Int3, 6> searchOrder(Int3 ahead) {
 
 // Which entering cells are pushed first: the top layer first (its grains find the surface at
 // once and make room for those below), then by index; a fixed order, so the result is too.
-void sortTopDown(std::vector<std::uint32_t>& cells, std::uint32_t layerSize) {
-    std::sort(cells.begin(), cells.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const std::uint32_t la = a / layerSize, lb = b / layerSize;
-        return la != lb ? la > lb : a < b;
-    });
+// `cells` come in ascending order, layer by layer, so this only turns the layers' order over.
+void orderTopDown(std::vector<std::uint32_t>& cells, std::uint32_t layerSize, std::vector<std::uint32_t>& scratch) {
+    scratch.clear();
+    for (std::size_t end = cells.size(); end > 0;) {
+        const std::uint32_t layer = cells[end - 1] / layerSize;
+        std::size_t begin = end - 1;
+        while (begin > 0 && cells[begin - 1] / layerSize == layer) --begin;
+        scratch.insert(scratch.end(), cells.begin() + std::ptrdiff_t(begin), cells.begin() + std::ptrdiff_t(end));
+        end = begin;
+    }
+    cells.swap(scratch);
 }
+
+// A way out of the shape most pushes take: `descent` cells straight down, `walk` cells straight
+// along `step` (a horizontal direction), `climb` cells straight up, through grains only (the
+// body's way included where it still holds them), ending in an EMPTY cell outside the body's way.
+struct StraightWay {
+    int descent = 0;
+    int walk = 0;
+    int climb = 0;
+    Int3 step{};
+    int length() const { return descent + walk + climb; }
+};
+
+// What a push needs to know of the grid: its cells, and which of them are the body's way.
+struct PushGrid {
+    const CellGrid& cells;
+    const std::vector<std::uint8_t>& inWay; // 1 for the cells the body enters in this unit move
+    Int3 ahead;                             // the unit move's direction
+};
+
+// The shortest straight way out of a grain's cell, from a few dozen cells instead of a search
+// through the sand around it:
+// - up: straight up its own column, as when the body rises under sand;
+// - along and up: 1 to kPushReach cells along its layer in one of the four horizontal
+//   directions, then up that column: the sand rises onto the lowest column near the body's face,
+//   ahead, or beside it at the body's edges;
+// - down, along and up, in a direction where a wall or a body (INVALID) stopped the walk along
+//   the layer: under it and up on its far side, as sand flows under a blade into the trench
+//   behind it.
+// Among ways of one length the winner is the one a breadth-first search in searchOrder would
+// reach first: by its first step (ahead, the sides, up, down, back), then its walk's direction,
+// then the longer walk, so sand runs down a heap's slope to its foot instead of piling up at the
+// body's face.
+class StraightWayFinder {
+public:
+    explicit StraightWayFinder(const PushGrid& grid) : grid_(grid), order_(searchOrder(grid.ahead)) {}
+
+    std::optional<StraightWay> find(std::uint32_t cell) {
+        start_ = grid_.cells.coordinate(cell);
+        best_.reset();
+        std::array<bool, 6> stoppedByWall{};
+        offerClimb({}, start_);
+        for (std::size_t d = 0; d < order_.size(); ++d)
+            if (order_[d].y == 0) stoppedByWall[d] = walkAlong({0, 0, 0, order_[d]}, start_);
+        for (int descent = 1; descent <= budget(); ++descent) {
+            const Int3 below{start_.x, start_.y - descent, start_.z};
+            const Pass pass = passAt(below);
+            if (pass == Pass::Shut) break;
+            if (pass == Pass::Open) {
+                offer({descent, 0, 0, {}});
+                break;
+            }
+            for (std::size_t d = 0; d < order_.size(); ++d)
+                if (stoppedByWall[d]) walkAlong({descent, 0, 0, order_[d]}, below);
+        }
+        return best_;
+    }
+
+private:
+    enum class Pass { Grain, Open, Shut }; // Open: EMPTY outside the body's way, where a way ends
+
+    Pass passAt(Int3 c) const {
+        if (!grid_.cells.contains(c.x, c.y, c.z)) return Pass::Shut;
+        const std::uint32_t n = grid_.cells.index(c);
+        const CellValue value = grid_.cells[n];
+        if (value == kInvalid) return Pass::Shut;
+        if (value == kEmpty) return grid_.inWay[n] ? Pass::Shut : Pass::Open;
+        return Pass::Grain;
+    }
+    bool isWall(Int3 c) const { return grid_.cells.contains(c.x, c.y, c.z) && grid_.cells[grid_.cells.index(c)] == kInvalid; }
+
+    // How many more cells a way may take and still tie with the best found.
+    int budget() const { return best_ ? best_->length() : INT_MAX / 2; }
+
+    // Walks `way.step` from `from` (the way so far ends there), offering each column's climb; true
+    // when a wall or a body stopped it (the edge of the grid or the body's way do not count).
+    bool walkAlong(StraightWay way, Int3 from) {
+        for (way.walk = 1; way.walk <= Scene::kPushReach && way.descent + way.walk <= budget(); ++way.walk) {
+            const Int3 at{from.x + way.walk * way.step.x, from.y, from.z + way.walk * way.step.z};
+            const Pass pass = passAt(at);
+            if (pass == Pass::Shut) return isWall(at);
+            if (pass == Pass::Open) {
+                offer(way);
+                return false;
+            }
+            offerClimb(way, at);
+        }
+        return false;
+    }
+
+    // Offers `way` (which ends at the grain in `from`) climbing on to the first EMPTY cell above.
+    void offerClimb(StraightWay way, Int3 from) {
+        for (way.climb = 1; way.length() <= budget(); ++way.climb) {
+            const Pass pass = passAt({from.x, from.y + way.climb, from.z});
+            if (pass == Pass::Shut) return;
+            if (pass == Pass::Open) {
+                offer(way);
+                return;
+            }
+        }
+    }
+
+    int rank(Int3 direction) const {
+        for (std::size_t d = 0; d < order_.size(); ++d)
+            if (same(order_[d], direction)) return int(d);
+        return int(order_.size());
+    }
+    std::array<int, 4> key(const StraightWay& way) const {
+        const int firstStep = rank(way.descent > 0 ? minus(kUp) : way.walk > 0 ? way.step : kUp);
+        return {way.length(), firstStep, way.walk > 0 ? rank(way.step) : 0, -way.walk};
+    }
+    void offer(const StraightWay& way) {
+        if (!best_ || key(way) < key(*best_)) best_ = way;
+    }
+
+    PushGrid grid_;
+    std::array<Int3, 6> order_;
+    Int3 start_{};
+    std::optional<StraightWay> best_;
+};
 
 } // namespace
 
@@ -72,7 +200,7 @@ bool Scene::bodyCellsAt(const MovingBody& body, std::vector<std::uint32_t>& cell
         if (!lower_.contains(c.x, c.y, c.z)) return false;
         cells.push_back(lower_.index(c));
     }
-    std::sort(cells.begin(), cells.end());
+    if (!std::is_sorted(cells.begin(), cells.end())) std::sort(cells.begin(), cells.end()); // a turned body's are not
     return true;
 }
 
@@ -161,17 +289,20 @@ BodyMove Scene::moveBody(std::size_t index, Int3 target, int maxCells) {
 // Replaces `body`'s cells by `next`'s (see the top of this file); false when a wall, the grid's
 // edge or a grain with no room stops it, with `body` where it was.
 bool Scene::shiftBody(MovingBody& body, const MovingBody& next, Int3 ahead, std::int64_t& pushed) {
-    std::vector<std::uint32_t> before, after, entering, leaving;
+    if (!pushSearch_ || pushSearch_->stamp.size() != lower_.cellCount())
+        pushSearch_ = std::make_unique<PushSearch>(lower_.cellCount());
+    PushSearch& search = *pushSearch_;
+    std::vector<std::uint32_t>&before = search.before, &after = search.after, &entering = search.entering, &leaving = search.leaving;
     if (!bodyCellsAt(body, before) || !bodyCellsAt(next, after)) return false;
+    entering.clear();
+    leaving.clear();
     std::set_difference(after.begin(), after.end(), before.begin(), before.end(), std::back_inserter(entering));
     std::set_difference(before.begin(), before.end(), after.begin(), after.end(), std::back_inserter(leaving));
     for (std::uint32_t n : entering)
         if (lower_[n] == kInvalid) return false;
 
-    if (!pushSearch_ || pushSearch_->stamp.size() != lower_.cellCount())
-        pushSearch_ = std::make_unique<PushSearch>(lower_.cellCount());
-    for (std::uint32_t n : entering) pushSearch_->entering[n] = 1;
-    sortTopDown(entering, lower_.layerSize());
+    for (std::uint32_t n : entering) search.inWay[n] = 1;
+    orderTopDown(entering, lower_.layerSize(), search.before); // `before` is done with
     // Each push takes one grain out of the entering cells (a path may pass through others, which
     // stay full), so passes over them until none holds a grain end after that many pushes.
     bool roomForAll = true, anyPushed = false;
@@ -187,7 +318,7 @@ bool Scene::shiftBody(MovingBody& body, const MovingBody& next, Int3 ahead, std:
             ++pushed;
         }
     }
-    for (std::uint32_t n : entering) pushSearch_->entering[n] = 0;
+    for (std::uint32_t n : entering) search.inWay[n] = 0;
     if (anyPushed) dropPushedFromMoveList();
     if (!roomForAll) return false;
 
@@ -206,9 +337,35 @@ bool Scene::shiftBody(MovingBody& body, const MovingBody& next, Int3 ahead, std:
     return true;
 }
 
-// Finds the EMPTY cell nearest to the grain in `cell` and shifts the grains along the way one
-// cell toward it; false (nothing changed) when none lies within kPushSearchCells cells.
+// Finds a way out for the grain in `cell` (straightWayOut, else nearestWayOut) and shifts the grains
+// along it one cell toward its EMPTY end; false (nothing changed) when there is none.
 bool Scene::pushOut(std::uint32_t cell, Int3 ahead) {
+    std::vector<std::uint32_t>& way = pushSearch_->way;
+    if (!straightWayOut(cell, ahead) && !nearestWayOut(cell, ahead)) return false;
+    // From the EMPTY end back to the pushed grain: each grain moves one cell into the cell the
+    // one after it just left, so every cell but the two ends stays as full as it was.
+    for (std::size_t i = way.size() - 1; i > 0; --i) moveGrainAside(way[i - 1], way[i]);
+    return true;
+}
+
+// The way out most pushes take, found by looking at a few dozen cells (see StraightWayFinder).
+bool Scene::straightWayOut(std::uint32_t cell, Int3 ahead) {
+    PushSearch& search = *pushSearch_;
+    const std::optional<StraightWay> way = StraightWayFinder({lower_, search.inWay, ahead}).find(cell);
+    if (!way) return false;
+    const Int3 start = lower_.coordinate(cell);
+    search.way.assign(1, cell);
+    Int3 at = start;
+    for (int i = 0; i < way->descent; ++i) search.way.push_back(lower_.index(at = plus(at, minus(kUp))));
+    for (int i = 0; i < way->walk; ++i) search.way.push_back(lower_.index(at = plus(at, way->step)));
+    for (int i = 0; i < way->climb; ++i) search.way.push_back(lower_.index(at = plus(at, kUp)));
+    return true;
+}
+
+// The way out when there is no straight one (a body sunk into sand from above, a grain walled
+// in): a breadth-first search from the grain through the grains around it for the nearest EMPTY
+// cell, trying the directions in searchOrder; false when none lies within kPushSearchCells cells.
+bool Scene::nearestWayOut(std::uint32_t cell, Int3 ahead) {
     PushSearch& search = *pushSearch_;
     const std::array<Int3, 6> order = searchOrder(ahead);
     const std::uint32_t stamp = search.nextStamp();
@@ -229,7 +386,7 @@ bool Scene::pushOut(std::uint32_t cell, Int3 ahead) {
             const CellValue value = lower_[neighbour];
             if (search.stamp[neighbour] == stamp || value == kInvalid) continue;
             // The body's way is no place to push to; its grains may be pushed along, later out.
-            const bool entering = search.entering[neighbour] != 0;
+            const bool entering = search.inWay[neighbour] != 0;
             if (entering && value == kEmpty) continue;
             search.stamp[neighbour] = stamp;
             search.cameBy[neighbour] = std::uint8_t(d);
@@ -242,16 +399,11 @@ bool Scene::pushOut(std::uint32_t cell, Int3 ahead) {
         }
     }
     if (found < 0) return false;
-    // Shift from the EMPTY end back to the pushed grain: each grain moves one cell into the cell
-    // the one before it just left.
-    std::uint32_t to = std::uint32_t(found);
-    while (to != cell) {
-        const Int3 c = lower_.coordinate(to);
-        const Int3 from = plus(c, minus(order[search.cameBy[to]]));
-        const std::uint32_t fromCell = lower_.index(from);
-        moveGrainAside(fromCell, to);
-        to = fromCell;
-    }
+    search.way.clear();
+    for (std::uint32_t n = std::uint32_t(found); n != cell; n = std::uint32_t(std::int64_t(n) - indexStep[search.cameBy[n]]))
+        search.way.push_back(n);
+    search.way.push_back(cell);
+    std::reverse(search.way.begin(), search.way.end());
     return true;
 }
 

@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -177,6 +178,45 @@ TEST_CASE("a body pushes the grains in its way, each once, into EMPTY cells outs
     requireConsistent(scene);
 }
 
+TEST_CASE("a blade's pushes stay near it: the sand rises ahead and beside it, or flows under it") {
+    const int width = 48, bed = 8, bladeWidth = 12, thickness = 2;
+    Scene scene = makeSandboxScene(canvasSettingsForWidth(width), bed);
+    REQUIRE(scene.addBody({makeBladeShape(bladeWidth, bed + 4, thickness), {width / 2, bed - 5, 10}, 0}) == 0);
+    for (int i = 0; i < 6; ++i) scene.step();
+    std::vector<int> before;
+    for (int z = 0; z < width; ++z)
+        for (int x = 0; x < width; ++x) before.push_back(columnHeight(scene, x, z));
+    const BodyMove move = scene.moveBody(0, {width / 2, bed - 5, 11}, 1);
+    REQUIRE(move.cellsMoved == 1);
+    CHECK(move.grainsPushed >= bladeWidth * 5);
+    requireConsistent(scene);
+    // The blade now covers z 10..11 (its anchor's z and the cell before it).
+    int changed = 0;
+    for (int z = 0; z < width; ++z)
+        for (int x = 0; x < width; ++x) {
+            if (columnHeight(scene, x, z) == before[std::size_t(x + width * z)]) continue;
+            ++changed;
+            CAPTURE(x);
+            CAPTURE(z);
+            CHECK(std::abs(x - width / 2) <= bladeWidth / 2 + Scene::kPushReach);
+            CHECK(z >= 10 - Scene::kPushReach);
+            CHECK(z <= 11 + Scene::kPushReach);
+        }
+    CHECK(changed > 0);
+}
+
+TEST_CASE("a body pressed down into sand, wider than a straight way reaches, still pushes every grain out") {
+    Scene scene = makeSandboxScene(canvasSettingsForWidth(48), 6);
+    const std::int64_t grains = scene.grainCount();
+    const int side = 2 * Scene::kPushReach + 4; // its middle lies further than a walk from its edges
+    REQUIRE(scene.addBody({makeBoxShape({side, 2, side}), {24, 8, 24}, 0}) == 0);
+    const BodyMove move = scene.moveBody(0, {24, 3, 24}, 100);
+    CHECK(same(move.reached, {24, 3, 24}));
+    CHECK(move.grainsPushed >= std::int64_t(side) * side * 3);
+    CHECK(scene.grainCount() == grains);
+    requireConsistent(scene);
+}
+
 TEST_CASE("a fast body stops at a wall and leaves no sand inside itself") {
     for (int speed : {3, 7, 50}) {
         CAPTURE(speed);
@@ -293,8 +333,8 @@ TEST_CASE("a blade's dig through the sandbox has recorded hashes (granular and c
         hashes.push_back(scene.stateHash());
         pushed.push_back(scene.grainsPushedTotal());
     }
-    CHECK(hashes[0] == 18285242836518611530ull);
-    CHECK(pushed[0] == 2021);
-    CHECK(hashes[1] == 4919118135596393635ull);
-    CHECK(pushed[1] == 2031);
+    CHECK(hashes[0] == 9186277622045610897ull);
+    CHECK(pushed[0] == 2024);
+    CHECK(hashes[1] == 17715852765768350900ull);
+    CHECK(pushed[1] == 2042);
 }

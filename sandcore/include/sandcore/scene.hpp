@@ -186,7 +186,10 @@ public:
     std::vector<std::uint32_t> bodyCells(std::size_t index) const;
     /// Grains bodies pushed since the scene was built (not part of a snapshot).
     std::int64_t grainsPushedTotal() const { return grainsPushedTotal_; }
-    /// Most cells a push looks through for an EMPTY cell before the body stops instead.
+    /// Most cells a push walks along a grain's layer before it climbs to the surface (the way
+    /// out most pushes take, docs/engine.md "Moving bodies").
+    static constexpr int kPushReach = 8;
+    /// Most cells a push with no such way looks through for an EMPTY cell before the body stops instead.
     static constexpr int kPushSearchCells = 1 << 16;
 
     /// A grid's layout (EMPTY and INVALID cells only, no obstacles, no grains), turned over as the
@@ -216,6 +219,8 @@ private:
     bool bodyCellsAt(const MovingBody& body, std::vector<std::uint32_t>& cells) const;
     bool shiftBody(MovingBody& body, const MovingBody& next, Int3 ahead, std::int64_t& pushed);
     bool pushOut(std::uint32_t cell, Int3 ahead);
+    bool straightWayOut(std::uint32_t cell, Int3 ahead);
+    bool nearestWayOut(std::uint32_t cell, Int3 ahead);
     void dropPushedFromMoveList();
     void moveGrainAside(std::uint32_t from, std::uint32_t to);
     bool coveredByBody(std::uint32_t lowerCell) const;
