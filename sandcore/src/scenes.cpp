@@ -101,12 +101,12 @@ std::int64_t reachableBelow(const InsideMask& lower, int apexX, int apexZ, Physi
     return cells;
 }
 
-// The sand a lower bulb surely takes without choking its neck (S3, W1). A grain rests in a neck
-// cell only when the 9 cells below it are full, and so on down: only when every cell a grain
-// can reach from that neck cell is full. Less sand than the fewest cells reachable from any
-// neck cell therefore all runs through. The fewest are found at the
-// neck's rim: its middle and its farthest cells along the four axis and four diagonal
-// directions stand for the rest.
+// The sand a lower bulb takes without choking its neck (S3, W1). A grain rests in a neck cell
+// only when the 9 cells below it are full, and so on down: only when every cell a grain can
+// reach from that neck cell is full. Less sand than the fewest cells reachable from any neck cell
+// therefore all runs through (strictly so under the classic rules; see reachableBelow). The
+// fewest are found at the neck's rim: its middle and its farthest cells along the four axis and
+// four diagonal directions stand for the rest.
 std::int64_t heapCapacity(const InsideMask& lower, PhysicsLevel rules) {
     const int neck = lower.size.y - 1;
     std::vector<std::array<int, 2>> cells;
