@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "sandcore/scenes.hpp"
 
+#include "granular_rules.hpp"
 #include "hourglass_split.hpp"
+#include "threshold_dither.hpp"
 #include "sandcore/mask_cleanup.hpp"
 
 #include <algorithm>
@@ -65,49 +67,74 @@ InsideMask drainedBulbAbove(const InsideMask& vessel, int neck) {
     return sliceLayers(carved, neck, vessel.size.y - 1);
 }
 
-// The cells of a lower bulb (its top layer the neck) that a grain can reach from the neck cell
-// (apexX, apexZ): one layer down and at most one cell aside in x and z per step (R2's
-// successors), through the bulb's own cells. Under the granular rules (PH2) a move counts only
-// when the cell beside the grain in its own layer lies in the bulb too: a slide needs its path
-// open, so a grain under the bulb's roof, which narrows up to the neck, cannot slide outwards.
-// This is no strict bound there: a slide of one column along a diagonal may need two open cells
-// below (its threshold sqrt(2) T is above 1 from about 30 degrees), so a few grains may rest in
-// the neck of a bulb the sand fills to the top (docs/shapes.md gives how many).
-std::int64_t reachableBelow(const InsideMask& lower, int apexX, int apexZ, PhysicsLevel rules) {
-    const bool granular = rules == PhysicsLevel::Granular;
+// How deep a slide's target column must be open for a grain at rest to take it. Classic rules
+// (R2): one cell for every neighbour. Granular rules (PH2): a grain on sand needs
+// max(1, floor(T|e| + u)) cells, u the lower grid's fixed dither of its column and offset under
+// the scene's seed; a grain on the glass needs one, which only lets it go further.
+class SlideNeeds {
+public:
+    explicit SlideNeeds(const StepSettings& step)
+        : granular_(step.physics.level == PhysicsLevel::Granular), rules_(step.physics),
+          dither_(step.seed, std::uint64_t(GridLevel::Lower)) {}
+
+    bool granular() const { return granular_; }
+    int cellsDeep(int x, int z, int dx, int dz) const {
+        if (!granular_) return 1;
+        const int k = GranularRules::offsetIndex(dx, dz);
+        const int whole = int(rules_.offset(k).thresholdQ8 >> 8);
+        return std::max(1, whole + (rules_.carries(dither_, x, z, k) ? 1 : 0));
+    }
+
+private:
+    bool granular_;
+    GranularRules rules_;
+    ThresholdDither dither_;
+};
+
+// The cells of a lower bulb (its top layer the neck) that are surely full once a grain rests in
+// the neck cell (apexX, apexZ) with everything below it at rest. A grain at rest has a full cell
+// under it, and every slide it could take is shut: for the slide into a neighbouring column that
+// needs n open cells, one of the n cells below the grain's layer there is full, and with it all
+// the cells under that one, so the n-th is (when all n lie in the bulb). Slides whose path at the
+// grain's level is the glass never open (granular rules), and the longer granular slides are
+// left out: fewer successors only make the count smaller. So every counted cell is full, and
+// the count is a strict bound under both rule sets for the scene's seed and physics.
+std::int64_t reachableBelow(const InsideMask& lower, int apexX, int apexZ, const SlideNeeds& needs) {
     const int neck = lower.size.y - 1;
-    std::vector<std::uint32_t> layer{std::uint32_t(lower.indexOf(apexX, neck, apexZ))}, next;
     std::vector<std::uint8_t> reached(lower.inside.size(), 0);
+    // The reached cells by layer, as (x, z): successors lie one or more layers down, so going down
+    // layer by layer sees every reached cell before its successors.
+    std::vector<std::vector<std::array<int, 2>>> byLayer(std::size_t(neck + 1));
+    byLayer[std::size_t(neck)].push_back({apexX, apexZ});
+    reached[lower.indexOf(apexX, neck, apexZ)] = 1;
     std::int64_t cells = 0;
-    for (int y = neck; y > 0 && !layer.empty(); --y) {
-        next.clear();
-        for (std::uint32_t n : layer) {
-            const int x = int(n % std::uint32_t(lower.size.x)), z = int((n / std::uint32_t(lower.size.x)) % std::uint32_t(lower.size.z));
+    for (int y = neck; y > 0; --y)
+        for (const auto [x, z] : byLayer[std::size_t(y)])
             for (int dz = -1; dz <= 1; ++dz)
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int bx = x + dx, bz = z + dz;
-                    if (bx < 0 || bz < 0 || bx >= lower.size.x || bz >= lower.size.z || !lower.at(bx, y - 1, bz)) continue;
-                    if (granular && !lower.at(bx, y, bz)) continue;
-                    const std::size_t m = lower.indexOf(bx, y - 1, bz);
-                    if (!reached[m]) {
-                        reached[m] = 1;
-                        next.push_back(std::uint32_t(m));
-                    }
+                    if (bx < 0 || bz < 0 || bx >= lower.size.x || bz >= lower.size.z) continue;
+                    const bool straightDown = dx == 0 && dz == 0;
+                    if (needs.granular() && !straightDown && !lower.at(bx, y, bz)) continue;
+                    const int deep = straightDown ? 1 : needs.cellsDeep(x, z, dx, dz);
+                    bool open = y - deep >= 0;
+                    for (int d = 1; d <= deep && open; ++d) open = lower.at(bx, y - d, bz);
+                    if (!open) continue;
+                    std::uint8_t& target = reached[lower.indexOf(bx, y - deep, bz)];
+                    if (target) continue;
+                    target = 1;
+                    ++cells;
+                    byLayer[std::size_t(y - deep)].push_back({bx, bz});
                 }
-        }
-        cells += std::int64_t(next.size());
-        layer.swap(next);
-    }
     return cells;
 }
 
-// The sand a lower bulb takes without choking its neck (S3, W1). A grain rests in a neck cell
-// only when the 9 cells below it are full, and so on down: only when every cell a grain can
-// reach from that neck cell is full. Less sand than the fewest cells reachable from any neck cell
-// therefore all runs through (strictly so under the classic rules; see reachableBelow). The
-// fewest are found at the neck's rim: its middle and its farthest cells along the four axis and
-// four diagonal directions stand for the rest.
-std::int64_t heapCapacity(const InsideMask& lower, PhysicsLevel rules) {
+// The sand a lower bulb takes without choking its neck (S3, W1): less than the cells
+// reachableBelow counts from any neck cell all runs through, as sand that stays above the neck
+// rests on a neck cell and so on all the cells counted from it. Small necks are counted from
+// every cell; wide ones from those that reach fewest, found at the rim: the middle and the
+// farthest cells along the four axis and four diagonal directions.
+std::int64_t heapCapacity(const InsideMask& lower, const StepSettings& step) {
     const int neck = lower.size.y - 1;
     std::vector<std::array<int, 2>> cells;
     double cx = 0.0, cz = 0.0;
@@ -120,17 +147,21 @@ std::int64_t heapCapacity(const InsideMask& lower, PhysicsLevel rules) {
     if (cells.empty()) return 0;
     cx /= double(cells.size());
     cz /= double(cells.size());
-    constexpr std::array<std::array<int, 2>, 8> kDirections{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}}};
     std::vector<std::array<int, 2>> apexes;
-    // The middle: the neck cell nearest the neck's centre.
-    auto nearCentre = [&](const std::array<int, 2>& c) { return (c[0] - cx) * (c[0] - cx) + (c[1] - cz) * (c[1] - cz); };
-    apexes.push_back(*std::min_element(cells.begin(), cells.end(), [&](const auto& p, const auto& q) { return nearCentre(p) < nearCentre(q); }));
-    for (const std::array<int, 2>& d : kDirections)
-        apexes.push_back(*std::max_element(cells.begin(), cells.end(), [&](const auto& p, const auto& q) {
-            return d[0] * p[0] + d[1] * p[1] < d[0] * q[0] + d[1] * q[1];
-        }));
+    constexpr std::size_t kEveryCellUpTo = 64;
+    if (cells.size() <= kEveryCellUpTo) apexes = cells;
+    else {
+        constexpr std::array<std::array<int, 2>, 8> kDirections{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}}};
+        auto nearCentre = [&](const std::array<int, 2>& c) { return (c[0] - cx) * (c[0] - cx) + (c[1] - cz) * (c[1] - cz); };
+        apexes.push_back(*std::min_element(cells.begin(), cells.end(), [&](const auto& p, const auto& q) { return nearCentre(p) < nearCentre(q); }));
+        for (const std::array<int, 2>& d : kDirections)
+            apexes.push_back(*std::max_element(cells.begin(), cells.end(), [&](const auto& p, const auto& q) {
+                return d[0] * p[0] + d[1] * p[1] < d[0] * q[0] + d[1] * q[1];
+            }));
+    }
+    const SlideNeeds needs(step);
     std::int64_t fewest = INT64_MAX;
-    for (const std::array<int, 2>& apex : apexes) fewest = std::min(fewest, reachableBelow(lower, apex[0], apex[1], rules));
+    for (const std::array<int, 2>& apex : apexes) fewest = std::min(fewest, reachableBelow(lower, apex[0], apex[1], needs));
     return fewest;
 }
 
@@ -189,7 +220,7 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialS
         // Turned over (T1), the lower bulb drains too: carve it as the upper bulb it then becomes.
         const InsideMask lower = hourglass.drainCompletely ? mirroredInY(drainedBulbAbove(mirroredInY(vessel), top - neck))
                                                            : sliceLayers(vessel, 0, neck);
-        capacity = heapCapacity(lower, step.physics.level);
+        capacity = heapCapacity(lower, step);
         lowerLayout = layoutFromMask(lower);
     }
     std::vector<std::uint32_t> fill;

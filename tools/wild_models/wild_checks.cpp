@@ -6,6 +6,7 @@
 
 #include "sandcore/cell_grid.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -113,8 +114,11 @@ void checkHourglass(const WildModel& model, const BuiltScene& first, const Check
         return;
     }
     if (!settings.drain) return;
+    const double rate = built.scene.neckFlowRate();
+    const double stepsAtRate = rate > 0.0 ? 2.0 * double(built.scene.grainCount()) / rate : 0.0;
+    const int maxSteps = int(std::max(double(settings.maxSteps), stepsAtRate));
     int steps = 0;
-    while (built.scene.counters().grainsUpper > 0 && !built.scene.settled() && steps < settings.maxSteps) {
+    while (built.scene.counters().grainsUpper > 0 && !built.scene.settled() && steps < maxSteps) {
         built.scene.step();
         ++steps;
         if (steps % settings.checkEvery == 0)

@@ -30,7 +30,10 @@ struct ModelCheck {
 struct CheckSettings {
     int resolution = 64;   ///< cells along the model's largest extent
     bool drain = true;     ///< step until the sand has run through (hourglass) or collapsed (sculpture)
-    int maxSteps = 200000; ///< give up draining after this many steps (a one-cell neck passes 0.065 grains a step)
+    /// Give up draining after this many steps, or after twice the steps the granular neck's
+    /// Beverloo rate needs for all the sand if that is more (a one-cell neck passes 0.065 grains
+    /// a step).
+    int maxSteps = 200000;
     int checkEvery = 10;   ///< look at every grain after this many steps
     sandcore::PhysicsLevel physics = sandcore::PhysicsSettings{}.level; ///< the rules that drain it
 };
