@@ -104,6 +104,18 @@ int drain(double neck, int height, double gravity, int threads) {
     const double cv = std::sqrt(sq / double(rates.size() - 1)) / mean;
     std::printf("neck %.2f height %d g %.3f grains %lld steps %zu  rate %.3f (model %.3f)  CV %.2f%%  %.1fs\n", neck,
                 height, gravity, (long long)total, passed.size(), mean, scene.neckFlowRate(), 100 * cv, seconds(start));
+    // The rate in each tenth of the drain: where along it the cells fall short of the model.
+    std::printf("rate by tenth of the sand passed:");
+    std::int64_t tenthGrains = 0, tenthSteps = 0, sum = 0;
+    int tenth = 0;
+    for (std::int64_t p : passed) {
+        sum += p, tenthGrains += p, ++tenthSteps;
+        if (sum * 10 >= (tenth + 1) * total) {
+            std::printf(" %.1f", double(tenthGrains) / double(tenthSteps));
+            ++tenth, tenthGrains = 0, tenthSteps = 0;
+        }
+    }
+    std::printf("\n");
     return 0;
 }
 

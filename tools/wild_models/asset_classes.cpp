@@ -17,6 +17,8 @@ CanonicalModel buildOneObjectAsset(Rng& rng) {
     GroundTruth& truth = model.truth;
     truth.bottom = plate + (chance(rng, 0.5) ? 0.0 : uniform(rng, 0.0, 0.012));
     const double top = 1.0 - plate - (chance(rng, 0.5) ? 0.0 : uniform(rng, 0.0, 0.012));
+    truth.openBelow = truth.bottom - plate;
+    truth.openAbove = 1.0 - plate - top;
     const HourglassRequest request{.innerHeight = top - truth.bottom, .neckRadius = uniform(rng, 0.012, 0.04),
                                    .neckTube = uniform(rng, 0.005, 0.04)};
     truth.profile = hourglassProfile(rng, request, truth.neckHeight);

@@ -100,6 +100,8 @@ CanonicalModel buildThickFramed(Rng& rng) {
         const double gapBottom = rimGap(rng), gapTop = rimGap(rng);
         postsInside = gapBottom < 0;
         truth.bottom = plate + std::max(0.0, gapBottom);
+        truth.openBelow = std::max(0.0, gapBottom);
+        truth.openAbove = std::max(0.0, gapTop);
         request.innerHeight = 1.0 - plate - std::max(0.0, gapTop) - truth.bottom;
         truth.profile = hourglassProfile(rng, request, truth.neckHeight);
         const std::vector<ProfileSample> inner = raised(truth.profile, truth.bottom);
@@ -149,6 +151,8 @@ CanonicalModel buildSingleWall(Rng& rng) {
         // Open at both ends and covered by plates, with a gap under a cell.
         truth.bottom = plate + uniform(rng, 0.0, 0.012);
         top = 1.0 - plate - uniform(rng, 0.0, 0.012);
+        truth.openBelow = truth.bottom - plate;
+        truth.openAbove = 1.0 - plate - top;
     }
     request.innerHeight = top - truth.bottom;
     truth.profile = hourglassProfile(rng, request, truth.neckHeight);
@@ -171,6 +175,8 @@ CanonicalModel buildOpenBulbsPlates(Rng& rng) {
     GroundTruth& truth = model.truth;
     truth.bottom = plate + cap + uniform(rng, 0.0, 0.012);
     const double top = 1.0 - plate - cap - uniform(rng, 0.0, 0.012);
+    truth.openBelow = truth.bottom - (plate + cap);
+    truth.openAbove = 1.0 - plate - cap - top;
     const HourglassRequest request{.innerHeight = top - truth.bottom, .neckRadius = uniform(rng, 0.012, 0.04),
                                    .neckTube = std::max(uniform(rng, 0.005, 0.03), neckGap + 0.004)};
     truth.profile = hourglassProfile(rng, request, truth.neckHeight);

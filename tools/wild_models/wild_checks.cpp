@@ -49,6 +49,14 @@ std::string grainOutside(const BuiltScene& built, const WildModel& model, double
     forEachGrain(built, [&](sandcore::Vec3 p) {
         if (model.insideGlass(p, tolerance)) return true;
         found = "a grain outside the glass at " + where(p);
+        if (model.neckHeight() > 0) {
+            // Where along the glass: a grain beside the neck or under the base reads at once.
+            const AxisPosition at = model.axisPositionOf({double(p.x), double(p.y), double(p.z)});
+            char text[160];
+            std::snprintf(text, sizeof text, ", %g up the axis and %g from it, where the glass is %g wide (neck at %g)", at.height,
+                          at.distance, model.innerRadiusAt(at.height), model.neckHeight());
+            found += text;
+        }
         return false;
     });
     return found;

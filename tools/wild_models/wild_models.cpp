@@ -140,7 +140,14 @@ Point WildModel::canonicalOf(Point p) const {
 bool WildModel::insideGlass(sandcore::Vec3 p, double tolerance) const {
     const Point c = canonicalOf({p.x, p.y, p.z});
     const double band = tolerance / unitScale;
-    if (!truth.profile.empty()) return distanceToProfile(truth.profile, c[1] - truth.bottom, std::hypot(c[0], c[2])) <= band;
+    if (!truth.profile.empty()) {
+        const double h = c[1] - truth.bottom, d = std::hypot(c[0], c[2]);
+        if (distanceToProfile(truth.profile, h, d) <= band) return true;
+        const ProfileSample &bottom = truth.profile.front(), &top = truth.profile.back();
+        const bool underOpening = h < 0 && h >= -truth.openBelow - band && d <= bottom.radius + band;
+        const bool overOpening = h > top.height && h <= top.height + truth.openAbove + band && d <= top.radius + band;
+        return underOpening || overOpening;
+    }
     for (const Ellipsoid& e : truth.ellipsoids) {
         double sum = 0.0;
         for (std::size_t k = 0; k < 3; ++k) sum += std::pow((c[k] - e.centre[k]) / e.radii[k], 2);

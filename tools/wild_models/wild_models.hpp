@@ -68,6 +68,10 @@ struct GroundTruth {
     double bottom = 0;                  ///< canonical y of profile height 0
     std::vector<ProfileSample> profile; ///< bottom to top, heights non-decreasing; empty without one
     double neckHeight = -1;             ///< profile height of the neck; negative: no neck between two bulbs
+    /// A glass open at its bottom (top) end over a plate with a gap: the gap, canonical units. The
+    /// column under (over) the opening down (up) to the plate is enclosed by glass and plate, so
+    /// sand there is inside; sand beside it, under the glass's rim, is not.
+    double openBelow = 0, openAbove = 0;
     std::vector<Ellipsoid> ellipsoids;  ///< solids whose union is the inside (characters)
     std::vector<Capsule> capsules;      ///< as ellipsoids
     std::vector<Box> boxes;             ///< as ellipsoids (keyboard keys)
