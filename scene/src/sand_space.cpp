@@ -88,6 +88,10 @@ void findSculpture(SandSpace& out, const sandcore::VoxelizeSettings& settings, c
         for (std::size_t n = 0; n < out.space.inside.size(); ++n)
             if (out.obstacles.inside[n]) out.space.inside[n] = 0;
     }
+    // W4: parts thinner than a cell hold a cell centre or not depending on where they lie, so
+    // some may be missing from the statue: say so, with the resolution that holds them all.
+    if (const std::string hint = thinPartsHint(out.parts, placement, settings.resolution, 1.0); !hint.empty())
+        out.note = "some parts may hold no sand: " + hint;
     if (request.up) {
         out.up = *request.up;
     } else {
@@ -132,9 +136,8 @@ SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSetting
     return out;
 }
 
-std::string noCellInsideMessage(const std::vector<ModelPart>& parts, const sandcore::VoxelPlacement& placement,
-                                int resolution, bool closed) {
-    std::string message = "no cell lies inside the model at resolution " + std::to_string(resolution);
+std::string thinPartsHint(const std::vector<ModelPart>& parts, const sandcore::VoxelPlacement& placement, int resolution,
+                          double thinnerThanCells) {
     // Each part's thinnest extent in cells; the median part decides the resolution to suggest.
     std::vector<double> thinnest;
     for (const ModelPart& part : parts) {
@@ -145,15 +148,19 @@ std::string noCellInsideMessage(const std::vector<ModelPart>& parts, const sandc
     }
     std::sort(thinnest.begin(), thinnest.end());
     const double median = thinnest.empty() ? 0.0 : thinnest[thinnest.size() / 2];
-    if (median > 0.0 && median < 2.0) {
-        const int needed = int(std::ceil(resolution * 2.0 / median));
-        char text[200];
-        std::snprintf(text, sizeof text, ": its %zu part%s are about %.2f cells thin; --res %d would give them two cells across",
-                      parts.size(), parts.size() == 1 ? "" : "s", median, needed);
-        message += text;
-    } else if (!closed) {
-        message += " (the mesh is open; try --robust)";
-    }
+    if (!(median > 0.0 && median < thinnerThanCells)) return "";
+    const int needed = int(std::ceil(resolution * 2.0 / median));
+    char text[200];
+    std::snprintf(text, sizeof text, "its %zu part%s are about %.2f cells thin; --res %d would give them two cells across",
+                  parts.size(), parts.size() == 1 ? "" : "s", median, needed);
+    return text;
+}
+
+std::string noCellInsideMessage(const std::vector<ModelPart>& parts, const sandcore::VoxelPlacement& placement,
+                                int resolution, bool closed) {
+    std::string message = "no cell lies inside the model at resolution " + std::to_string(resolution);
+    if (const std::string hint = thinPartsHint(parts, placement, resolution, 2.0); !hint.empty()) message += ": " + hint;
+    else if (!closed) message += " (the mesh is open; try --robust)";
     return message;
 }
 

@@ -79,6 +79,22 @@ TEST_CASE("W4: parts thinner than a cell get a refusal that names the resolution
     requireClassPasses(ModelClass::Keyboard, 8000, 4, withoutDrain());
 }
 
+TEST_CASE("W4: keys under a cell thin that still hold sand come with a note naming the resolution that holds them") {
+    TemporaryFolder folder;
+    CheckSettings settings = withoutDrain();
+    settings.resolution = 128; // keys about 0.6 cells thin: some hold cell centres, some do not
+    int noted = 0;
+    for (std::uint64_t seed = 8100; seed < 8104; ++seed) {
+        const WildModel model = generate(ModelClass::Keyboard, seed);
+        CAPTURE(seed);
+        REQUIRE(model.smallestPartExtent() < model.largestExtent() / settings.resolution);
+        const ModelCheck check = checkModel(model, folder / ("keyboard-" + std::to_string(seed) + ".obj"), settings);
+        CHECK_MESSAGE(check.passed(), check.failure);
+        if (check.note.find("--res ") != std::string::npos) ++noted;
+    }
+    CHECK(noted > 0);
+}
+
 TEST_CASE("W3: every kind of hourglass drains with no grain ever outside the glass, and all of it ends below the neck") {
     CheckSettings settings;
     settings.resolution = 40;

@@ -186,18 +186,21 @@ ModelCheck checkModel(const WildModel& model, const std::filesystem::path& file,
             }
             resolution = std::stoi(match[1]);
         }
-        // Keys a cell thick or more may hold cell centres: then sand in them is no failure.
-        const bool thinnerThanACell = model.smallestPartExtent() < model.largestExtent() / settings.resolution;
-        if (resolution == settings.resolution && thinnerThanACell) {
-            out.failure = "keys thinner than a cell gave sand at resolution " + std::to_string(resolution);
-            return out;
-        }
     }
+    // Keys under a cell thin hold a cell centre or not depending on where they lie: sand in some
+    // of them must come with a note that names the resolution that holds them all.
+    const bool thinnerThanACell = model.smallestPartExtent() < model.largestExtent() / resolution;
+    const bool expectThinNote = model.modelClass == ModelClass::Keyboard && resolution == settings.resolution && thinnerThanACell;
     try {
         const BuiltScene built = build(file, kind, settings, resolution, out.loadMilliseconds);
         out.loaded = true;
         out.note = built.note;
         out.grains = built.scene.grainCount();
+        if (expectThinNote && !std::regex_search(out.note, std::regex("--res [0-9]+"))) {
+            out.failure = "keys thinner than a cell gave sand at resolution " + std::to_string(resolution) +
+                          " with no note naming the resolution that holds them";
+            return out;
+        }
         if (sculpture) checkSculpture(model, built, out);
         else checkHourglass(model, built, settings, out);
     } catch (const std::exception& e) {

@@ -19,7 +19,7 @@ struct ModelCheck {
     std::string failure;            ///< the first property that failed, one line; empty when all held
     bool grainOutside = false;      ///< W3 broken: a grain was found outside the glass (or body) at some check
     std::int64_t grainsLeftAbove = -1; ///< after the drain, grains that stayed above the neck; -1: not drained
-    std::string note;               ///< the program's W5 note, if it gave one
+    std::string note;               ///< the program's note (W5: no hourglass; W4: parts too thin), if it gave one
     std::int64_t grains = 0;        ///< grains at the start
     double upperFillShare = 0.0;    ///< grains in the upper bulb / the upper bulb's volume in cells
     double loadMilliseconds = 0.0;  ///< whole build of the scene from the file, ms
@@ -46,8 +46,9 @@ struct CheckSettings {
 ///   as sand in the upper bulb, and every grain in the lower bulb at the end;
 /// - a funnel: a note, and every grain inside the funnel at the start;
 /// - a character: stood up along its true up axis, every sand cell inside its body;
-/// - a keyboard: where its keys are thinner than a cell, a clear refusal that names a resolution;
-///   at that resolution (or the one asked for) every sand cell in a key.
+/// - a keyboard: where its keys are thinner than a cell, a clear refusal that names a resolution,
+///   or sand in the keys that hold cell centres with a note that names one; at that resolution
+///   (or the one asked for) every sand cell in a key.
 ModelCheck checkModel(const WildModel& model, const std::filesystem::path& file, const CheckSettings& settings);
 
 } // namespace sandglass::wild

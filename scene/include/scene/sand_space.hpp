@@ -44,7 +44,7 @@ struct SandSpace {
     int cavities = 0;                   ///< spaces the walls enclose (hourglass)
     int closingCells = 0;               ///< hourglass: gaps in the walls closed, cells (0 = none)
     bool neckOpened = false;            ///< hourglass: a neck under a cell was opened to one cell
-    std::string note;                   ///< W5: why no hourglass was found and what was done instead; empty otherwise
+    std::string note;                   ///< W5: why no hourglass was found and what was done instead; W4: parts too thin for the grid; empty otherwise
     double cavityMilliseconds = 0.0;    ///< time of the sand-space search (hourglass), ms
     double loadMilliseconds = 0.0;      ///< time of reading the file and splitting it into parts, ms
 };
@@ -61,6 +61,11 @@ SandSpace loadSandSpace(const std::string& path, const sandcore::VoxelizeSetting
 /// along x and y (a figure modelled Z-up would lie on its back otherwise), else +y. A sculpture
 /// is made to stand, so its longest extent is taken as its height only when it is clearly so.
 sandcore::UpAxis sculptureUpAxis(const sandcore::MeshBounds& bounds);
+
+/// When the model's median part is thinner than `thinnerThanCells` cells at `resolution`: "its N
+/// parts are about X cells thin; --res R would give them two cells across"; else "".
+std::string thinPartsHint(const std::vector<ModelPart>& parts, const sandcore::VoxelPlacement& placement, int resolution,
+                          double thinnerThanCells);
 
 /// S1: why no cell lies inside the model at `resolution`, with the resolution that would give
 /// most of its parts two cells across when they are thinner than that (one line).
