@@ -3,6 +3,7 @@
 // the net changes they make (surface_upkeep.hpp).
 #include "sandcore/surface_upkeep.hpp"
 
+#include "surface_bits.hpp"
 #include "surface_shares.hpp"
 
 #include <cstdint>
@@ -76,9 +77,9 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene, WorkerPool* pool) {
 
 // The lower grid's top row and the upper grid's bottom row: synced from the grid, not flipped.
 bool SurfaceUpkeep::inSharedRow(GridLevel level, std::uint32_t cell) const {
-    const GridShape& lower = shapes_[index(GridLevel::Lower)];
+    const GridShape& lower = bits_->shapes[index(GridLevel::Lower)];
     return level == GridLevel::Lower ? cell >= lower.layer * std::uint32_t(lower.size.y - 1)
-                                     : cell < shapes_[index(GridLevel::Upper)].layer;
+                                     : cell < bits_->shapes[index(GridLevel::Upper)].layer;
 }
 
 // The two passes of flips for the moves in the grids a share owns.
@@ -92,20 +93,20 @@ void SurfaceUpkeep::flipMoves(const Scene& scene, GridShare& share) {
 // a share of one grid tests each move's grid once and nothing else about ownership.
 template <int Only> void SurfaceUpkeep::flipMovesOf(const Scene& scene, GridShare& share) {
     const std::span<const GrainMove> moved = latestMoves_;
-    const GridShape& lowerShape = shapes_[index(GridLevel::Lower)];
+    const GridShape& lowerShape = bits_->shapes[index(GridLevel::Lower)];
     const std::uint32_t lowerTopFirst = lowerShape.layer * std::uint32_t(lowerShape.size.y - 1);
     auto owns = [](GridLevel level) { return Only < 0 || int(index(level)) == Only; };
     auto withinGrid = [&](const GrainMove& move) {
         return move.cameFrom != kNoMove && (move.level != GridLevel::Lower || move.cell < lowerTopFirst);
     };
     auto leftCell = [&](const GrainMove& move) {
-        const GridShape& shape = shapes_[index(move.level)];
+        const GridShape& shape = bits_->shapes[index(move.level)];
         const MoveCode from = move.cameFrom;
         return std::uint32_t(std::int64_t(move.cell) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
                              std::int64_t(shape.layer) * moveDy(from));
     };
     auto worldOf = [&](const GrainMove& move) {
-        const Int3 c = shapes_[index(move.level)].coordinate(move.cell);
+        const Int3 c = bits_->shapes[index(move.level)].coordinate(move.cell);
         const Int3 o = origins_[index(move.level)];
         return Int3{c.x + o.x, c.y + o.y, c.z + o.z};
     };
@@ -122,7 +123,7 @@ template <int Only> void SurfaceUpkeep::flipMovesOf(const Scene& scene, GridShar
         if (i + kFetchAhead < moved.size()) {
             const GrainMove& ahead = moved[i + kFetchAhead];
             if (trackFlags_) prefetch(&grains_[ahead.grain]);
-            if (owns(ahead.level)) prefetch(grainBits_[index(ahead.level)].byteOf(ahead.cell));
+            if (owns(ahead.level)) prefetch(bits_->grain[index(ahead.level)].byteOf(ahead.cell));
         }
         const GrainMove& move = moved[i];
         if (!owns(move.level)) continue;
@@ -135,7 +136,7 @@ template <int Only> void SurfaceUpkeep::flipMovesOf(const Scene& scene, GridShar
             share.fromGrid.push_back({move.level, move.cell});
             continue;
         }
-        CellBits& bits = grainBits_[index(move.level)];
+        CellBits& bits = bits_->grain[index(move.level)];
         if (!bits.test(move.cell)) share.net.push_back({{move.level, move.cell}, true});
         bits.flip(move.cell);
     }
@@ -163,7 +164,7 @@ void SurfaceUpkeep::flipLeft(GridLevel level, std::uint32_t cell, GridShare& sha
         share.fromGrid.push_back({level, cell});
         return;
     }
-    CellBits& bits = grainBits_[index(level)];
+    CellBits& bits = bits_->grain[index(level)];
     if (bits.test(cell)) share.net.push_back({{level, cell}, false});
     bits.flip(cell);
 }
@@ -171,13 +172,13 @@ void SurfaceUpkeep::flipLeft(GridLevel level, std::uint32_t cell, GridShare& sha
 // Back to the bits before the step, then the net changes one at a time; those near a face or
 // the seam, whose inner count reads the other grid, are left for changeCell.
 void SurfaceUpkeep::applyNetChanges(GridShare& share) {
-    for (const NetCell& net : share.net) grainBits_[index(net.ref.level)].flip(net.ref.cell);
+    for (const NetCell& net : share.net) bits_->grain[index(net.ref.level)].flip(net.ref.cell);
     for (std::size_t i = 0; i < share.net.size(); ++i) {
         if (!trackFlags_ && i + kNetFetchAhead < share.net.size()) {
             // The hide bits innerChangeInside reads lie in 7 cache lines that the flips did not touch.
             const CellRef ahead = share.net[i + kNetFetchAhead].ref;
-            const GridShape& shape = shapes_[index(ahead.level)];
-            const CellBits& hides = hideBits_[index(ahead.level)];
+            const GridShape& shape = bits_->shapes[index(ahead.level)];
+            const CellBits& hides = bits_->hide[index(ahead.level)];
             const std::uint32_t reach = 2 * shape.layer + 2 * shape.row + 2;
             if (ahead.cell >= reach && ahead.cell + reach < hides.wordCount() * 32u) {
                 for (std::uint32_t r = ahead.cell - 2 * shape.row - 2; r <= ahead.cell + 2 * shape.row + 2; r += 2 * shape.row)
@@ -191,7 +192,7 @@ void SurfaceUpkeep::applyNetChanges(GridShare& share) {
         const auto [level, cell] = share.net[i].ref;
         const NetCell& net = share.net[i];
         if (!trackFlags_) {
-            const GridShape& shape = shapes_[index(level)];
+            const GridShape& shape = bits_->shapes[index(level)];
             const Int3 c = shape.coordinate(cell);
             if (!(c.x >= 2 && c.z >= 2 && c.y >= 2 && c.x + 2 < shape.size.x && c.z + 2 < shape.size.z &&
                   c.y + 2 < shape.size.y)) {
