@@ -2,8 +2,8 @@
 // Large blocks: aligned for huge pages, and freed ones kept (within a bound) for the next
 // allocation of a similar size, except under AddressSanitizer.
 #include "cell_bits.hpp"
+#include "large_blocks.hpp"
 #include "sandcore/grain_store.hpp"
-#include "sandcore/large_pages.hpp"
 
 #include <doctest/doctest.h>
 
