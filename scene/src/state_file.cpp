@@ -335,7 +335,7 @@ LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std:
         requireConsistentSnapshot(snapshot, upperLayout, lowerLayout);
         if (flipped == 1) {
             // A turned hourglass is built upright, as its fill expects, and restored turned.
-            if (kind != std::uint8_t(sandcore::SceneKind::Hourglass)) throw FormatError("only an hourglass turns over");
+            if (!sandcore::sceneShapeOf(sandcore::SceneKind(kind)).turnsOver) throw FormatError("only an hourglass turns over");
             CellGrid upright = sandcore::mirroredInY(lowerLayout);
             lowerLayout = sandcore::mirroredInY(upperLayout);
             upperLayout = std::move(upright);
