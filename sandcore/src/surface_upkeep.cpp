@@ -194,17 +194,18 @@ void SurfaceUpkeep::changeCell(GridLevel level, std::uint32_t cell, bool filled)
 
 // The inner grains among a cell and its 6 world neighbours, in either grid (from the bits).
 std::int64_t SurfaceUpkeep::innerAround(GridLevel level, Int3 c) const {
+    const Bits& kept = *bits_; // one load of the pointer, not one per cell
     static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
     const Int3 o = origins_[index(level)];
     std::int64_t inner = 0;
     for (GridLevel other : {GridLevel::Lower, GridLevel::Upper}) {
-        const GridShape& shape = bits_->shapes[index(other)];
+        const GridShape& shape = kept.shapes[index(other)];
         const Int3 p = origins_[index(other)];
         for (const Int3& d : kAround) {
             const Int3 at{c.x + o.x - p.x + d.x, c.y + o.y - p.y + d.y, c.z + o.z - p.z + d.z};
             if (at.x < 0 || at.y < 0 || at.z < 0 || at.x >= shape.size.x || at.y >= shape.size.y || at.z >= shape.size.z) continue;
             const std::uint32_t n = std::uint32_t(at.x) + shape.row * std::uint32_t(at.z) + shape.layer * std::uint32_t(at.y);
-            if (bits_->grain[index(other)].test(n) && innerFromBits(other, n, at)) ++inner;
+            if (kept.grain[index(other)].test(n) && innerFromBits(other, n, at)) ++inner;
         }
     }
     return inner;
@@ -294,7 +295,8 @@ void SurfaceUpkeep::refreshGradient(const Scene& scene, GridLevel level, std::ui
 // top): so a changed cell can change the flag of the grain in it and of the grains in its 6 world
 // neighbours, in either grid.
 void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std::uint32_t cell) {
-    const Int3 c = bits_->shapes[index(level)].coordinate(cell);
+    Bits& kept = *bits_; // one load of the pointer, not one per cell
+    const Int3 c = kept.shapes[index(level)].coordinate(cell);
     const Int3 o = origins_[index(level)];
     const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
     static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
@@ -312,7 +314,7 @@ void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std:
             const int x = world.x + d.x - origin.x, y = world.y + d.y - origin.y, z = world.z + d.z - origin.z;
             if (!grid.contains(x, y, z)) continue;
             const std::uint32_t n = grid.index(x, y, z);
-            if (!bits_->grain[index(other)].test(n)) continue; // the bits hold the occupancy: no grid read for an empty cell
+            if (!kept.grain[index(other)].test(n)) continue; // the bits hold the occupancy: no grid read for an empty cell
             const CellValue value = grid[n];
             if (value < 0) continue;
             prefetch(&grains_[std::uint32_t(value)]);
@@ -431,6 +433,7 @@ void SurfaceUpkeep::updateHeights(const Scene& scene, WorkerPool* pool) {
 
 void SurfaceUpkeep::updateHeightsOf(const Scene& scene, GridShare& share, std::uint32_t heightsPass,
                                     std::uint32_t normalsPass) {
+    Bits& kept = *bits_; // one load of the pointer, not one per cell
     share.touchedColumns.clear();
     share.heightsBefore.clear();
     for (const auto& [level, cell] : changedCells_) {
@@ -445,7 +448,7 @@ void SurfaceUpkeep::updateHeightsOf(const Scene& scene, GridShare& share, std::u
             share.touchedColumns.push_back({level, column});
             share.heightsBefore.push_back(height);
         }
-        if (bits_->grain[index(level)].test(cell)) height = std::max(height, y + 1);
+        if (kept.grain[index(level)].test(cell)) height = std::max(height, y + 1);
     }
     share.normalCandidates.clear();
     for (std::size_t i = 0; i < share.touchedColumns.size(); ++i) {
@@ -453,7 +456,7 @@ void SurfaceUpkeep::updateHeightsOf(const Scene& scene, GridShare& share, std::u
         const CellGrid& grid = scene.grid(touched.level);
         const Int3 s = grid.size();
         int& height = heights_[index(touched.level)][touched.column];
-        const CellBits& holds = bits_->grain[index(touched.level)];
+        const CellBits& holds = kept.grain[index(touched.level)];
         int y = height - 1;
         while (y >= 0 && !holds.test(touched.column + std::uint32_t(y) * grid.layerSize())) --y;
         height = y + 1;

@@ -178,6 +178,7 @@ public:
     std::size_t netChangesLastUpdate() const { return changedCells_.size(); }
 
 private:
+    struct Bits; // the grids' shapes and occupancy bits (surface_bits.hpp)
     // All that is kept per grain, in one record: a moved grain costs one cache line, not four.
     struct GrainSurface {
         std::uint32_t seen = 0;     // (update number << 2) | which of flag (1), gradient (2) it looked at
@@ -211,9 +212,9 @@ private:
     template <class Part> void forEachShare(WorkerPool* pool, Part&& part);
     void flipMoves(const Scene& scene, GridShare& share);
     template <int Only> void flipMovesOf(const Scene& scene, GridShare& share);
-    void flipLeft(GridLevel level, std::uint32_t cell, GridShare& share);
+    static void flipLeft(Bits& kept, GridLevel level, std::uint32_t cell, GridShare& share);
     void applyNetChanges(GridShare& share);
-    bool inSharedRow(GridLevel level, std::uint32_t cell) const;
+    static bool inSharedRow(const Bits& kept, GridLevel level, std::uint32_t cell);
     void setCell(GridLevel level, std::uint32_t cell, bool filled);
     void changeCell(GridLevel level, std::uint32_t cell, bool filled);
     std::int64_t innerAround(GridLevel level, Int3 c) const;
@@ -228,7 +229,6 @@ private:
     bool built_ = false;                                // rebuild ran
     std::uint32_t grainCount_ = 0;
     std::array<Int3, 2> origins_{};   // Scene::gridOrigin of both grids, this update
-    struct Bits;                  // the grids' shapes and occupancy bits (surface_bits.hpp)
     std::unique_ptr<Bits> bits_;
     std::vector<GrainSurface> grains_;
     std::int64_t innerCount_ = 0;
