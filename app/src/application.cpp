@@ -108,7 +108,7 @@ void Application::frameCamera() {
     camera_.frame(lo, hi);
     // The canvas is painted from above and a little from the front, so sand lands where the
     // cursor points and the piles still show their height.
-    if (scene().kind() == sandcore::SceneKind::Canvas) camera_.rotate(-camera_.yaw(), kCanvasPitch - camera_.pitch());
+    if (host_.kind() == sandcore::SceneKind::Canvas) camera_.rotate(-camera_.yaw(), kCanvasPitch - camera_.pitch());
 }
 
 void Application::targetSize(int& width, int& height) const {
@@ -184,7 +184,7 @@ void Application::renderFrame(double elapsedSeconds) {
     host_.setStepsPerSecond(state_.stepsPerSecond);
     host_.advance(elapsedSeconds);
     updateTurnAnimation();
-    renderer_.setDraftPlacement(canvas_.draftPlacement(host_.scene(), state_.painting, state_.render.cellSize));
+    renderer_.setDraftPlacement(canvas_.draftPlacement(host_, state_.painting, state_.render.cellSize));
     drawHost(host_, state_.render);
     // E4: a screenshot shows the sand alone unless asked otherwise; the panels come after.
     if (state_.commands.contains(Command::Screenshot) && !state_.files.screenshotWithPanel) sceneOnlyFrame_ = captureFrame();
@@ -210,7 +210,7 @@ void Application::renderHostFrame(SceneHost& host, const RenderSettings& render,
 void Application::drawHost(SceneHost& host, const RenderSettings& render) {
     // The renderer hears only of real changes: a new layout rebuilds the hull, new grains re-upload.
     if (&host != drawnHost_ || host.layoutRevision() != drawnLayout_) {
-        renderer_.setScene(host.scene(), render.cellSize, host.modelDrawing().get());
+        renderer_.setScene(host.scene(), host.kind(), render.cellSize, host.modelDrawing().get());
         drawnLayout_ = host.layoutRevision();
         drawnContent_ = 0;
     }

@@ -126,7 +126,7 @@ void Application::serve(Command command) {
     }
     case Command::ClearObstacles:
         canvas_.clearObstacles(host_);
-        if (scene().kind() == sandcore::SceneKind::Canvas) ++state_.files.unsavedEdits;
+        if (host_.kind() == sandcore::SceneKind::Canvas) ++state_.files.unsavedEdits;
         state_.statusLine = "obstacles removed";
         break;
     case Command::Quit: askToQuit(); break;
@@ -157,7 +157,7 @@ void Application::adoptBuild(const BuildOutcome& outcome) {
     turnStarted_.reset();
     camera_.setTurn(0.0f);
     frameCamera();
-    if (!draft.empty() && scene().kind() == sandcore::SceneKind::Canvas) loadDraft(draft);
+    if (!draft.empty() && host_.kind() == sandcore::SceneKind::Canvas) loadDraft(draft);
 }
 
 void Application::rememberModel(const std::string& path) {

@@ -98,7 +98,7 @@ void Application::handleDiggerDrag(double x, double y, bool leftDown, const Inpu
 }
 
 bool Application::driveDiggerByKey(KeyCommand command) {
-    if (!state_.digger.active || scene().kind() != sandcore::SceneKind::Canvas || scene().bodies().empty()) return false;
+    if (!state_.digger.active || host_.kind() != sandcore::SceneKind::Canvas || scene().bodies().empty()) return false;
     sandcore::Int3 to = scene().bodies().front().position;
     switch (command) {
     case KeyCommand::RotateLeft: --to.x; break;

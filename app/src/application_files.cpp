@@ -41,7 +41,7 @@ bool Application::openFile(const std::string& path) {
     // that fails to open is never the one the next Save writes over.
     if (isStateFile(path)) return loadStateFile(path);
     if (isDraftImageFile(path)) {
-        if (scene().kind() == sandcore::SceneKind::Canvas) return loadDraft(path);
+        if (host_.kind() == sandcore::SceneKind::Canvas) return loadDraft(path);
         // An image is painted over on the canvas: build one, then show the draft on it.
         state_.scene.request.kind = sandcore::SceneKind::Canvas;
         state_.scene.request.modelPath.clear();

@@ -90,11 +90,11 @@ void Application::handleMouse() {
     const std::pair<int, MouseButton> buttons[] = {{GLFW_MOUSE_BUTTON_LEFT, MouseButton::Left},
                                                    {GLFW_MOUSE_BUTTON_MIDDLE, MouseButton::Middle},
                                                    {GLFW_MOUSE_BUTTON_RIGHT, MouseButton::Right}};
-    const bool leftPaints = scene().kind() == sandcore::SceneKind::Canvas;
+    const bool leftPaints = host_.kind() == sandcore::SceneKind::Canvas;
     for (const auto& [glfwButton, button] : buttons)
         if (glfwGetMouseButton(handle, glfwButton) == GLFW_PRESS)
             applyMouseDrag(capture, button, alt, leftPaints, dx, dy, float(height), camera_);
-    if (scene().kind() != sandcore::SceneKind::Canvas) return;
+    if (host_.kind() != sandcore::SceneKind::Canvas) return;
     const bool leftDown = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
     // While an obstacle is being placed, the left button drags its box instead of pouring sand;
     // while the digger is on, its body.

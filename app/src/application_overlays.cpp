@@ -73,7 +73,7 @@ void Application::drawOverlays() {
         const bool on = int(ImGui::GetTime() * 2.0) % 2 == 0;
         banner("##timeup", "  Time is up  ", on ? ImVec4(0.80f, 0.25f, 0.10f, 0.95f) : ImVec4(0.45f, 0.12f, 0.05f, 0.95f));
     }
-    if (scene().kind() == sandcore::SceneKind::Canvas) {
+    if (host_.kind() == sandcore::SceneKind::Canvas) {
         if (state_.obstacleDrag.armed || state_.obstacleDrag.dragging)
             drawObstacleBox();
         else if (!state_.digger.active)

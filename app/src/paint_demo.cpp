@@ -16,7 +16,7 @@ bool isBackground(std::uint32_t rgba, std::uint32_t background) {
 
 std::int64_t paintDraftDemo(Application& app, int passes) {
     const DraftImage* draft = app.canvas().draft();
-    if (!draft || app.scene().kind() != sandcore::SceneKind::Canvas) return 0;
+    if (!draft || app.host().kind() != sandcore::SceneKind::Canvas) return 0;
     PaintingSettings& painting = app.state().painting;
     painting.erase = false;
     painting.pickAtTarget = false;

@@ -100,7 +100,7 @@ std::string fallPart(const ReportOptions& options, bool& passed) {
     Table table{{"g (cells/step^2)", "height (cells)", "steps", "sqrt(2h/g)", "error"}, {}};
     for (float g : {0.02f, 0.5f, 2.7f})
         for (int h : {10, 50, 200}) {
-            sandcore::Scene scene(sandcore::SceneKind::Canvas, sandcore::CellGrid({3, 1, 3}),
+            sandcore::Scene scene(sandcore::SceneShape{}, sandcore::CellGrid({3, 1, 3}),
                                   sandcore::CellGrid({3, h + 1, 3}), {}, granularStep(options, g));
             const auto& grid = scene.grid(GridLevel::Lower);
             const auto id = std::size_t(scene.addGrain(GridLevel::Lower, grid.index(1, h, 1)));

@@ -219,7 +219,7 @@ bool Scene::coveredByBody(std::uint32_t lowerCell) const {
 }
 
 std::int64_t Scene::addBody(MovingBody body) {
-    if (kind_ == SceneKind::Hourglass) throw std::invalid_argument("a moving body needs a canvas or a sculpture");
+    if (!shape_.takesBodies) throw std::invalid_argument("a moving body needs a scene that takes bodies (a canvas or a sculpture)");
     if (std::find(body.shape.inside.begin(), body.shape.inside.end(), std::uint8_t{1}) == body.shape.inside.end())
         throw std::invalid_argument("a moving body needs at least one cell");
     body.quarterTurns &= 3;

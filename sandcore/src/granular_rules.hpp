@@ -54,6 +54,14 @@
 
 namespace sandcore {
 
+/// FallState::gatheringSince: 0, or kGatheringAsleep plus the step (kAsleepStepMask of it) after
+/// which a grain falling through an EMPTY cell short of its next cell, or riding such a grain
+/// (kRidingAsleep), stopped being visited: speed and fraction are as of that step, and only
+/// gravity changes them until the step the fall reaches the cell, when it is visited again
+/// (grid_sweep.hpp says why a grain may sleep while it falls).
+inline constexpr std::uint16_t kGatheringAsleep = 0x8000, kRidingAsleep = 0x4000;
+inline constexpr std::uint16_t kAsleepStepMask = 0x1fff; ///< the step's bits in FallState::gatheringSince
+
 /// One cell in the 16.16 fixed point of fall speeds and fractions.
 inline constexpr std::uint32_t kOneCell = 1u << 16;
 

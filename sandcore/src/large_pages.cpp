@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "sandcore/large_pages.hpp"
+#include "large_blocks.hpp"
 
 #include <algorithm>
 #include <cstdlib>

@@ -49,9 +49,9 @@ struct RecordWriter {
 
 } // namespace
 
-Scene::Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::vector<std::uint32_t> upperFill,
+Scene::Scene(SceneShape shape, CellGrid upperLayout, CellGrid lowerLayout, std::vector<std::uint32_t> upperFill,
              StepSettings settings)
-    : kind_(kind), settings_(settings), upper_(std::move(upperLayout)), lower_(std::move(lowerLayout)),
+    : shape_(shape), settings_(settings), upper_(std::move(upperLayout)), lower_(std::move(lowerLayout)),
       upperFill_(std::move(upperFill)) {
     if (upper_.size().x != lower_.size().x || upper_.size().z != lower_.size().z)
         throw std::invalid_argument("upper and lower grid must have the same x and z size");
@@ -74,8 +74,8 @@ void Scene::configurePhysics() {
     validatePhysics(physics);
     const bool granular = physics.level == PhysicsLevel::Granular;
     granular_ = granular ? std::make_unique<GranularRules>(physics) : nullptr;
-    // Model only what a scene needs: the neck's discharge belongs to the hourglass.
-    neckFlow_ = granular && kind_ == SceneKind::Hourglass
+    // Model only what a scene needs: the neck's discharge belongs to an hourglass neck.
+    neckFlow_ = granular && shape_.hourglassNeck
                     ? std::make_unique<NeckFlow>(upperLayout_->openCellsOfBottomLayer(), double(physics.gravity))
                     : nullptr;
     for (GridSweep* sweep : {upperSweep_.get(), lowerSweep_.get()}) {

@@ -39,7 +39,7 @@ void Scene::flipLayouts() {
 }
 
 bool Scene::flip() {
-    if (kind_ != SceneKind::Hourglass) return false;
+    if (!shape_.turnsOver) return false;
     CellGrid upper = mirroredInY(lower_), lower = mirroredInY(upper_);
     const CellGrid& oldUpper = upper_;
     const CellGrid& oldLower = lower_;
@@ -70,7 +70,7 @@ bool Scene::flip() {
 
 Scene Scene::clone() const {
     // Built upright, as its fill expects; restore() turns it as this scene is turned.
-    Scene copy(kind_, flipped_ ? mirroredInY(lowerLayout_->grid()) : upperLayout_->grid(),
+    Scene copy(shape_, flipped_ ? mirroredInY(lowerLayout_->grid()) : upperLayout_->grid(),
                flipped_ ? mirroredInY(upperLayout_->grid()) : lowerLayout_->grid(), upperFill_, settings_);
     copy.restore(snapshot());
     return copy;

@@ -167,8 +167,13 @@ std::int64_t heapCapacity(const InsideMask& lower, const StepSettings& step) {
 
 } // namespace
 
+SceneShape sceneShapeOf(SceneKind kind) {
+    if (kind == SceneKind::Hourglass) return {.hourglassNeck = true, .turnsOver = true, .takesBodies = false};
+    return {};
+}
+
 Scene makeCanvasScene(const CanvasSettings& canvas, const StepSettings& step) {
-    return Scene(SceneKind::Canvas, CellGrid(canvas.upperSize), CellGrid(canvas.lowerSize), {}, step);
+    return Scene(sceneShapeOf(SceneKind::Canvas), CellGrid(canvas.upperSize), CellGrid(canvas.lowerSize), {}, step);
 }
 
 int defaultSandboxBedDepth(const CanvasSettings& canvas) { return std::max(1, canvas.lowerSize.y / 3); }
@@ -248,7 +253,7 @@ Scene makeHourglassScene(const InsideMask& untrimmed, const InsideMask& initialS
         fill.resize(std::size_t(capacity));
         std::sort(fill.begin(), fill.end());
     }
-    return Scene(SceneKind::Hourglass, layoutFromMask(upper), std::move(lowerLayout), std::move(fill), step);
+    return Scene(sceneShapeOf(SceneKind::Hourglass), layoutFromMask(upper), std::move(lowerLayout), std::move(fill), step);
 }
 
 Scene makeSculptureScene(const InsideMask& model, const StepSettings& step) {
@@ -272,7 +277,7 @@ Scene makeSculptureScene(const InsideMask& model, const InsideMask& obstacles, c
                 if (model.at(x, y, z)) fill.push_back(upper.index(x + offsetX, y, z + offsetZ));
                 else if (!obstacles.inside.empty() && obstacles.at(x, y, z))
                     upper[upper.index(x + offsetX, y, z + offsetZ)] = kInvalid;
-    return Scene(SceneKind::Sculpture, std::move(upper), std::move(lower), std::move(fill), step);
+    return Scene(sceneShapeOf(SceneKind::Sculpture), std::move(upper), std::move(lower), std::move(fill), step);
 }
 
 Int3 maskOriginInScene(SceneKind kind, const InsideMask& mask) {

@@ -3,6 +3,7 @@
 // the net changes they make (surface_upkeep.hpp).
 #include "sandcore/surface_upkeep.hpp"
 
+#include "surface_bits.hpp"
 #include "surface_shares.hpp"
 
 #include <cstdint>
@@ -61,7 +62,7 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene, WorkerPool* pool) {
     forEachShare(pool, [&](GridShare& share) { flipMoves(scene, share); });
     for (int s = 0; s < shareCount; ++s)
         for (const CellRef& ref : shares_[std::size_t(s)].otherLeaves)
-            flipLeft(ref.level, ref.cell, shares_[shareCount == 2 ? index(ref.level) : 0]);
+            flipLeft(*bits_, ref.level, ref.cell, shares_[shareCount == 2 ? index(ref.level) : 0]);
     forEachShare(pool, [&](GridShare& share) { applyNetChanges(share); });
     for (int s = 0; s < shareCount; ++s) {
         const GridShare& share = shares_[std::size_t(s)];
@@ -75,10 +76,10 @@ void SurfaceUpkeep::syncMovedGrains(const Scene& scene, WorkerPool* pool) {
 }
 
 // The lower grid's top row and the upper grid's bottom row: synced from the grid, not flipped.
-bool SurfaceUpkeep::inSharedRow(GridLevel level, std::uint32_t cell) const {
-    const GridShape& lower = shapes_[index(GridLevel::Lower)];
+bool SurfaceUpkeep::inSharedRow(const Bits& kept, GridLevel level, std::uint32_t cell) {
+    const GridShape& lower = kept.shapes[index(GridLevel::Lower)];
     return level == GridLevel::Lower ? cell >= lower.layer * std::uint32_t(lower.size.y - 1)
-                                     : cell < shapes_[index(GridLevel::Upper)].layer;
+                                     : cell < kept.shapes[index(GridLevel::Upper)].layer;
 }
 
 // The two passes of flips for the moves in the grids a share owns.
@@ -91,21 +92,22 @@ void SurfaceUpkeep::flipMoves(const Scene& scene, GridShare& share) {
 // Only: the one grid the share owns (0 lower, 1 upper), or -1 for both; known when compiled, so
 // a share of one grid tests each move's grid once and nothing else about ownership.
 template <int Only> void SurfaceUpkeep::flipMovesOf(const Scene& scene, GridShare& share) {
+    Bits& kept = *bits_; // one load of the pointer, not one per cell
     const std::span<const GrainMove> moved = latestMoves_;
-    const GridShape& lowerShape = shapes_[index(GridLevel::Lower)];
+    const GridShape& lowerShape = kept.shapes[index(GridLevel::Lower)];
     const std::uint32_t lowerTopFirst = lowerShape.layer * std::uint32_t(lowerShape.size.y - 1);
     auto owns = [](GridLevel level) { return Only < 0 || int(index(level)) == Only; };
     auto withinGrid = [&](const GrainMove& move) {
         return move.cameFrom != kNoMove && (move.level != GridLevel::Lower || move.cell < lowerTopFirst);
     };
     auto leftCell = [&](const GrainMove& move) {
-        const GridShape& shape = shapes_[index(move.level)];
+        const GridShape& shape = kept.shapes[index(move.level)];
         const MoveCode from = move.cameFrom;
         return std::uint32_t(std::int64_t(move.cell) + moveDx(from) + std::int64_t(shape.row) * moveDz(from) +
                              std::int64_t(shape.layer) * moveDy(from));
     };
     auto worldOf = [&](const GrainMove& move) {
-        const Int3 c = shapes_[index(move.level)].coordinate(move.cell);
+        const Int3 c = kept.shapes[index(move.level)].coordinate(move.cell);
         const Int3 o = origins_[index(move.level)];
         return Int3{c.x + o.x, c.y + o.y, c.z + o.z};
     };
@@ -122,7 +124,7 @@ template <int Only> void SurfaceUpkeep::flipMovesOf(const Scene& scene, GridShar
         if (i + kFetchAhead < moved.size()) {
             const GrainMove& ahead = moved[i + kFetchAhead];
             if (trackFlags_) prefetch(&grains_[ahead.grain]);
-            if (owns(ahead.level)) prefetch(grainBits_[index(ahead.level)].byteOf(ahead.cell));
+            if (owns(ahead.level)) prefetch(kept.grain[index(ahead.level)].byteOf(ahead.cell));
         }
         const GrainMove& move = moved[i];
         if (!owns(move.level)) continue;
@@ -131,24 +133,24 @@ template <int Only> void SurfaceUpkeep::flipMovesOf(const Scene& scene, GridShar
             forEachGridCell(worldOf(move), [&](GridLevel level, std::uint32_t cell) { share.fromGrid.push_back({level, cell}); });
             continue;
         }
-        if (inSharedRow(move.level, move.cell)) {
+        if (inSharedRow(kept, move.level, move.cell)) {
             share.fromGrid.push_back({move.level, move.cell});
             continue;
         }
-        CellBits& bits = grainBits_[index(move.level)];
+        CellBits& bits = kept.grain[index(move.level)];
         if (!bits.test(move.cell)) share.net.push_back({{move.level, move.cell}, true});
         bits.flip(move.cell);
     }
     // Second pass: the cells they left, mostly the cells the first pass filled (a falling column):
     // their bits were just read. Fetching them ahead here was measured slower.
     auto leave = [&](GridLevel level, std::uint32_t cell) {
-        if (owns(level)) flipLeft(level, cell, share);
+        if (owns(level)) flipLeft(kept, level, cell, share);
         else share.otherLeaves.push_back({level, cell});
     };
     for (const GrainMove& move : moved) {
         if (!owns(move.level)) continue;
         if (withinGrid(move)) {
-            flipLeft(move.level, leftCell(move), share);
+            flipLeft(kept, move.level, leftCell(move), share);
         } else if (move.cameFrom != kNoMove) {
             const Int3 world = worldOf(move);
             const MoveCode from = move.cameFrom;
@@ -158,12 +160,12 @@ template <int Only> void SurfaceUpkeep::flipMovesOf(const Scene& scene, GridShar
 }
 
 // A cell a move left, after every fill of the step: a net change when its bit is still set.
-void SurfaceUpkeep::flipLeft(GridLevel level, std::uint32_t cell, GridShare& share) {
-    if (inSharedRow(level, cell)) {
+void SurfaceUpkeep::flipLeft(Bits& kept, GridLevel level, std::uint32_t cell, GridShare& share) {
+    if (inSharedRow(kept, level, cell)) {
         share.fromGrid.push_back({level, cell});
         return;
     }
-    CellBits& bits = grainBits_[index(level)];
+    CellBits& bits = kept.grain[index(level)];
     if (bits.test(cell)) share.net.push_back({{level, cell}, false});
     bits.flip(cell);
 }
@@ -171,13 +173,14 @@ void SurfaceUpkeep::flipLeft(GridLevel level, std::uint32_t cell, GridShare& sha
 // Back to the bits before the step, then the net changes one at a time; those near a face or
 // the seam, whose inner count reads the other grid, are left for changeCell.
 void SurfaceUpkeep::applyNetChanges(GridShare& share) {
-    for (const NetCell& net : share.net) grainBits_[index(net.ref.level)].flip(net.ref.cell);
+    Bits& kept = *bits_; // one load of the pointer, not one per cell
+    for (const NetCell& net : share.net) kept.grain[index(net.ref.level)].flip(net.ref.cell);
     for (std::size_t i = 0; i < share.net.size(); ++i) {
         if (!trackFlags_ && i + kNetFetchAhead < share.net.size()) {
             // The hide bits innerChangeInside reads lie in 7 cache lines that the flips did not touch.
             const CellRef ahead = share.net[i + kNetFetchAhead].ref;
-            const GridShape& shape = shapes_[index(ahead.level)];
-            const CellBits& hides = hideBits_[index(ahead.level)];
+            const GridShape& shape = kept.shapes[index(ahead.level)];
+            const CellBits& hides = kept.hide[index(ahead.level)];
             const std::uint32_t reach = 2 * shape.layer + 2 * shape.row + 2;
             if (ahead.cell >= reach && ahead.cell + reach < hides.wordCount() * 32u) {
                 for (std::uint32_t r = ahead.cell - 2 * shape.row - 2; r <= ahead.cell + 2 * shape.row + 2; r += 2 * shape.row)
@@ -191,7 +194,7 @@ void SurfaceUpkeep::applyNetChanges(GridShare& share) {
         const auto [level, cell] = share.net[i].ref;
         const NetCell& net = share.net[i];
         if (!trackFlags_) {
-            const GridShape& shape = shapes_[index(level)];
+            const GridShape& shape = kept.shapes[index(level)];
             const Int3 c = shape.coordinate(cell);
             if (!(c.x >= 2 && c.z >= 2 && c.y >= 2 && c.x + 2 < shape.size.x && c.z + 2 < shape.size.z &&
                   c.y + 2 < shape.size.y)) {

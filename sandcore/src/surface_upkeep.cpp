@@ -6,6 +6,7 @@
 #include "worker_pool.hpp"
 
 #include "layer_neighbourhood.hpp"
+#include "surface_bits.hpp"
 #include "surface_shares.hpp"
 
 #include <algorithm>
@@ -81,6 +82,14 @@ bool SurfaceUpkeep::firstLook(GrainSurface& grain, std::uint32_t what) const {
     return true;
 }
 
+SurfaceUpkeep::SurfaceUpkeep() : bits_(std::make_unique<Bits>()) {}
+SurfaceUpkeep::~SurfaceUpkeep() = default;
+SurfaceUpkeep::SurfaceUpkeep(SurfaceUpkeep&&) noexcept = default;
+SurfaceUpkeep& SurfaceUpkeep::operator=(SurfaceUpkeep&&) noexcept = default;
+
+CellBitWords SurfaceUpkeep::grainBits(GridLevel level) const { return CellBitWords(bits_->grain[index(level)].bytes()); }
+CellBitWords SurfaceUpkeep::hideBits(GridLevel level) const { return CellBitWords(bits_->hide[index(level)].bytes()); }
+
 void SurfaceUpkeep::rebuild(const Scene& scene) {
     trackFlags_ = tracking_.grainFlags;
     trackGradient_ = trackFlags_ && tracking_.gradientNormals;
@@ -92,9 +101,9 @@ void SurfaceUpkeep::rebuild(const Scene& scene) {
     for (GridLevel level : {GridLevel::Lower, GridLevel::Upper}) {
         const CellGrid& grid = scene.grid(level);
         const Int3 s = grid.size();
-        shapes_[index(level)] = GridShape(s);
-        CellBits& holds = grainBits_[index(level)];
-        CellBits& hides = hideBits_[index(level)];
+        bits_->shapes[index(level)] = GridShape(s);
+        CellBits& holds = bits_->grain[index(level)];
+        CellBits& hides = bits_->hide[index(level)];
         holds.assign(grid.cellCount());
         hides.assign(grid.cellCount());
         for (std::uint32_t n = 0; n < grid.cellCount(); ++n) {
@@ -159,14 +168,14 @@ void SurfaceUpkeep::list(std::uint32_t grain, std::uint8_t bit, std::vector<std:
 // bits (a grain that left a cell another grain filled in the same step changed nothing there).
 void SurfaceUpkeep::syncCell(const Scene& scene, GridLevel level, std::uint32_t cell) {
     const CellValue value = scene.grid(level)[cell];
-    CellBits& grains = grainBits_[index(level)];
+    CellBits& grains = bits_->grain[index(level)];
     if (grains.test(cell) == (value >= 0)) return;
     changeCell(level, cell, value >= 0); // a step only moves grains: EMPTY or a grain, never INVALID
 }
 
 void SurfaceUpkeep::setCell(GridLevel level, std::uint32_t cell, bool filled) {
-    grainBits_[index(level)].set(cell, filled);
-    hideBits_[index(level)].set(cell, filled);
+    bits_->grain[index(level)].set(cell, filled);
+    bits_->hide[index(level)].set(cell, filled);
 }
 
 // A net change: the cell now holds a grain (filled) or is EMPTY. Without per-grain flags the
@@ -177,7 +186,7 @@ void SurfaceUpkeep::setCell(GridLevel level, std::uint32_t cell, bool filled) {
 void SurfaceUpkeep::changeCell(GridLevel level, std::uint32_t cell, bool filled) {
     changedCells_.push_back({level, cell});
     if (trackFlags_) return setCell(level, cell, filled);
-    const Int3 c = shapes_[index(level)].coordinate(cell);
+    const Int3 c = bits_->shapes[index(level)].coordinate(cell);
     const std::int64_t before = innerAround(level, c);
     setCell(level, cell, filled);
     innerCount_ += innerAround(level, c) - before;
@@ -185,17 +194,18 @@ void SurfaceUpkeep::changeCell(GridLevel level, std::uint32_t cell, bool filled)
 
 // The inner grains among a cell and its 6 world neighbours, in either grid (from the bits).
 std::int64_t SurfaceUpkeep::innerAround(GridLevel level, Int3 c) const {
+    const Bits& kept = *bits_; // one load of the pointer, not one per cell
     static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
     const Int3 o = origins_[index(level)];
     std::int64_t inner = 0;
     for (GridLevel other : {GridLevel::Lower, GridLevel::Upper}) {
-        const GridShape& shape = shapes_[index(other)];
+        const GridShape& shape = kept.shapes[index(other)];
         const Int3 p = origins_[index(other)];
         for (const Int3& d : kAround) {
             const Int3 at{c.x + o.x - p.x + d.x, c.y + o.y - p.y + d.y, c.z + o.z - p.z + d.z};
             if (at.x < 0 || at.y < 0 || at.z < 0 || at.x >= shape.size.x || at.y >= shape.size.y || at.z >= shape.size.z) continue;
             const std::uint32_t n = std::uint32_t(at.x) + shape.row * std::uint32_t(at.z) + shape.layer * std::uint32_t(at.y);
-            if (grainBits_[index(other)].test(n) && innerFromBits(other, n, at)) ++inner;
+            if (kept.grain[index(other)].test(n) && innerFromBits(other, n, at)) ++inner;
         }
     }
     return inner;
@@ -207,9 +217,9 @@ std::int64_t SurfaceUpkeep::innerAround(GridLevel level, Int3 c) const {
 // The bits are read a row's 3 or 5 cells at a time and combined without branches: the 7 flags
 // involved are 42 tests that a branch each made unpredictable.
 std::int64_t SurfaceUpkeep::innerChangeInside(GridLevel level, std::uint32_t cell) const {
-    const GridShape& shape = shapes_[index(level)];
-    const CellBits& grains = grainBits_[index(level)];
-    const CellBits& hides = hideBits_[index(level)];
+    const GridShape& shape = bits_->shapes[index(level)];
+    const CellBits& grains = bits_->grain[index(level)];
+    const CellBits& hides = bits_->hide[index(level)];
     const std::uint32_t row = shape.row, layer = shape.layer;
     // Hide bits: the cell's row x-2..x+2 (bits 0..4); the rows beside, below and above it
     // x-1..x+1 (bits 0..2); single cells further out.
@@ -233,18 +243,18 @@ std::int64_t SurfaceUpkeep::innerChangeInside(GridLevel level, std::uint32_t cel
 
 // isInnerGrain from the bits; at the grid's edge and across the seam, isInnerGrain itself.
 bool SurfaceUpkeep::innerAt(const Scene& scene, GridLevel level, std::uint32_t cell) const {
-    const GridShape& shape = shapes_[index(level)];
+    const GridShape& shape = bits_->shapes[index(level)];
     if (!shape.interior(shape.coordinate(cell))) return isInnerGrain(scene, level, cell);
-    const CellBits& hides = hideBits_[index(level)];
+    const CellBits& hides = bits_->hide[index(level)];
     return (hides.around(cell) & 5u) == 5u && hides.test(cell - shape.row) && hides.test(cell + shape.row) &&
            hides.test(cell - shape.layer) && hides.test(cell + shape.layer);
 }
 
 // gradientNormal's sums from the bits, 3 cells a read; at the grid's edge from the grid.
 std::uint16_t SurfaceUpkeep::gradientKeyAt(const Scene& scene, GridLevel level, std::uint32_t cell) const {
-    const GridShape& shape = shapes_[index(level)];
+    const GridShape& shape = bits_->shapes[index(level)];
     if (!shape.interior(shape.coordinate(cell))) return gradientKeyFromGrid(scene.grid(level), cell);
-    const CellBits& grains = grainBits_[index(level)];
+    const CellBits& grains = bits_->grain[index(level)];
     int gx = 0, gy = 0, gz = 0, occupied = 0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz) {
@@ -285,7 +295,8 @@ void SurfaceUpkeep::refreshGradient(const Scene& scene, GridLevel level, std::ui
 // top): so a changed cell can change the flag of the grain in it and of the grains in its 6 world
 // neighbours, in either grid.
 void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std::uint32_t cell) {
-    const Int3 c = shapes_[index(level)].coordinate(cell);
+    Bits& kept = *bits_; // one load of the pointer, not one per cell
+    const Int3 c = kept.shapes[index(level)].coordinate(cell);
     const Int3 o = origins_[index(level)];
     const Int3 world{c.x + o.x, c.y + o.y, c.z + o.z};
     static constexpr Int3 kAround[7] = {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
@@ -303,7 +314,7 @@ void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std:
             const int x = world.x + d.x - origin.x, y = world.y + d.y - origin.y, z = world.z + d.z - origin.z;
             if (!grid.contains(x, y, z)) continue;
             const std::uint32_t n = grid.index(x, y, z);
-            if (!grainBits_[index(other)].test(n)) continue; // the bits hold the occupancy: no grid read for an empty cell
+            if (!kept.grain[index(other)].test(n)) continue; // the bits hold the occupancy: no grid read for an empty cell
             const CellValue value = grid[n];
             if (value < 0) continue;
             prefetch(&grains_[std::uint32_t(value)]);
@@ -315,8 +326,8 @@ void SurfaceUpkeep::refreshInnerAround(const Scene& scene, GridLevel level, std:
 // gradientNormal reads the 26 neighbours within the grain's own grid.
 void SurfaceUpkeep::refreshGradientAround(const Scene& scene, GridLevel level, std::uint32_t cell) {
     const CellGrid& grid = scene.grid(level);
-    const CellBits& grains = grainBits_[index(level)];
-    const Int3 c = shapes_[index(level)].coordinate(cell);
+    const CellBits& grains = bits_->grain[index(level)];
+    const Int3 c = bits_->shapes[index(level)].coordinate(cell);
     std::array<std::pair<std::uint32_t, std::uint32_t>, 27> found; // (cell, grain), records fetched together
     std::size_t count = 0;
     for (int y = c.y - 1; y <= c.y + 1; ++y)
@@ -384,22 +395,22 @@ void SurfaceUpkeep::forgetPlaces() {
 
 // isInnerGrain from the bits alone, at the grid's edge and across the seam too.
 bool SurfaceUpkeep::hidesFromBits(GridLevel level, int x, int y, int z) const {
-    const GridShape& shape = shapes_[index(level)];
+    const GridShape& shape = bits_->shapes[index(level)];
     if (x < 0 || y < 0 || z < 0 || x >= shape.size.x || y >= shape.size.y || z >= shape.size.z) return true;
-    return hideBits_[index(level)].test(std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y));
+    return bits_->hide[index(level)].test(std::uint32_t(x) + shape.row * std::uint32_t(z) + shape.layer * std::uint32_t(y));
 }
 
 bool SurfaceUpkeep::innerFromBits(GridLevel level, std::uint32_t cell, Int3 c) const {
-    const GridShape& shape = shapes_[index(level)];
+    const GridShape& shape = bits_->shapes[index(level)];
     if (shape.interior(c)) {
-        const CellBits& hides = hideBits_[index(level)];
+        const CellBits& hides = bits_->hide[index(level)];
         return (hides.around(cell) & 5u) == 5u && hides.test(cell - shape.row) && hides.test(cell + shape.row) &&
                hides.test(cell - shape.layer) && hides.test(cell + shape.layer);
     }
     if (!(hidesFromBits(level, c.x - 1, c.y, c.z) && hidesFromBits(level, c.x + 1, c.y, c.z) &&
           hidesFromBits(level, c.x, c.y, c.z - 1) && hidesFromBits(level, c.x, c.y, c.z + 1)))
         return false;
-    const int lowerTop = shapes_[index(GridLevel::Lower)].size.y - 1;
+    const int lowerTop = bits_->shapes[index(GridLevel::Lower)].size.y - 1;
     const bool above = level == GridLevel::Lower && c.y == lowerTop ? hidesFromBits(GridLevel::Upper, c.x, 1, c.z)
                                                                    : hidesFromBits(level, c.x, c.y + 1, c.z);
     const bool below = level == GridLevel::Upper && c.y == 0 ? hidesFromBits(GridLevel::Lower, c.x, lowerTop - 1, c.z)
@@ -422,6 +433,7 @@ void SurfaceUpkeep::updateHeights(const Scene& scene, WorkerPool* pool) {
 
 void SurfaceUpkeep::updateHeightsOf(const Scene& scene, GridShare& share, std::uint32_t heightsPass,
                                     std::uint32_t normalsPass) {
+    Bits& kept = *bits_; // one load of the pointer, not one per cell
     share.touchedColumns.clear();
     share.heightsBefore.clear();
     for (const auto& [level, cell] : changedCells_) {
@@ -436,7 +448,7 @@ void SurfaceUpkeep::updateHeightsOf(const Scene& scene, GridShare& share, std::u
             share.touchedColumns.push_back({level, column});
             share.heightsBefore.push_back(height);
         }
-        if (grainBits_[index(level)].test(cell)) height = std::max(height, y + 1);
+        if (kept.grain[index(level)].test(cell)) height = std::max(height, y + 1);
     }
     share.normalCandidates.clear();
     for (std::size_t i = 0; i < share.touchedColumns.size(); ++i) {
@@ -444,7 +456,7 @@ void SurfaceUpkeep::updateHeightsOf(const Scene& scene, GridShare& share, std::u
         const CellGrid& grid = scene.grid(touched.level);
         const Int3 s = grid.size();
         int& height = heights_[index(touched.level)][touched.column];
-        const CellBits& holds = grainBits_[index(touched.level)];
+        const CellBits& holds = kept.grain[index(touched.level)];
         int y = height - 1;
         while (y >= 0 && !holds.test(touched.column + std::uint32_t(y) * grid.layerSize())) --y;
         height = y + 1;

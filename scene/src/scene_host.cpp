@@ -140,7 +140,7 @@ std::optional<BuildOutcome> SceneHost::pollBuild() {
         const std::string note = built.note;
         adopt(std::move(built), building_);
         outcome.adopted = true;
-        outcome.message = std::string("built ") + sceneKindName(scene_->kind()) + ", " +
+        outcome.message = std::string("built ") + sceneKindName(kind()) + ", " +
                           std::to_string(scene_->grainCount()) + " grains";
         if (!note.empty()) outcome.message += "; " + note; // W5: what was done instead of an hourglass
     } catch (const std::exception& error) {

@@ -205,7 +205,11 @@ std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const
     ByteWriter out;
     out.reserve(encodedSnapshotBytes(scene) + 2 * std::size_t(scene.grid(GridLevel::Upper).cellCount()) +
                 2 * std::size_t(scene.grid(GridLevel::Lower).cellCount()) + 4 * scene.fillCells().size() + 4096);
-    out.put<std::uint8_t>(std::uint8_t(scene.kind()));
+    // The file names the scene by its kind and builds it again from sceneShapeOf(kind).
+    if (sandcore::sceneShapeOf(request.kind) != scene.shape())
+        throw std::invalid_argument(std::string("the scene is not of the kind its request names (") +
+                                    sceneKindName(request.kind) + ")");
+    out.put<std::uint8_t>(std::uint8_t(request.kind));
     out.put<std::uint64_t>(scene.settings().seed);
     out.put<std::int32_t>(scene.settings().threads);
     out.put<std::uint8_t>(scene.settings().sleeping ? 1 : 0);
@@ -331,7 +335,7 @@ LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std:
         requireConsistentSnapshot(snapshot, upperLayout, lowerLayout);
         if (flipped == 1) {
             // A turned hourglass is built upright, as its fill expects, and restored turned.
-            if (kind != std::uint8_t(sandcore::SceneKind::Hourglass)) throw FormatError("only an hourglass turns over");
+            if (!sandcore::sceneShapeOf(sandcore::SceneKind(kind)).turnsOver) throw FormatError("only an hourglass turns over");
             CellGrid upright = sandcore::mirroredInY(lowerLayout);
             lowerLayout = sandcore::mirroredInY(upperLayout);
             upperLayout = std::move(upright);
@@ -339,7 +343,7 @@ LoadedState decodeStatePayload(std::span<const std::uint8_t> payload, const std:
         }
         request.kind = sandcore::SceneKind(kind);
         try {
-            sandcore::Scene scene(sandcore::SceneKind(kind), std::move(upperLayout), std::move(lowerLayout),
+            sandcore::Scene scene(sandcore::sceneShapeOf(sandcore::SceneKind(kind)), std::move(upperLayout), std::move(lowerLayout),
                                   std::move(fill), settings);
             scene.restore(snapshot);
             return {std::move(scene), SceneSettings{std::move(request), settings}};

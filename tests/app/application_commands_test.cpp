@@ -124,7 +124,7 @@ TEST_CASE("application: a rebuild requested while a build runs is built next, so
         app->serveCommands();
     }
     REQUIRE_FALSE(app->host().building());
-    CHECK(app->scene().kind() == sandcore::SceneKind::Canvas);
+    CHECK(app->host().kind() == sandcore::SceneKind::Canvas);
     CHECK(app->state().loaded.request.kind == sandcore::SceneKind::Canvas);
     CHECK(app->scene().grid(sandcore::GridLevel::Lower).size().x == 40);
 }

@@ -70,7 +70,7 @@ TEST_CASE("V8: the GPU's display positions equal writeDisplayPositions after ste
     RenderSettings settings = thesisLook(); // unlit: the surface below keeps no per-grain keys
     settings.cellSize = 0.37f; // not a power of two: every rounding step shows
     settings.jitter = 0.8f;
-    renderer.setScene(host.scene(), settings.cellSize);
+    renderer.setScene(host.scene(), host.kind(), settings.cellSize);
     renderer.useSurface(&host.surfaceUpkeep(false));
     requireGpuEqualsCpu(renderer, host.scene(), 1.0f, settings);
     std::int64_t moved = 0;
@@ -94,7 +94,7 @@ TEST_CASE("V8: on 2 threads the places and cell bits, written by both threads, l
     SceneRenderer renderer(shaderDirectory());
     RenderSettings settings;
     settings.lighting = true; // inner grains drawn and lit: the cell bits path on any GL
-    renderer.setScene(host.scene(), settings.cellSize);
+    renderer.setScene(host.scene(), host.kind(), settings.cellSize);
     host.runSteps(150);
     renderer.useSurface(&host.surfaceUpkeep(renderer.gpuStore().trackingFor(host.scene(), settings)));
     requireGpuEqualsCpu(renderer, host.scene(), 1.0f, settings);
@@ -135,7 +135,7 @@ TEST_CASE("V8: every edit that bypasses the step uploads everything, and the GPU
     SceneHost host(hourglassSettings(24));
     SceneRenderer renderer(shaderDirectory());
     RenderSettings settings = thesisLook(); // unlit: the surface below keeps no per-grain keys
-    renderer.setScene(host.scene(), settings.cellSize);
+    renderer.setScene(host.scene(), host.kind(), settings.cellSize);
     host.runSteps(40);
     // The renderer is told nothing but the surface: as the application draws.
     auto frameAfter = [&](const char* what, bool full) {
@@ -174,7 +174,7 @@ TEST_CASE("V8: every edit that bypasses the step uploads everything, and the GPU
     frameAfter("a loaded scene", true);
     host.requestBuild(hourglassSettings(20));
     host.finishBuilds();
-    renderer.setScene(host.scene(), settings.cellSize); // as the application does on a new layout
+    renderer.setScene(host.scene(), host.kind(), settings.cellSize); // as the application does on a new layout
     frameAfter("a rebuilt scene", true);
     host.runSteps(5);
     frameAfter("steps in the new scene", false);

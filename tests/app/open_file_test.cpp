@@ -31,11 +31,11 @@ TEST_CASE("open file: a draft image opened on the hourglass builds a canvas and 
     CHECK(app->openFile(sun));
     waitForBuild(*app);
     REQUIRE_FALSE(app->host().building());
-    CHECK(app->scene().kind() == sandcore::SceneKind::Canvas);
+    CHECK(app->host().kind() == sandcore::SceneKind::Canvas);
     CHECK(app->state().painting.loadedDraft == sun);
     // A bundled draft is not one of the user's recent files; a .sand file that fails is not either.
     CHECK(app->state().files.recentFiles.empty());
     CHECK_FALSE(app->openFile("/no/such/state.sand"));
     CHECK(app->state().files.recentFiles.empty());
-    CHECK(app->scene().kind() == sandcore::SceneKind::Canvas); // the running scene stays
+    CHECK(app->host().kind() == sandcore::SceneKind::Canvas); // the running scene stays
 }

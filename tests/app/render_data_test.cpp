@@ -78,17 +78,17 @@ TEST_CASE("instances: hiding inner grains draws only the visible ones") {
 TEST_CASE("hull: the hourglass gets glass faces, the canvas an outline, the sculpture only a floor") {
     SceneRequest request;
     request.resolution = 24;
-    const HullMesh hourglass = buildHullMesh(buildScene({request, {}}), 1.0f);
+    const HullMesh hourglass = buildHullMesh(buildScene({request, {}}), request.kind, 1.0f);
     CHECK(hourglass.triangles.size() > 0);
     CHECK(hourglass.triangles.size() % 6 == 0);
     for (const HullVertex& v : hourglass.triangles)
         CHECK(std::abs(v.nx * v.nx + v.ny * v.ny + v.nz * v.nz - 1.0f) < 1e-3f);
     request.kind = sandcore::SceneKind::Canvas;
-    const HullMesh canvas = buildHullMesh(buildScene({request, {}}), 1.0f);
+    const HullMesh canvas = buildHullMesh(buildScene({request, {}}), request.kind, 1.0f);
     CHECK(canvas.triangles.empty());
     CHECK(canvas.lines.size() == 2 * 12 * 2); // two boxes of 12 edges, 2 vertices each
     request.kind = sandcore::SceneKind::Sculpture;
-    const HullMesh sculpture = buildHullMesh(buildScene({request, {}}), 1.0f);
+    const HullMesh sculpture = buildHullMesh(buildScene({request, {}}), request.kind, 1.0f);
     CHECK(sculpture.triangles.empty());
     CHECK(sculpture.lines.size() == 8);
 }

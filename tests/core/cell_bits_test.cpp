@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // CellBits: the reads of several neighbouring cells at once (around, around5) and the flips give
 // what a cell-by-cell test gives, across byte boundaries, for any pattern.
-#include "sandcore/cell_bits.hpp"
+#include "cell_bits.hpp"
 
 #include <doctest/doctest.h>
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Large blocks: aligned for huge pages, and freed ones kept (within a bound) for the next
 // allocation of a similar size, except under AddressSanitizer.
-#include "sandcore/cell_bits.hpp"
+#include "cell_bits.hpp"
+#include "large_blocks.hpp"
 #include "sandcore/grain_store.hpp"
-#include "sandcore/large_pages.hpp"
 
 #include <doctest/doctest.h>
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // LayoutBits (a layout as a bit per cell) and the huge-page allocation of big grids.
+#include "large_blocks.hpp"
 #include "layout_bits.hpp"
 #include "sandcore/procedural_shapes.hpp"
 #include "sandcore/scenes.hpp"

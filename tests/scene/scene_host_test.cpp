@@ -111,7 +111,8 @@ TEST_CASE("scene host: a failed build keeps the running scene, and the last of s
     CHECK(built->adopted);
     CHECK(host.loaded().request.shape == "cube");
     CHECK(host.loaded().request.resolution == 16);
-    CHECK(host.scene().kind() == sandcore::SceneKind::Hourglass);
+    CHECK(host.kind() == sandcore::SceneKind::Hourglass);
+    CHECK(host.scene().shape() == sandcore::sceneShapeOf(sandcore::SceneKind::Hourglass));
 }
 
 TEST_CASE("scene host: a cancelled build keeps the running scene unchanged and says so") {

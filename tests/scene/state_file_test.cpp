@@ -53,7 +53,7 @@ void checkSameSnapshot(const sandcore::Scene& a, const sandcore::Scene& b) {
     CHECK(x.lowerObstacles.size() == y.lowerObstacles.size());
     CHECK(a.settings().seed == b.settings().seed);
     CHECK(a.settings().sleeping == b.settings().sleeping);
-    CHECK(a.kind() == b.kind());
+    CHECK(a.shape() == b.shape());
 }
 
 // Saves after 100 steps, loads, runs 100 more; compares with 200 steps straight.
@@ -416,4 +416,18 @@ TEST_CASE("state file: version 2 stores the model relative to the .sand file, so
     std::filesystem::rename(folder / "moved", folder / "project");
     LoadedState alone = loadState(folder / "alone.sand");
     CHECK(alone.settings.request.modelPath == (folder / "project/models/glass.obj").string());
+}
+
+TEST_CASE("state file: the kind saved is the request's, and a scene of another shape is refused") {
+    // A file names its scene by kind and builds it again from sceneShapeOf(kind): a request that
+    // names another kind than the scene's shape would load as another scene.
+    const sandcore::Scene canvas = support::paintedCanvas();
+    CHECK_THROWS_AS(encodeStatePayload(canvas, support::hourglassRequest()), std::invalid_argument);
+    const std::vector<std::uint8_t> payload = encodeStatePayload(canvas, support::canvasRequest());
+    REQUIRE_FALSE(payload.empty());
+    CHECK(payload[0] == std::uint8_t(sandcore::SceneKind::Canvas));
+    const LoadedState loaded = decodeStatePayload(payload, "canvas.sand");
+    CHECK(loaded.scene.shape() == sandcore::sceneShapeOf(sandcore::SceneKind::Canvas));
+    CHECK(loaded.settings.request.kind == sandcore::SceneKind::Canvas);
+    CHECK(loaded.scene.stateHash() == canvas.stateHash());
 }

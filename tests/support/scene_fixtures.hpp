@@ -18,7 +18,7 @@ inline sandcore::Scene boxScene(sandcore::Int3 lower, int upperHeight = 1,
     sandcore::StepSettings step;
     step.seed = seed;
     step.physics.level = sandcore::PhysicsLevel::Classic;
-    return sandcore::Scene(sandcore::SceneKind::Canvas, sandcore::CellGrid({lower.x, upperHeight, lower.z}),
+    return sandcore::Scene(sandcore::SceneShape{}, sandcore::CellGrid({lower.x, upperHeight, lower.z}),
                            std::move(lowerLayout), {}, step);
 }
 

@@ -50,7 +50,7 @@ TEST_CASE("body mesh: a quarter turn turns the mesh with the body") {
 
 TEST_CASE("hull mesh: a standing body is no part of the vessel's hull") {
     sandcore::Scene scene = sandcore::makeCanvasScene(sandcore::canvasSettingsForWidth(24));
-    const std::size_t without = buildHullMesh(scene, 1.0f).triangles.size();
+    const std::size_t without = buildHullMesh(scene, sandcore::SceneKind::Canvas, 1.0f).triangles.size();
     REQUIRE(scene.addBody({sandcore::makeBoxShape({4, 3, 4}), {12, 0, 12}, 0}) == 0);
-    CHECK(buildHullMesh(scene, 1.0f).triangles.size() == without);
+    CHECK(buildHullMesh(scene, sandcore::SceneKind::Canvas, 1.0f).triangles.size() == without);
 }

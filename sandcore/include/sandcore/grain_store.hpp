@@ -50,20 +50,13 @@ struct GrainMove {
 struct FallState {
     std::uint32_t speed = 0;    ///< downward speed, cells per step in 16.16 fixed point (0 = at rest)
     std::uint16_t fraction = 0; ///< the part of a cell fallen beyond the grain's cell, 1/65536 cells
-    /// 0, or kGatheringAsleep plus the step (kAsleepStepMask of it) after which a grain falling
-    /// through an EMPTY cell short of its next cell, or riding such a grain, stopped being visited:
-    /// speed and fraction are as of that step, and only gravity changes them until the step the
-    /// fall reaches the cell, when it is visited again. Read it up to date with Scene::fallOf
-    /// (the sweep's own bookkeeping; grid_sweep.hpp).
+    /// The sweeps' own bookkeeping of a grain asleep in its fall (0: speed and fraction are
+    /// current; else they are as of an earlier step, granular_rules.hpp). Read a grain's fall up
+    /// to date with Scene::fallOf; files and embedders need only speed and fraction.
     std::uint16_t gatheringSince = 0;
     bool operator==(const FallState&) const = default;
 };
 static_assert(sizeof(FallState) == 8, "the sleep step fills the record's padding");
-
-/// FallState::gatheringSince's flags: the state is stored as of an earlier step; the grain rides a
-/// sleeping gatherer (else it is one).
-inline constexpr std::uint16_t kGatheringAsleep = 0x8000, kRidingAsleep = 0x4000;
-inline constexpr std::uint16_t kAsleepStepMask = 0x1fff; ///< the step's bits in FallState::gatheringSince
 
 /// Where a grain is and how it got there: the three fields a step writes for every grain it
 /// moves, together in 16 bytes. The moved grains lie all over the id range, so each write is a

@@ -1,13 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Memory for the big arrays of a scene (cell grids, the grain records a step writes by id, the
-// sweeps' awake words and the granular sweeps' bits, the surface's cell bits) and of the
-// voxelizer: blocks from half a huge page up are rounded up to whole 2 MiB pages, aligned to
-// them and offered to the kernel as transparent huge pages (madvise), so a sweep over a grid of a million cells, or a step writing
-// the records of grains all over the id range, takes a few TLB entries instead of hundreds or
-// thousands of 4 KiB ones. Freed blocks are kept, up to kLargeBlockCacheBytes, for the next
-// allocation of a similar size: fresh memory costs a page fault per page and the kernel's
-// clearing of every byte. Smaller blocks come from operator new as usual.
+// The allocators of the big arrays of a scene (cell grids, grain records, masks): blocks from
+// about a megabyte up sit on transparent huge pages, so a sweep over a grid of a million cells
+// takes a few TLB entries instead of thousands, and freed blocks are kept for reuse (the page
+// sizes and the cache: sandcore/src/large_blocks.hpp).
 
 #include <cstddef>
 #include <new>
@@ -15,24 +11,11 @@
 
 namespace sandcore {
 
-/// A huge page, bytes.
-inline constexpr std::size_t kLargePageBytes = std::size_t{2} << 20;
-/// Smallest block handed to huge pages (rounded up to a whole one), bytes.
-inline constexpr std::size_t kSmallestLargeBlock = kLargePageBytes / 2;
-
-/// Freed large blocks kept for reuse at most, bytes (none under AddressSanitizer).
-inline constexpr std::size_t kLargeBlockCacheBytes = std::size_t{256} << 20;
-
-/// bytes of memory, 2 MiB aligned and advised as huge pages when bytes >= kSmallestLargeBlock.
-/// Throws std::bad_alloc when no memory is left.
+/// bytes of memory, on huge pages from about a megabyte up (large_blocks.hpp). Throws
+/// std::bad_alloc when no memory is left.
 void* allocateLarge(std::size_t bytes);
-/// Frees a block of allocateLarge(bytes), given the same byte count: kept for reuse while the
-/// kept blocks stay within kLargeBlockCacheBytes, returned to the system otherwise.
+/// Frees a block of allocateLarge(bytes), given the same byte count (it may be kept for reuse).
 void freeLarge(void* block, std::size_t bytes) noexcept;
-/// Returns every kept block to the system (when memory is needed elsewhere).
-void releaseLargeBlockCache() noexcept;
-/// Bytes of the blocks kept for reuse.
-std::size_t largeBlockCacheBytes() noexcept;
 
 /// A std::allocator that takes its memory from allocateLarge.
 template <class T> struct LargePageAllocator {

@@ -24,11 +24,19 @@ class GranularRules;
 class NeckFlow;
 struct PushSearch;
 
-/// The three scenes of R10.
-enum class SceneKind : std::uint8_t {
-    Hourglass, ///< MODE_SHAPE + SHAPE_FIX: sand drains from the upper bulb into the lower
-    Sculpture, ///< MODE_SHAPE + SHAPE_LOSE: a model filled with sand collapses into a heap
-    Canvas,    ///< MODE_PAINT: the user pours sand into an empty box
+/// What a scene's two grids are, as plain facts: what the step does where they meet and which
+/// edits the scene takes. The recipes in scenes.hpp fill it (sceneShapeOf); the defaults are an
+/// open box under a release grid, as the canvas and the sculpture are.
+struct SceneShape {
+    /// The shared row is an hourglass's neck: under granular rules grains pass it at the
+    /// Beverloo discharge rate (PH4). False: sand falls through the shared row as anywhere else.
+    bool hourglassNeck = false;
+    /// The two grids are the two bulbs of one vessel, so the scene may be turned over (T1, flip()).
+    bool turnsOver = false;
+    /// Moving bodies may stand in the lower grid (addBody). A scene that turns over takes none:
+    /// a body would stand on its head.
+    bool takesBodies = true;
+    bool operator==(const SceneShape&) const = default;
 };
 
 /// How a step runs; threads and sleeping never change the result, seed and physics do.
@@ -79,13 +87,13 @@ class Scene {
 public:
     /// A scene from two layouts (cells kEmpty or kInvalid only) of equal x and z size, and the
     /// upper-grid cells that reset fills with sand. Throws std::invalid_argument otherwise.
-    Scene(SceneKind kind, CellGrid upperLayout, CellGrid lowerLayout, std::vector<std::uint32_t> upperFill,
+    Scene(SceneShape shape, CellGrid upperLayout, CellGrid lowerLayout, std::vector<std::uint32_t> upperFill,
           StepSettings settings = {});
     ~Scene();
     Scene(Scene&&) noexcept;
     Scene& operator=(Scene&&) noexcept;
 
-    SceneKind kind() const { return kind_; } ///< which of the three scenes
+    const SceneShape& shape() const { return shape_; } ///< what the grids are (neck, turning over, bodies)
 
     /// One simulation step (R3): the lower grid, then the upper grid, bottom-up, then the
     /// transition of the shared row from the upper into the lower grid (R4).
@@ -130,13 +138,13 @@ public:
     /// PH1: switches the rules (level, repose angle, gravity) from the next step on; every grain
     /// starts at rest. Throws std::invalid_argument for settings validatePhysics refuses.
     void setPhysics(const PhysicsSettings& physics);
-    /// Granular hourglass only: grains per step the neck lets through (PH4), else 0.
+    /// Granular rules and an hourglass neck only: grains per step the neck lets through (PH4), else 0.
     double neckFlowRate() const;
 
     /// Turns the hourglass over (T1): the sand becomes the exact mirror in y of what it was,
     /// the lower grid becomes the upper and the upper the lower, every grain keeps its identity
     /// and colour, and the drain goes on. Two flips with no step between give back the same
-    /// state. Returns false (and changes nothing) for a sculpture or a canvas.
+    /// state. Returns false (and changes nothing) unless shape().turnsOver.
     bool flip();
     /// True after an odd number of flips; reset() turns the hourglass upright again.
     bool flipped() const { return flipped_; }
@@ -170,7 +178,7 @@ public:
     /// grain pushed wakes its neighbours as the other edits do (R5).
     /// Places a body; its cells must lie in the grid and hold no wall (INVALID), and the grains
     /// in them are pushed out. Returns its index, or -1 (nothing placed) when it does not fit.
-    /// Throws std::invalid_argument for an hourglass (its grids turn over) or an empty shape.
+    /// Throws std::invalid_argument unless shape().takesBodies, or for an empty shape.
     std::int64_t addBody(MovingBody body);
     /// Moves body `index` toward `target` (its anchor's cell) in at most maxCells unit moves
     /// along the straight line, each a move by one cell along one axis (so it never tunnels).
@@ -193,7 +201,7 @@ public:
     static constexpr int kPushSearchCells = 1 << 16;
 
     /// A grid's layout (EMPTY and INVALID cells only, no obstacles, no grains), turned over as the
-    /// scene is (flipped()): with fillCells(), kind() and settings() what the constructor needs
+    /// scene is (flipped()): with fillCells(), shape() and settings() what the constructor needs
     /// to build this scene again, after mirroring both layouts back when it is turned over.
     /// Built on each call from the one bit per cell the scene keeps.
     CellGrid layout(GridLevel level) const;
@@ -225,7 +233,7 @@ private:
     void moveGrainAside(std::uint32_t from, std::uint32_t to);
     bool coveredByBody(std::uint32_t lowerCell) const;
 
-    SceneKind kind_;
+    SceneShape shape_;
     StepSettings settings_;
     std::unique_ptr<LayoutBits> upperLayout_, lowerLayout_; // the grids as built: what reset restores
     CellGrid upper_, lower_;
@@ -238,7 +246,7 @@ private:
     std::unique_ptr<GridSweep> upperSweep_, lowerSweep_;
     std::unique_ptr<WorkerPool> pool_;
     std::unique_ptr<GranularRules> granular_; // null: classic
-    std::unique_ptr<NeckFlow> neckFlow_;      // granular hourglass only
+    std::unique_ptr<NeckFlow> neckFlow_;      // granular rules at an hourglass neck only
     std::vector<MovingBody> bodies_;             // bodies(); their cells are INVALID in lower_
     std::unique_ptr<PushSearch> pushSearch_;     // scratch of the pushes, made at the first
     std::int64_t grainsPushedTotal_ = 0;

@@ -11,6 +11,14 @@
 
 namespace sandcore {
 
+/// The three scenes of R10: what the recipes in scenes.hpp build. A Scene itself needs none of
+/// them, only the SceneShape its recipe gives it.
+enum class SceneKind : std::uint8_t {
+    Hourglass, ///< MODE_SHAPE + SHAPE_FIX: sand drains from the upper bulb into the lower
+    Sculpture, ///< MODE_SHAPE + SHAPE_LOSE: a model filled with sand collapses into a heap
+    Canvas,    ///< MODE_PAINT: the user pours sand into an empty box
+};
+
 /// Height of the canvas's release grid for a canvas `width` cells wide: width / 6, at least 2 cells.
 constexpr int canvasReleaseHeight(int width) { return width / 6 > 2 ? width / 6 : 2; }
 /// Height of the canvas's painting box for a canvas `width` cells wide: 2/3 of width, at least 2 cells.

@@ -19,6 +19,11 @@ struct HourglassSettings {
     bool fitLowerBulb = false;
 };
 
+/// The shape of the scenes a kind's recipe builds: the hourglass has a neck with Beverloo flow
+/// and turns over (no bodies); the sculpture and the canvas are an open box under the grid the
+/// sand starts in, and take moving bodies. A scene saved with its kind is built again with this.
+SceneShape sceneShapeOf(SceneKind kind);
+
 /// An empty canvas (MODE_PAINT). Throws std::invalid_argument for invalid sizes or unequal x/z.
 Scene makeCanvasScene(const CanvasSettings& canvas = {}, const StepSettings& step = {});
 

@@ -17,7 +17,6 @@
 // asks for less (SurfaceTracking): then an update keeps only the bits, the moved grains' places,
 // the cells that changed and the inner count, with no work per moved grain beyond its place.
 
-#include "sandcore/cell_bits.hpp"
 #include "sandcore/normals.hpp"
 #include "sandcore/scene.hpp"
 #include "sandcore/vec3.hpp"
@@ -25,6 +24,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -63,8 +63,33 @@ struct SurfaceTracking {
     friend bool operator==(const SurfaceTracking&, const SurfaceTracking&) = default;
 };
 
+/// A read-only view of one bit per cell of a grid (SurfaceUpkeep::grainBits, hideBits), laid out
+/// as the renderer uploads it: cell n (CellGrid's index) is bit n % 32 of word n / 32, bit 0 the
+/// lowest, the same on any byte order; bits past the last cell are 0. Valid until the upkeep's
+/// next rebuild or update.
+class CellBitWords {
+public:
+    /// Over bytes holding cell n in bit n % 8 of byte n / 8, a whole number of 32-bit words.
+    explicit CellBitWords(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
+    std::uint32_t wordCount() const { return std::uint32_t(bytes_.size() / 4); } ///< words in the view
+    /// Word w: cells 32w .. 32w+31.
+    std::uint32_t word(std::uint32_t w) const {
+        const std::uint8_t* b = bytes_.data() + std::size_t(w) * 4;
+        return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
+    }
+    bool test(std::uint32_t n) const { return (bytes_[n >> 3] >> (n & 7u)) & 1u; } ///< cell n's bit
+
+private:
+    std::span<const std::uint8_t> bytes_;
+};
+
 class SurfaceUpkeep {
 public:
+    SurfaceUpkeep();
+    ~SurfaceUpkeep();
+    SurfaceUpkeep(SurfaceUpkeep&&) noexcept;
+    SurfaceUpkeep& operator=(SurfaceUpkeep&&) noexcept;
+
     /// How many gradient sums there are: a key modulo this names the sums.
     static constexpr std::size_t kGradientKeys = 19 * 19 * 19;
     /// How many keys there are (gradientKeyOf(grain) is below this): the gradient sums and the
@@ -100,9 +125,9 @@ public:
     /// The thesis's column normals of a grid (as columnNormal), indexed x + sizeX * z (tracking().columnNormals only).
     std::span<const Vec3> columnNormals(GridLevel level) const { return normals_[index(level)]; }
     /// Per cell of a grid: holds a grain (as of the last update).
-    const CellBits& grainBits(GridLevel level) const { return grainBits_[index(level)]; }
+    CellBitWords grainBits(GridLevel level) const;
     /// Per cell of a grid: is not EMPTY (a grain or INVALID: hides a neighbour).
-    const CellBits& hideBits(GridLevel level) const { return hideBits_[index(level)]; }
+    CellBitWords hideBits(GridLevel level) const;
     /// A grain's gradientNormal, by grain id (when tracked; else (0, 1, 0)).
     Vec3 gradientNormal(std::uint32_t grain) const;
     /// A grain's occupancy-gradient sums and occlusion level as one key (when tracked):
@@ -153,6 +178,7 @@ public:
     std::size_t netChangesLastUpdate() const { return changedCells_.size(); }
 
 private:
+    struct Bits; // the grids' shapes and occupancy bits (surface_bits.hpp)
     // All that is kept per grain, in one record: a moved grain costs one cache line, not four.
     struct GrainSurface {
         std::uint32_t seen = 0;     // (update number << 2) | which of flag (1), gradient (2) it looked at
@@ -186,9 +212,9 @@ private:
     template <class Part> void forEachShare(WorkerPool* pool, Part&& part);
     void flipMoves(const Scene& scene, GridShare& share);
     template <int Only> void flipMovesOf(const Scene& scene, GridShare& share);
-    void flipLeft(GridLevel level, std::uint32_t cell, GridShare& share);
+    static void flipLeft(Bits& kept, GridLevel level, std::uint32_t cell, GridShare& share);
     void applyNetChanges(GridShare& share);
-    bool inSharedRow(GridLevel level, std::uint32_t cell) const;
+    static bool inSharedRow(const Bits& kept, GridLevel level, std::uint32_t cell);
     void setCell(GridLevel level, std::uint32_t cell, bool filled);
     void changeCell(GridLevel level, std::uint32_t cell, bool filled);
     std::int64_t innerAround(GridLevel level, Int3 c) const;
@@ -203,10 +229,7 @@ private:
     bool built_ = false;                                // rebuild ran
     std::uint32_t grainCount_ = 0;
     std::array<Int3, 2> origins_{};   // Scene::gridOrigin of both grids, this update
-    std::array<GridShape, 2> shapes_; // both grids' sizes, with cheap coordinates
-    // Per grid, one bit per cell as of the last update: holds a grain; is not EMPTY (a grain or
-    // INVALID: hides a neighbour). A step's net changes are where the grid no longer agrees.
-    std::array<CellBits, 2> grainBits_, hideBits_;
+    std::unique_ptr<Bits> bits_;
     std::vector<GrainSurface> grains_;
     std::int64_t innerCount_ = 0;
     std::array<std::vector<int>, 2> heights_;

@@ -6,6 +6,7 @@
 #include "scene/mesh_loader.hpp"
 
 #include "sandcore/scene.hpp"
+#include "sandcore/scene_geometry.hpp"
 #include "sandcore/triangle_mesh.hpp"
 
 #include <array>

@@ -75,6 +75,8 @@ public:
     const ModelToWorld* modelToWorld() const { return modelToWorld_ ? &*modelToWorld_ : nullptr; }
     /// The settings the running scene was built from: what the panel shows as loaded.
     const SceneSettings& loaded() const { return loaded_; }
+    /// Which of the three scenes runs (loaded().request.kind): what menus, painting and drawing go by.
+    sandcore::SceneKind kind() const { return loaded_.request.kind; }
 
     /// E1: runs a scene that was loaded from a state file in place of the running one, with the
     /// settings it was built from; a build still running replaces it when done, as any request.

@@ -12,6 +12,7 @@
 
 #include "sandcore/inside_mask.hpp"
 #include "sandcore/scene.hpp"
+#include "sandcore/scene_geometry.hpp"
 
 #include <memory>
 #include <optional>

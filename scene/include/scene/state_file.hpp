@@ -54,6 +54,7 @@ std::uint64_t stateChecksum(std::span<const std::uint8_t> bytes, std::uint64_t s
 
 /// The uncompressed payload for a scene and its request. With `savedAt` (the .sand file it goes
 /// to) the model is stored relative to that file's folder, its absolute path beside it.
+/// Throws std::invalid_argument when the scene is not of the shape request.kind builds (sceneShapeOf).
 std::vector<std::uint8_t> encodeStatePayload(const sandcore::Scene& scene, const SceneRequest& request,
                                              const std::filesystem::path& savedAt = {});
 /// Header, checksum and zstd around a payload: the bytes of a `.sand` file.

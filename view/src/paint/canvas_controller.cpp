@@ -17,7 +17,7 @@ std::uint32_t packColor(const std::array<float, 3>& rgb) {
     return packed;
 }
 
-bool isCanvas(const SceneHost& host) { return host.scene().kind() == sandcore::SceneKind::Canvas; }
+bool isCanvas(const SceneHost& host) { return host.kind() == sandcore::SceneKind::Canvas; }
 
 PaintTarget targetOf(const PaintingSettings& painting) {
     return painting.pickAtTarget ? PaintTarget::Bottom : PaintTarget::Top;
@@ -81,9 +81,10 @@ void CanvasController::clearObstacles(SceneHost& host) {
     if (isCanvas(host)) host.editLayout().clearObstacles(sandcore::GridLevel::Lower);
 }
 
-DraftPlacement CanvasController::draftPlacement(const sandcore::Scene& scene, const PaintingSettings& painting,
+DraftPlacement CanvasController::draftPlacement(const SceneHost& host, const PaintingSettings& painting,
                                                 float cellSize) const {
-    const bool canvas = scene.kind() == sandcore::SceneKind::Canvas;
+    const sandcore::Scene& scene = host.scene();
+    const bool canvas = isCanvas(host);
     DraftPlacement placement;
     placement.visible = canvas && painting.showDraft && input_.draft() != nullptr;
     const PaintTarget target = targetOf(painting);

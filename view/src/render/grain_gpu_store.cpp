@@ -76,7 +76,7 @@ bool needsColumns(const RenderSettings& settings) {
     return settings.lighting && settings.normals == sandcore::NormalMethod::ColumnHeights;
 }
 
-// Words of a grid's bits, as sandcore::CellBits keeps them.
+// Words of a grid's bits, as sandcore::CellBitWords lays them out.
 std::int64_t cellBitWordsOf(const sandcore::CellGrid& grid) {
     return std::int64_t(((std::size_t(grid.cellCount()) / 8 + 2 + 3) & ~std::size_t(3)) / 4);
 }
@@ -202,12 +202,12 @@ void GrainGpuStore::bind(int firstUnit, int columnUnit) const {
 
 // All four bit sets in one buffer: lower grains, upper grains, lower hides, upper hides.
 std::int64_t GrainGpuStore::uploadCellBits(const sandcore::SurfaceUpkeep& surface) {
-    const sandcore::CellBits* sets[4] = {&surface.grainBits(kLevels[0]), &surface.grainBits(kLevels[1]),
-                                         &surface.hideBits(kLevels[0]), &surface.hideBits(kLevels[1])};
+    const sandcore::CellBitWords sets[4] = {surface.grainBits(kLevels[0]), surface.grainBits(kLevels[1]),
+                                            surface.hideBits(kLevels[0]), surface.hideBits(kLevels[1])};
     std::vector<std::uint32_t> words;
     for (int i = 0; i < 4; ++i) {
         bitsOffsets_[std::size_t(i)] = std::int32_t(words.size());
-        for (std::uint32_t w = 0; w < sets[i]->wordCount(); ++w) words.push_back(sets[i]->word(w));
+        for (std::uint32_t w = 0; w < sets[i].wordCount(); ++w) words.push_back(sets[i].word(w));
     }
     allocate(cellBits_gpu_, words.size() * 4, words.data());
     const auto bytes = std::int64_t(words.size()) * 4;
@@ -231,6 +231,8 @@ std::int64_t GrainGpuStore::writeCellBitChanges(const sandcore::SurfaceUpkeep& s
     auto* mapped = persistent_ ? static_cast<std::uint32_t*>(cellBits_gpu_.buffer.mapped()) : nullptr;
     std::uint32_t* words = mapped != nullptr ? mapped : cellBitWords_.data();
     const std::span<const sandcore::CellRef> changed = surface.changedCells();
+    const sandcore::CellBitWords grainWords[2] = {surface.grainBits(kLevels[0]), surface.grainBits(kLevels[1])};
+    const sandcore::CellBitWords hideWords[2] = {surface.hideBits(kLevels[0]), surface.hideBits(kLevels[1])};
     auto writeGrids = [&](int only) { // only: 0 or 1 for that grid, -1 for both
         for (const sandcore::CellRef& ref : changed) {
             const int grid = ref.level == sandcore::GridLevel::Upper ? 1 : 0;
@@ -238,8 +240,8 @@ std::int64_t GrainGpuStore::writeCellBitChanges(const sandcore::SurfaceUpkeep& s
             const std::uint32_t word = ref.cell >> 5;
             const auto grains = std::uint32_t(bitsOffsets_[std::size_t(grid)]) + word;
             const auto hides = std::uint32_t(bitsOffsets_[std::size_t(2 + grid)]) + word;
-            words[grains] = surface.grainBits(ref.level).word(word);
-            words[hides] = surface.hideBits(ref.level).word(word);
+            words[grains] = grainWords[grid].word(word);
+            words[hides] = hideWords[grid].word(word);
             if (mapped != nullptr) continue;
             changedWords_.mark(grains);
             changedWords_.mark(hides);

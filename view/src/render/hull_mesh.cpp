@@ -108,9 +108,9 @@ void addBoxOutline(HullMesh& mesh, Int3 lo, Int3 hi, float cellSize, bool floorO
 
 } // namespace
 
-HullMesh buildHullMesh(const sandcore::Scene& scene, float cellSize) {
+HullMesh buildHullMesh(const sandcore::Scene& scene, sandcore::SceneKind kind, float cellSize) {
     HullMesh mesh;
-    const bool hourglass = scene.kind() == sandcore::SceneKind::Hourglass;
+    const bool hourglass = kind == sandcore::SceneKind::Hourglass;
     const WorldCells cells(scene, hourglass);
     const Int3 size = cells.size();
     for (int y = 0; y < size.y; ++y)
@@ -125,11 +125,11 @@ HullMesh buildHullMesh(const sandcore::Scene& scene, float cellSize) {
                 if (!cells.fillable(x, y, z - 1)) addFace(mesh, cells, c, 2, -1, cellSize);
                 if (!cells.fillable(x, y, z + 1)) addFace(mesh, cells, c, 2, +1, cellSize);
             }
-    if (scene.kind() == sandcore::SceneKind::Canvas) {
+    if (kind == sandcore::SceneKind::Canvas) {
         addBoxOutline(mesh, {0, 0, 0}, scene.grid(GridLevel::Lower).size(), cellSize, false);
         const Int3 o = scene.gridOrigin(GridLevel::Upper), s = scene.grid(GridLevel::Upper).size();
         addBoxOutline(mesh, o, {o.x + s.x, o.y + s.y, o.z + s.z}, cellSize, false);
-    } else if (scene.kind() == sandcore::SceneKind::Sculpture) {
+    } else if (kind == sandcore::SceneKind::Sculpture) {
         addBoxOutline(mesh, {0, 0, 0}, scene.grid(GridLevel::Lower).size(), cellSize, true);
     }
     return mesh;

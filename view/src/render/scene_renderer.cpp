@@ -121,9 +121,10 @@ void SceneRenderer::uploadPatternColors(SandPalette palette) {
     patternPalette_ = palette;
 }
 
-void SceneRenderer::setScene(const sandcore::Scene& scene, float cellSize, const ModelDrawing* drawing) {
+void SceneRenderer::setScene(const sandcore::Scene& scene, sandcore::SceneKind kind, float cellSize,
+                             const ModelDrawing* drawing) {
     model_.set(drawing, scene.flipped(), cellSize);
-    const HullMesh mesh = buildHullMesh(scene, cellSize);
+    const HullMesh mesh = buildHullMesh(scene, kind, cellSize);
     hullUpperObstacles_ = scene.obstacles(sandcore::GridLevel::Upper);
     hullLowerObstacles_ = scene.obstacles(sandcore::GridLevel::Lower);
     glBindBuffer(GL_ARRAY_BUFFER, hullBuffer_.get());

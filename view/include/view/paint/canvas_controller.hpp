@@ -37,7 +37,7 @@ public:
     /// Saves the canvas for undo before an edit that is not a stroke (a digger's drag), so Undo
     /// takes the whole edit back as one step.
     void rememberForUndo(const SceneHost& host) {
-        if (host.scene().kind() == sandcore::SceneKind::Canvas) input_.rememberForUndo(host.scene());
+        if (host.kind() == sandcore::SceneKind::Canvas) input_.rememberForUndo(host.scene());
     }
     /// Takes back the last stroke; false when there is none.
     bool undo(SceneHost& host);
@@ -52,7 +52,7 @@ public:
     void sceneReplaced() { input_.sceneReplaced(); }
 
     /// Where the draft lies over the canvas and how opaque, for the renderer.
-    DraftPlacement draftPlacement(const sandcore::Scene& scene, const PaintingSettings& painting, float cellSize) const;
+    DraftPlacement draftPlacement(const SceneHost& host, const PaintingSettings& painting, float cellSize) const;
     /// The painter's undo depth and memory, for the panel.
     void publishUndoState(PaintingSettings& painting) const;
     /// The stroke settings the panel's choices stand for.

@@ -5,6 +5,7 @@
 // voxel staircase shades like a curved wall. The canvas and the sculpture get box outlines.
 
 #include "sandcore/scene.hpp"
+#include "sandcore/scene_geometry.hpp"
 
 #include <vector>
 
@@ -21,7 +22,8 @@ struct HullMesh {
     std::vector<HullVertex> lines;      ///< 2 vertices per outline edge (normal unused)
 };
 
-/// The hull of a scene at cellSize world units per cell.
-HullMesh buildHullMesh(const sandcore::Scene& scene, float cellSize);
+/// The hull of a scene of `kind` at cellSize world units per cell: the vessel's wall for an
+/// hourglass, with the outline of the floor box (sculpture) or of both boxes (canvas).
+HullMesh buildHullMesh(const sandcore::Scene& scene, sandcore::SceneKind kind, float cellSize);
 
 } // namespace sandglass

@@ -46,10 +46,11 @@ public:
     /// context. Throws std::runtime_error with one line on a shader problem.
     explicit SceneRenderer(const std::filesystem::path& shaderFolder);
 
-    /// Takes a new scene: rebuilds the hull mesh and forgets cached grain data. With a model
+    /// Takes a new scene of `kind`: rebuilds the hull mesh and forgets cached grain data. With a model
     /// drawing (S10) the vessel is drawn as modelled instead of the voxel hull, unless the
     /// settings ask for the voxel hull; the drawing is mirrored when the scene is turned over.
-    void setScene(const sandcore::Scene& scene, float cellSize, const ModelDrawing* drawing = nullptr);
+    void setScene(const sandcore::Scene& scene, sandcore::SceneKind kind, float cellSize,
+                  const ModelDrawing* drawing = nullptr);
     /// True when the hull was built with exactly the scene's obstacles (same boxes, same order,
     /// both grids); after an edit that may have changed them, false means setScene is due.
     bool hullShowsObstaclesOf(const sandcore::Scene& scene) const;

@@ -8,6 +8,7 @@
 #include "sandcore/large_pages.hpp"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace sandcore {
@@ -62,6 +63,8 @@ public:
         std::uint8_t& byte = bytes_[n >> 3];
         byte = std::uint8_t(on ? byte | (1u << (n & 7u)) : byte & ~(1u << (n & 7u)));
     }
+    /// Every byte, cell n in bit n % 8 of byte n / 8 (what CellBitWords reads).
+    std::span<const std::uint8_t> bytes() const { return bytes_; }
     /// The address of the byte holding cell n's bit (to fetch it ahead).
     const std::uint8_t* byteOf(std::uint32_t n) const { return bytes_.data() + (n >> 3); }
     void flip(std::uint32_t n) { bytes_[n >> 3] = std::uint8_t(bytes_[n >> 3] ^ (1u << (n & 7u))); }
