@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "sandcore/moving_body.hpp"
 
+#include "ball_cells.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -49,16 +51,9 @@ InsideMask makeBladeShape(int width, int height, int thickness) {
 
 InsideMask makeBallShape(int diameter) {
     requirePositive(diameter, "a ball's diameter");
-    InsideMask mask = InsideMask::empty({diameter, diameter, diameter});
-    // Cell centres within the radius of the box's centre; a diameter of 1 or 2 fills the box.
-    const double centre = diameter / 2.0, radius = diameter / 2.0;
-    for (int y = 0; y < diameter; ++y)
-        for (int z = 0; z < diameter; ++z)
-            for (int x = 0; x < diameter; ++x) {
-                const double dx = x + 0.5 - centre, dy = y + 0.5 - centre, dz = z + 0.5 - centre;
-                mask.set(x, y, z, dx * dx + dy * dy + dz * dz <= radius * radius + 0.25);
-            }
-    return mask;
+    // A quarter cell squared of slack: a diameter of 1 or 2 fills its box, so a small body is
+    // never empty.
+    return ballCells(diameter, 0.25);
 }
 
 } // namespace sandcore

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "sandcore/procedural_shapes.hpp"
 
+#include "ball_cells.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -16,17 +18,21 @@ void requireResolution(int resolution, int minimum) {
 }
 } // namespace
 
-InsideMask makeSphereMask(int resolution) {
-    requireResolution(resolution, 2);
-    InsideMask mask = InsideMask::empty({resolution, resolution, resolution});
-    const double centre = resolution / 2.0, radius = resolution / 2.0;
-    for (int y = 0; y < resolution; ++y)
-        for (int z = 0; z < resolution; ++z)
-            for (int x = 0; x < resolution; ++x) {
+InsideMask ballCells(int diameter, double slackSquared) {
+    InsideMask mask = InsideMask::empty({diameter, diameter, diameter});
+    const double centre = diameter / 2.0, radius = diameter / 2.0;
+    for (int y = 0; y < diameter; ++y)
+        for (int z = 0; z < diameter; ++z)
+            for (int x = 0; x < diameter; ++x) {
                 const double dx = x + 0.5 - centre, dy = y + 0.5 - centre, dz = z + 0.5 - centre;
-                mask.set(x, y, z, dx * dx + dy * dy + dz * dz <= radius * radius);
+                mask.set(x, y, z, dx * dx + dy * dy + dz * dz <= radius * radius + slackSquared);
             }
     return mask;
+}
+
+InsideMask makeSphereMask(int resolution) {
+    requireResolution(resolution, 2);
+    return ballCells(resolution, 0.0);
 }
 
 InsideMask makeCubeMask(int resolution) {
