@@ -24,7 +24,7 @@ const char* const kDiggerBodies[] = {"blade", "box", "ball"};
 constexpr int kModelBody = 3; // DiggerSettings::body for the model file
 
 bool sameCells(const sandcore::InsideMask& a, const sandcore::InsideMask& b) {
-    return a.size.x == b.size.x && a.size.y == b.size.y && a.size.z == b.size.z && a.inside == b.inside;
+    return a.size == b.size && a.inside == b.inside;
 }
 
 } // namespace

@@ -36,7 +36,6 @@ constexpr Int3 kUp{0, 1, 0};
 
 Int3 plus(Int3 a, Int3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 Int3 minus(Int3 a) { return {-a.x, -a.y, -a.z}; }
-bool same(Int3 a, Int3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 // The six directions in the order a push tries them: ahead, the sides (+x, -x, +z, -z that are
 // neither ahead nor back), up, down, back (each once).
@@ -45,12 +44,12 @@ std::array<Int3, 6> searchOrder(Int3 ahead) {
     int count = 0;
     auto add = [&](Int3 d) {
         for (int i = 0; i < count; ++i)
-            if (same(order[std::size_t(i)], d)) return;
+            if (order[std::size_t(i)] == d) return;
         order[std::size_t(count++)] = d;
     };
     add(ahead);
     for (Int3 side : {Int3{1, 0, 0}, Int3{-1, 0, 0}, Int3{0, 0, 1}, Int3{0, 0, -1}})
-        if (!same(side, ahead) && !same(side, minus(ahead))) add(side);
+        if (side != ahead && side != minus(ahead)) add(side);
     add(kUp);
     add(minus(kUp));
     add(minus(ahead));
@@ -174,7 +173,7 @@ private:
 
     int rank(Int3 direction) const {
         for (std::size_t d = 0; d < order_.size(); ++d)
-            if (same(order_[d], direction)) return int(d);
+            if (order_[d] == direction) return int(d);
         return int(order_.size());
     }
     std::array<int, 4> key(const StraightWay& way) const {

@@ -142,7 +142,7 @@ template <int Only> void SurfaceUpkeep::flipMovesOf(const Scene& scene, GridShar
         bits.flip(move.cell);
     }
     // Second pass: the cells they left, mostly the cells the first pass filled (a falling column):
-    // their bits were just read. Fetching them ahead here was measured slower.
+    // their bits were just read and are still in cache, so nothing is fetched ahead.
     auto leave = [&](GridLevel level, std::uint32_t cell) {
         if (owns(level)) flipLeft(kept, level, cell, share);
         else share.otherLeaves.push_back({level, cell});

@@ -60,9 +60,6 @@ std::uint16_t gradientKeyFromGrid(const CellGrid& grid, std::uint32_t cell) {
 constexpr int kGrainsInRow[8] = {0, 1, 1, 2, 1, 2, 2, 3};
 constexpr int kXSumOfRow[8] = {0, -1, 0, -1, 1, 0, 1, 0};
 
-bool sameVec(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-
-
 } // namespace
 
 Vec3 SurfaceUpkeep::normalOfGradientKey(std::uint16_t key) { return gradientTable()[key]; }
@@ -478,7 +475,7 @@ void SurfaceUpkeep::updateHeightsOf(const Scene& scene, GridShare& share, std::u
         const int x = int(ref.column % std::uint32_t(s.x)), z = int(ref.column / std::uint32_t(s.x));
         const Vec3 now = columnNormal(heights, s, x, z);
         Vec3& normal = normals_[index(ref.level)][ref.column];
-        if (sameVec(now, normal)) continue;
+        if (now == normal) continue;
         normal = now;
         std::uint8_t& listed = columnListed_[index(ref.level)][ref.column];
         if (listed) continue;

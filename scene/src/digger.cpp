@@ -18,8 +18,6 @@ using sandcore::Int3;
 
 namespace {
 
-bool same(Int3 a, Int3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-
 int parseCoordinate(std::string_view point, std::string_view text) {
     int value = 0;
     const char* first = text.data();
@@ -137,7 +135,7 @@ void DigDrive::beforeStep(sandcore::Scene& scene) {
         budget -= move.cellsMoved;
         moved_ += move.cellsMoved;
         pushed_ += move.grainsPushed;
-        if (same(move.reached, target) || move.stopped) {
+        if (move.reached == target || move.stopped) {
             stopped_ += move.stopped ? 1 : 0;
             ++leg_;
             // A blade turns across its next leg where it stands (a turn that does not fit is skipped).
